@@ -1,0 +1,94 @@
+#pragma once
+/// \file body.h
+/// The interface every body type (ground, rigid, floating-frame flexible,
+/// ANCF) gives the engine. A body addresses a slice of the global coordinates
+/// q (nq entries) and velocities v (nv entries); it does not own them.
+
+#include <Eigen/Core>
+#include <string>
+
+#include "flexmb/model/marker.h"
+
+namespace flexmb {
+
+
+/// Simple display shape for animation output, in the user's body frame.
+struct Shape {
+  enum class Type { kNone, kBox, kCylinder, kSphere };
+  Type type = Type::kNone;
+  Vec3 size = Vec3::Zero();   ///< box: edge lengths; cylinder: (radius, length, -); sphere: (radius, -, -) [m]
+  Vec3 p_BS = Vec3::Zero();   ///< centre of the shape in the user's body frame [m]
+  Mat3 R_BS = Mat3::Identity();  ///< orientation; a cylinder's axis is the shape's z axis
+};
+
+/// Abstract body. Coordinates are passed as pointers into the global vectors,
+/// at the body's own offset.
+class Body {
+ public:
+  virtual ~Body() = default;
+
+  /// Unique name of the body.
+  const std::string& name() const { return name_; }
+  /// Number of position coordinates.
+  virtual int nq() const = 0;
+  /// Number of velocity coordinates (= dimension of the tangent space).
+  virtual int nv() const = 0;
+
+  /// Offsets into the global q and v (set when the model is finalized).
+  int q_offset = 0;
+  int v_offset = 0;
+
+  /// Writes the initial coordinates (from the body's specification).
+  virtual void InitialCoordinates(double* q, double* v) const = 0;
+
+  /// q_out = q (+) dx: moves the coordinates by a tangent increment dx
+  /// (nv entries, same components as v). Rotations use the exponential map.
+  virtual void Retract(const double* q, const double* dx, double* q_out) const = 0;
+
+  /// Mass matrix (nv x nv) at q.
+  virtual void MassMatrix(const double* q, MatX& M) const = 0;
+  /// True if the mass matrix does not depend on q (evaluated once).
+  virtual bool HasConstantMass() const { return true; }
+
+  /// Adds the body's own generalized forces (inertial velocity terms, elastic,
+  /// gravity g_W [m/s^2]) to Q (nv) and the derivatives dQ/dx (tangent
+  /// increments) and dQ/dv to dQdq, dQdv (nv x nv each).
+  virtual void AddForces(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q,
+                         Eigen::Ref<MatX> dQdq, Eigen::Ref<MatX> dQdv) const = 0;
+
+  /// Pose, twist and twist Jacobian of marker `m` attached to this body.
+  virtual void EvaluateMarker(const double* q, const double* v, const Marker& m,
+                              MarkerState& out) const = 0;
+
+  /// Velocity-product part of the marker acceleration, (a; alpha) in world:
+  /// [a_WM; alpha_WM] = J vdot + bias.
+  virtual Vec6 MarkerAccelerationBias(const double* q, const double* v, const Marker& m) const = 0;
+
+  /// Adds d(J^T w)/dx at fixed wrench w = (f_W, m_W at the marker origin) to
+  /// dQdq (nv x nv): the part of a force tangent that comes from the marker
+  /// Jacobian turning with the body.
+  virtual void AddMarkerWrenchTangent(const double* q, const Marker& m, const Vec6& wrench_W,
+                                      Eigen::Ref<MatX> dQdq) const = 0;
+
+  /// Kinetic energy [J].
+  virtual double KineticEnergy(const double* q, const double* v) const = 0;
+  /// Potential energy of gravity g_W, zero at the world origin [J].
+  virtual double GravityPotential(const double* q, const Vec3& g_W) const = 0;
+  /// Linear momentum [kg m/s] and angular momentum about the world origin
+  /// [kg m^2/s], both in world components.
+  virtual Vec6 Momentum(const double* q, const double* v) const = 0;
+
+  /// Pose of the user's body frame in world (for output and animation).
+  virtual void BodyFramePose(const double* q, Vec3& p_WB, Mat3& R_WB) const = 0;
+
+  /// Display shape (may be kNone).
+  Shape shape;
+
+ protected:
+  explicit Body(std::string name) : name_(std::move(name)) {}
+
+ private:
+  std::string name_;
+};
+
+}  // namespace flexmb

@@ -1,0 +1,31 @@
+#pragma once
+/// \file settings.h
+/// Solver and output settings of a model.
+
+namespace flexmb {
+
+/// Settings of the time integrator and the nonlinear solvers.
+struct SolverSettings {
+  double t_end = 1.0;          ///< end time [s]
+  double dt = 1e-3;            ///< (initial) step size [s]
+  double dt_min = 1e-10;       ///< smallest step before giving up [s]
+  double dt_max = 0.0;         ///< largest step with step-size control [s]; 0 = 100 dt
+  double rho_inf = 0.8;        ///< spectral radius at infinity of generalized-alpha, in [0, 1]
+  bool adaptive = false;       ///< step-size control by the local error estimate
+  double rtol = 1e-4;          ///< relative tolerance of the error estimate
+  double atol = 1e-6;          ///< absolute tolerance of the error estimate [m, rad]
+  double newton_tol = 1e-10;   ///< Newton tolerance on the scaled correction and constraints
+  int max_newton = 12;         ///< Newton iterations before the step is cut
+  bool geometric_stiffness = true;  ///< include d(B^T lambda)/dq in the iteration matrix
+  double assembly_tol = 1e-10; ///< position assembly tolerance on ||Phi|| [m]
+  double redundancy_tol = 1e-8; ///< relative rank tolerance for redundant constraints
+};
+
+/// Settings of the result output.
+struct OutputSettings {
+  double interval = 0.0;             ///< time between result rows [s]; 0 = every step
+  bool animation = false;            ///< write anim.pvd and .vtu frames
+  double animation_interval = 0.02;  ///< time between animation frames [s]
+};
+
+}  // namespace flexmb

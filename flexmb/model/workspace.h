@@ -1,0 +1,44 @@
+#pragma once
+/// \file workspace.h
+/// Caches and scratch of the computation: everything derived from a State.
+/// Sized once (solver::InitWorkspace); the step loop allocates nothing.
+
+#include <Eigen/SparseCore>
+#include <string>
+#include <vector>
+
+#include "flexmb/forces/force_element.h"
+#include "flexmb/joints/joint.h"
+#include "flexmb/model/marker.h"
+
+namespace flexmb {
+
+using SparseMat = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+/// Workspace of a model; see the file comment.
+struct Workspace {
+  std::vector<MarkerState> markers;  ///< per marker
+  std::vector<JointEval> joints;     ///< per joint
+  std::vector<ForceEval> forces;     ///< per force element
+  std::vector<MatX> mass;            ///< per body: mass matrix block (nv_b x nv_b)
+  std::vector<MatX> dQdq, dQdv;      ///< per body: own force derivatives
+  VecX Q;                            ///< generalized applied + inertial-velocity forces (nv)
+  VecX vdot;                         ///< accelerations of the last solved step (nv)
+
+  /// Constraint rows: row_of_eq[offset + k] is the active row of equation k
+  /// of a joint, or -1 if the equation was removed as redundant.
+  std::vector<int> row_of_eq;
+  int n_active = 0;                  ///< number of active constraint rows
+  VecX phi, phi_t;                   ///< active constraint values and time derivatives
+  SparseMat B;                       ///< constraint Jacobian (n_active x nv), fixed pattern
+
+  /// Iteration matrix [[A, B^T], [B, 0]] (nv + n_active square), fixed pattern.
+  SparseMat S;
+
+  // scratch
+  Mat12 H;        ///< geometric stiffness of one joint
+  MatX G, GtK;    ///< marker Jacobian pair and products (12 x nv_a+nv_b)
+  VecX rhs;       ///< right-hand side / solution (nv + n_active)
+};
+
+}  // namespace flexmb

@@ -1,0 +1,138 @@
+#include "flexmb/solver/generalized_alpha.h"
+
+#include <cmath>
+
+#include "flexmb/solver/assembler.h"
+
+namespace flexmb {
+
+GeneralizedAlpha::GeneralizedAlpha(const Model& model, Workspace& ws, double rho)
+    : model_(model), ws_(ws) {
+  rho = std::clamp(rho, 0.0, 1.0);
+  am_ = (2.0 * rho - 1.0) / (rho + 1.0);
+  af_ = rho / (rho + 1.0);
+  gamma_ = 0.5 + af_ - am_;
+  beta_ = 0.25 * (gamma_ + 0.5) * (gamma_ + 0.5);
+  const int nv = model.nv;
+  for (VecX* x : {&a_, &vdot_, &a1_, &vdot1_, &v1_, &dq_, &res_, &dx_}) x->setZero(nv);
+  q1_.setZero(model.nq);
+  qtmp_.setZero(model.nq);
+}
+
+void GeneralizedAlpha::Start(const State& s) {
+  vdot_ = ws_.vdot;
+  a_ = vdot_;
+  trial_ = s;
+  lam1_.setZero(ws_.n_active);
+}
+
+StepStatus GeneralizedAlpha::TryStep(const State& s, double h) {
+  const Model& m = model_;
+  Workspace& ws = ws_;
+  const int nv = m.nv, na = ws.n_active;
+  const double bp = (1.0 - am_) / (h * h * beta_ * (1.0 - af_));  // d vdot / d dx
+  const double gp = gamma_ / (h * beta_);                        // d v / d dx
+  const double ap = (1.0 - af_) / (1.0 - am_);                    // d a / d vdot
+
+  // predictor (vdot_{n+1} = 0)
+  a1_ = (af_ * vdot_ - am_ * a_) / (1.0 - am_);
+  v1_ = s.v + h * (1.0 - gamma_) * a_ + h * gamma_ * a1_;
+  dq_ = h * (s.v + h * (0.5 - beta_) * a_ + h * beta_ * a1_);
+  RetractAll(m, s.q, dq_, q1_);
+  vdot1_.setZero();
+  trial_.t = s.t + h;
+  trial_.q = q1_;
+  trial_.v = v1_;
+  for (int e = 0; e < m.nc; ++e) {
+    const int r = ws.row_of_eq[e];
+    if (r >= 0) lam1_(r) = s.lambda(e);
+  }
+
+  const MatrixCoefficients coef{1.0, gp / bp, 1.0 / bp, m.solver.geometric_stiffness};
+  double prev_norm = INFINITY;
+  for (int it = 0; it < m.solver.max_newton; ++it) {
+    ++stats.newton_iterations;
+    trial_.lambda.setZero();
+    for (int e = 0; e < m.nc; ++e)
+      if (ws.row_of_eq[e] >= 0) trial_.lambda(e) = lam1_(ws.row_of_eq[e]);
+    EvaluateMarkers(m, trial_, ws);
+    EvaluateConstraints(m, trial_, ws);
+    EvaluateForces(m, trial_, ws, true);
+    // residual r = M vdot - Q + B^T lambda, scaled by 1/beta'
+    MassTimes(m, ws, vdot1_, res_);
+    res_ -= ws.Q;
+    res_.noalias() += ws.B.transpose() * lam1_;
+    ws.rhs.head(nv) = -res_ / bp;
+    ws.rhs.tail(na) = -ws.phi;
+    if (!ws.rhs.allFinite()) {
+      hint_ = "non-finite residual";
+      return StepStatus::kNewtonFailed;
+    }
+    AssembleIterationMatrix(m, trial_, ws, coef);
+    ++stats.factorizations;
+    if (!lu_.Factorize(ws.S)) {
+      const int c = lu_.singular_column();
+      hint_ = c >= 0 && c < nv ? "singular iteration matrix at velocity coordinate " + std::to_string(c)
+                               : "singular iteration matrix";
+      return StepStatus::kNewtonFailed;
+    }
+    lu_.Solve(ws.rhs);
+    dx_ = ws.rhs.head(nv);
+    // update
+    qtmp_ = trial_.q;
+    RetractAll(m, qtmp_, dx_, trial_.q);
+    trial_.v += gp * dx_;
+    vdot1_ += bp * dx_;
+    a1_ += ap * bp * dx_;
+    lam1_ += bp * ws.rhs.tail(na);
+    const double scale = std::max(1.0, dq_.lpNorm<Eigen::Infinity>());
+    const double norm = dx_.lpNorm<Eigen::Infinity>() / scale;
+    if (!std::isfinite(norm) || (it > 2 && norm > prev_norm)) {
+      hint_ = "Newton diverged";
+      return StepStatus::kNewtonFailed;
+    }
+    prev_norm = norm;
+    if (norm <= m.solver.newton_tol) {
+      // converged: error estimate and hand over
+      double sum = 0.0;
+      const double c = (beta_ - 1.0 / 6.0) * h * h;
+      for (int i = 0; i < nv; ++i) {
+        const double e = c * (a1_(i) - a_(i));
+        const double sc = m.solver.atol + m.solver.rtol * std::abs(dq_(i));
+        sum += (e / sc) * (e / sc);
+      }
+      error_ = nv > 0 ? std::sqrt(sum / nv) : 0.0;
+      trial_.lambda.setZero();
+      for (int e = 0; e < m.nc; ++e)
+        if (ws.row_of_eq[e] >= 0) trial_.lambda(e) = lam1_(ws.row_of_eq[e]);
+      // constraint violation at the converged state
+      EvaluateMarkers(m, trial_, ws);
+      EvaluateConstraints(m, trial_, ws);
+      const double viol = na > 0 ? ws.phi.lpNorm<Eigen::Infinity>() : 0.0;
+      stats.max_constraint_violation = std::max(stats.max_constraint_violation, viol);
+      return StepStatus::kConverged;
+    }
+  }
+  // name the worst constraint or coordinate
+  int worst = -1;
+  double wv = 0.0;
+  for (int e = 0; e < m.nc; ++e) {
+    const int r = ws.row_of_eq[e];
+    if (r >= 0 && std::abs(ws.phi(r)) > wv) wv = std::abs(ws.phi(r)), worst = e;
+  }
+  hint_ = worst >= 0 ? "largest constraint residual in " + DescribeEquation(m, worst) : "Newton did not converge";
+  return StepStatus::kNewtonFailed;
+}
+
+void GeneralizedAlpha::Accept(State& s) {
+  s.t = trial_.t;
+  s.q = trial_.q;
+  s.v = trial_.v;
+  s.lambda = trial_.lambda;
+  ws_.vdot = vdot1_;
+  a_ = a1_;
+  vdot_ = vdot1_;
+  ++stats.steps;
+}
+
+}  // namespace flexmb

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# The one list of Debian packages flexmb needs (build, tests, benchmarks,
+# Python bindings, cross-check tools). Idempotent: installs only what is
+# missing, so a second run costs a dpkg query and nothing else.
+set -euo pipefail
+
+PACKAGES=(
+  # toolchain
+  g++ cmake ninja-build make pkg-config
+  # numerics
+  libeigen3-dev libsuitesparse-dev libopenblas-dev libspectra-dev
+  # input / output / command line
+  libyaml-cpp-dev libhdf5-dev libcli11-dev libfmt-dev libmuparser-dev
+  # tests and benchmarks
+  libgtest-dev libgmock-dev libbenchmark-dev
+  # python bindings and plots (Debian's /usr/bin/python3)
+  pybind11-dev python3-dev python3-numpy python3-matplotlib
+  # peer codes for cross-checks
+  calculix-ccx gmsh
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install-deps: done"
