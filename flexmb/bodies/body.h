@@ -81,6 +81,10 @@ class Body {
   /// Pose of the user's body frame in world (for output and animation).
   virtual void BodyFramePose(const double* q, Vec3& p_WB, Mat3& R_WB) const = 0;
 
+  /// Position in the body's internal frame of a point given in the user's
+  /// body frame (a rigid body's internal frame sits at its centre of mass).
+  virtual Vec3 InternalPosition(const Vec3& p_B) const { return p_B; }
+
   /// Display shape (may be kNone).
   Shape shape;
 

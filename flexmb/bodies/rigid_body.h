@@ -53,6 +53,7 @@ class RigidBody final : public Body {
   double GravityPotential(const double* q, const Vec3& g_W) const override;
   Vec6 Momentum(const double* q, const double* v) const override;
   void BodyFramePose(const double* q, Vec3& p_WB, Mat3& R_WB) const override;
+  Vec3 InternalPosition(const Vec3& p_B) const override { return p_B - data_.c_B; }
 
   /// Mass [kg].
   double mass() const { return data_.mass; }

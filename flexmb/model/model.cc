@@ -36,7 +36,7 @@ int Model::AddMarker(int body, const std::string& name, const Vec3& p_BM, const 
   CheckUnique(marker_index_, "marker", full, idx);
   if (!p_BM.allFinite() || !R_BM.allFinite())
     throw InputError("marker pose has non-finite entries", {"", 0, "marker '" + full + "'"});
-  markers.push_back(Marker{full, body, node, p_BM, R_BM});
+  markers.push_back(Marker{full, body, node, bodies[body]->InternalPosition(p_BM), R_BM});
   return idx;
 }
 

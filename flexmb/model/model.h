@@ -36,7 +36,8 @@ class Model {
   /// Adds a body; returns its index. Throws InputError on a duplicate name.
   int AddBody(std::unique_ptr<Body> body);
   /// Adds a marker named "<body>.<name>" on body `body` with pose given in the
-  /// body's internal frame (see Marker). Returns its index.
+  /// user's body frame (converted to the body's internal frame, see Marker).
+  /// Returns its index.
   int AddMarker(int body, const std::string& name, const Vec3& p_BM, const Mat3& R_BM, int node = -1);
   /// Adds a joint between markers i and j (indices); returns its index.
   int AddJoint(std::unique_ptr<Joint> joint, int marker_i, int marker_j);

@@ -1,0 +1,85 @@
+#pragma once
+/// \file parse_context.h
+/// Shared helpers for reading the YAML model file. Every error names the
+/// file, the line of the offending node and the entity being read.
+
+#include <yaml-cpp/yaml.h>
+
+#include <initializer_list>
+#include <memory>
+#include <string>
+
+#include "flexmb/math/rotation.h"
+#include "flexmb/math/scalar_function.h"
+
+namespace flexmb {
+
+class Model;
+
+/// State of one model-file load: the file name, the model under
+/// construction, and the entity currently read (for messages).
+class ParseContext {
+ public:
+  ParseContext(std::string file, Model& model) : file_(std::move(file)), model_(model) {}
+
+  /// The model being built.
+  Model& model() { return model_; }
+  /// The file being read.
+  const std::string& file() const { return file_; }
+  /// Sets the entity named in messages, e.g. "force 'front_spring'".
+  void SetEntity(std::string entity) { entity_ = std::move(entity); }
+  const std::string& entity() const { return entity_; }
+
+  /// Throws InputError "FILE:LINE: ENTITY: message" at node's line.
+  [[noreturn]] void Fail(const YAML::Node& node, const std::string& message) const;
+
+  /// Throws if `node` is not a map or has a key outside `allowed` (naming the
+  /// key and listing the allowed ones).
+  void CheckKeys(const YAML::Node& node, std::initializer_list<const char*> allowed) const;
+
+  /// Required / optional finite number at node[key].
+  double Double(const YAML::Node& node, const char* key) const;
+  double Double(const YAML::Node& node, const char* key, double fallback) const;
+  /// Required positive (> 0) finite number.
+  double Positive(const YAML::Node& node, const char* key) const;
+  /// Required / optional string.
+  std::string String(const YAML::Node& node, const char* key) const;
+  std::string String(const YAML::Node& node, const char* key, const std::string& fallback) const;
+  /// Optional boolean.
+  bool Bool(const YAML::Node& node, const char* key, bool fallback) const;
+  /// Required / optional 3-vector [x, y, z] of finite numbers.
+  Vec3 Vector3(const YAML::Node& node, const char* key) const;
+  Vec3 Vector3(const YAML::Node& node, const char* key, const Vec3& fallback) const;
+  /// Optional orientation at node[key] (identity if absent); one of
+  /// {quaternion: [w,x,y,z]}, {rotation_vector: [..]} [rad],
+  /// {roll_pitch_yaw: [..]} [rad], {roll_pitch_yaw_deg: [..]},
+  /// {z_axis: [..], x_axis: [..] (optional)}, {matrix: [[..],[..],[..]]}.
+  Mat3 Orientation(const YAML::Node& node, const char* key) const;
+  /// A function at node[key]: a number (constant), {expression: "..."}
+  /// in `variable`, or {table: [[x, y], ...], interpolation: linear|spline,
+  /// extrapolate: bool}.
+  std::shared_ptr<const ScalarFunction> Function(const YAML::Node& node, const char* key,
+                                                  const char* variable = "t") const;
+  /// Index of the marker named at node[key] ("body.marker"); throws naming
+  /// the marker and, if its body is missing, the body.
+  int Marker(const YAML::Node& node, const char* key) const;
+  /// Index of the joint named at node[key].
+  int Joint(const YAML::Node& node, const char* key) const;
+  /// Index of the body named at node[key].
+  int Body(const YAML::Node& node, const char* key) const;
+
+ private:
+  std::string file_;
+  Model& model_;
+  std::string entity_;
+};
+
+/// Builds a force element from its model-file node (type from node["type"])
+/// and adds it to ctx.model(). Implemented in io/force_parser.cc.
+void ParseForce(const YAML::Node& node, ParseContext& ctx);
+
+/// Builds a sensor from its model-file node and adds it to ctx.model().
+/// Implemented in io/sensor_parser.cc.
+void ParseSensor(const YAML::Node& node, ParseContext& ctx);
+
+}  // namespace flexmb
