@@ -1,0 +1,65 @@
+#include "flexmb/solver/statics.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "flexmb/bodies/rigid_body.h"
+#include "flexmb/common/error.h"
+#include "flexmb/joints/revolute.h"
+#include "flexmb/solver/initial_conditions.h"
+
+namespace flexmb {
+namespace {
+
+// A pendulum released at 60 degrees from the downward vertical hangs straight
+// down at equilibrium; the pin carries m g.
+TEST(Statics, PendulumHangsDownWithPinForceMg) {
+  Model m;
+  m.gravity_W = Vec3(0, -9.81, 0);
+  RigidBodyData d;
+  d.mass = 2.0;
+  d.inertia_C = Vec3(0.01, 0.2, 0.2).asDiagonal();
+  d.c_B = Vec3(0.5, 0, 0);
+  const double a = -M_PI / 2 + M_PI / 3;  // 60 deg from hanging
+  d.R_WB = Eigen::AngleAxisd(a, Vec3::UnitZ()).toRotationMatrix();
+  const int b = m.AddBody(std::make_unique<RigidBody>("rod", d));
+  m.AddJoint(std::make_unique<RevoluteJoint>("pin"), m.AddMarker(0, "o", Vec3::Zero(), Mat3::Identity()),
+             m.AddMarker(b, "o", Vec3::Zero(), Mat3::Identity()));
+  m.Finalize();
+  State s = m.InitialState();
+  Workspace ws;
+  MakeConsistent(m, s, ws);
+  const StaticsResult r = SolveStatics(m, s, ws);
+  EXPECT_LT(r.iterations, 30);
+  const Body& rod = *m.bodies[b];
+  Vec3 p;
+  Mat3 R;
+  rod.BodyFramePose(s.q.data() + rod.q_offset, p, R);
+  // body x axis points straight down
+  EXPECT_LT((R.col(0) - Vec3(0, -1, 0)).norm(), 1e-8);
+  // constraint force on the rod, -B^T lambda, balances gravity: |lambda_y| = m g
+  EXPECT_NEAR(std::abs(s.lambda(1)), 2.0 * 9.81, 1e-8);
+}
+
+// A free body under gravity has no static equilibrium: the error names it.
+TEST(Statics, FreeBodyIsNamed) {
+  Model m;
+  RigidBodyData d;
+  d.mass = 1.0;
+  d.inertia_C = Mat3::Identity();
+  m.AddBody(std::make_unique<RigidBody>("floating_box", d));
+  m.Finalize();
+  State s = m.InitialState();
+  Workspace ws;
+  MakeConsistent(m, s, ws);
+  try {
+    SolveStatics(m, s, ws);
+    FAIL() << "expected a NumericalError";
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("floating_box"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace flexmb
