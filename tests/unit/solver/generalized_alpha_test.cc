@@ -1,0 +1,102 @@
+#include "flexmb/solver/generalized_alpha.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "flexmb/bodies/rigid_body.h"
+#include "flexmb/joints/revolute.h"
+#include "flexmb/solver/simulator.h"
+
+namespace flexmb {
+namespace {
+
+// Rigid rod pendulum (uniform rod, L = 1 m, m = 1 kg) pinned at one end,
+// released horizontal. The exact motion is theta(t) with
+// thetadot^2 = (3 g / L) sin(theta) (energy); we use it through the time at
+// which the rod first reaches the vertical: t* = int_0^{pi/2} dtheta / thetadot.
+struct Rod {
+  std::unique_ptr<Model> model;
+  int body = 0;
+};
+
+Rod MakeRod(double dt, double rho, bool adaptive) {
+  Rod r;
+  r.model = std::make_unique<Model>();
+  Model& m = *r.model;
+  m.gravity_W = Vec3(0, -9.81, 0);
+  RigidBodyData d;
+  d.mass = 1.0;
+  d.inertia_C = Vec3(1e-4, 1.0 / 12, 1.0 / 12).asDiagonal();
+  d.c_B = Vec3(0.5, 0, 0);
+  r.body = m.AddBody(std::make_unique<RigidBody>("rod", d));
+  m.AddJoint(std::make_unique<RevoluteJoint>("pin"), m.AddMarker(0, "o", Vec3::Zero(), Mat3::Identity()),
+             m.AddMarker(r.body, "o", Vec3::Zero(), Mat3::Identity()));
+  m.solver.dt = dt;
+  m.solver.rho_inf = rho;
+  m.solver.adaptive = adaptive;
+  m.solver.rtol = 1e-6;
+  m.solver.atol = 1e-8;
+  m.Finalize();
+  return r;
+}
+
+// angle of the rod below the horizontal after t_end
+double AngleAt(double dt, double rho, double t_end, long* steps = nullptr, bool adaptive = false) {
+  Rod r = MakeRod(dt, rho, adaptive);
+  Simulator sim(*r.model);
+  sim.Initialize();
+  sim.Run(t_end, 0.0, nullptr);
+  if (steps) *steps = sim.stats().steps;
+  const Body& b = *r.model->bodies[r.body];
+  Vec3 p;
+  Mat3 R;
+  b.BodyFramePose(sim.state().q.data() + b.q_offset, p, R);
+  return std::atan2(-R(1, 0), R(0, 0));
+}
+
+// reference: RK4 on theta'' = (3 g / (2 L)) cos(theta) with a tiny step
+double ReferenceAngle(double t_end) {
+  const double c = 1.5 * 9.81;
+  double th = 0.0, om = 0.0;
+  const int n = 200000;
+  const double h = t_end / n;
+  auto f = [&](double t, double w) { return std::pair<double, double>(w, c * std::cos(t)); };
+  for (int k = 0; k < n; ++k) {
+    auto [k1a, k1b] = f(th, om);
+    auto [k2a, k2b] = f(th + 0.5 * h * k1a, om + 0.5 * h * k1b);
+    auto [k3a, k3b] = f(th + 0.5 * h * k2a, om + 0.5 * h * k2b);
+    auto [k4a, k4b] = f(th + h * k3a, om + h * k3b);
+    th += h / 6 * (k1a + 2 * k2a + 2 * k3a + k4a);
+    om += h / 6 * (k1b + 2 * k2b + 2 * k3b + k4b);
+  }
+  return th;
+}
+
+TEST(GeneralizedAlpha, SecondOrderConvergence) {
+  const double t_end = 0.5, ref = ReferenceAngle(t_end);
+  for (double rho : {1.0, 0.8, 0.5}) {
+    const double e1 = std::abs(AngleAt(4e-3, rho, t_end) - ref);
+    const double e2 = std::abs(AngleAt(2e-3, rho, t_end) - ref);
+    const double e3 = std::abs(AngleAt(1e-3, rho, t_end) - ref);
+    // halving the step divides the error by about 4
+    EXPECT_GT(e1 / e2, 3.3) << "rho " << rho;
+    EXPECT_GT(e2 / e3, 3.3) << "rho " << rho;
+    EXPECT_LT(e3, 1e-4);
+    std::printf("rho %.1f errors %.3e %.3e %.3e\n", rho, e1, e2, e3);
+  }
+}
+
+TEST(GeneralizedAlpha, AdaptiveStepMeetsTolerance) {
+  const double t_end = 0.5, ref = ReferenceAngle(t_end);
+  long steps = 0;
+  const double err = std::abs(AngleAt(1e-2, 0.9, t_end, &steps, true) - ref);
+  EXPECT_LT(err, 1e-4);
+  std::printf("adaptive: error %.3e in %ld steps\n", err, steps);
+  EXPECT_GT(steps, 5);
+  EXPECT_LT(steps, 2000);
+}
+
+}  // namespace
+}  // namespace flexmb
