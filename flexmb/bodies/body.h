@@ -70,6 +70,12 @@ class Body {
   virtual void AddMarkerWrenchTangent(const double* q, const Marker& m, const Vec6& wrench_W,
                                       Eigen::Ref<MatX> dQdq) const = 0;
 
+  /// Writes d(J v)/dx at fixed v (6 x nv) to `out`: how the marker twist
+  /// changes when the body's coordinates move with its velocities held. It
+  /// carries the velocity-dependent forces (dampers) into the stiffness.
+  virtual void MarkerTwistTangent(const double* q, const double* v, const Marker& m,
+                                  Eigen::Ref<MatX> out) const = 0;
+
   /// Kinetic energy [J].
   virtual double KineticEnergy(const double* q, const double* v) const = 0;
   /// Potential energy of gravity g_W, zero at the world origin [J].

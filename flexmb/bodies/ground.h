@@ -23,6 +23,7 @@ class Ground final : public Body {
   }
   void AddMarkerWrenchTangent(const double*, const Marker&, const Vec6&,
                               Eigen::Ref<MatX>) const override {}
+  void MarkerTwistTangent(const double*, const double*, const Marker&, Eigen::Ref<MatX>) const override {}
   double KineticEnergy(const double*, const double*) const override { return 0.0; }
   double GravityPotential(const double*, const Vec3&) const override { return 0.0; }
   Vec6 Momentum(const double*, const double*) const override { return Vec6::Zero(); }

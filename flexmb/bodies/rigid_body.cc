@@ -109,6 +109,16 @@ void RigidBody::AddMarkerWrenchTangent(const double* q, const Marker& m, const V
   dQdq.bottomRightCorner<3, 3>() += Skew(m.p_BM) * Skew(f_B) + Skew(m_B);
 }
 
+void RigidBody::MarkerTwistTangent(const double* q, const double* v, const Marker& m,
+                                   Eigen::Ref<MatX> out) const {
+  // v_M = v_C + R (w x s), w_W = R w; R <- R exp(dtheta)
+  const Mat3 R = QuatOf(q).toRotationMatrix();
+  const Vec3 w(v[3], v[4], v[5]);
+  out.setZero();
+  out.block<3, 3>(0, 3) = -R * Skew(w.cross(m.p_BM));
+  out.block<3, 3>(3, 3) = -R * Skew(w);
+}
+
 double RigidBody::KineticEnergy(const double*, const double* v) const {
   const Vec3 vc(v[0], v[1], v[2]), w(v[3], v[4], v[5]);
   return 0.5 * data_.mass * vc.squaredNorm() + 0.5 * w.dot(data_.inertia_C * w);

@@ -49,6 +49,8 @@ class RigidBody final : public Body {
   Vec6 MarkerAccelerationBias(const double* q, const double* v, const Marker& m) const override;
   void AddMarkerWrenchTangent(const double* q, const Marker& m, const Vec6& wrench_W,
                               Eigen::Ref<MatX> dQdq) const override;
+  void MarkerTwistTangent(const double* q, const double* v, const Marker& m,
+                          Eigen::Ref<MatX> out) const override;
   double KineticEnergy(const double* q, const double* v) const override;
   double GravityPotential(const double* q, const Vec3& g_W) const override;
   Vec6 Momentum(const double* q, const double* v) const override;

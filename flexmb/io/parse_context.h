@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "flexmb/common/error.h"
 #include "flexmb/math/rotation.h"
 #include "flexmb/math/scalar_function.h"
 
@@ -42,6 +43,26 @@ class ParseContext {
   double Double(const YAML::Node& node, const char* key, double fallback) const;
   /// Required positive (> 0) finite number.
   double Positive(const YAML::Node& node, const char* key) const;
+  /// The finite number held by the scalar node `value` (e.g. a list entry);
+  /// `what` names it in messages, e.g. "'inertia' entry 2".
+  double Number(const YAML::Node& value, const std::string& what) const;
+  /// Optional whole number at node[key].
+  int Integer(const YAML::Node& node, const char* key, int fallback) const;
+  /// 1-based line of `node` in the file, 0 if unknown (e.g. a missing key).
+  static int Line(const YAML::Node& node);
+  /// Runs `body`; an InputError it throws without a file (e.g. from a
+  /// constructor or Model::Add*) is rethrown with this file, node's line and,
+  /// if the error names none, the current entity.
+  template <class F>
+  decltype(auto) Guard(const YAML::Node& node, F&& body) const {
+    try {
+      return body();
+    } catch (const InputError& e) {
+      Rethrow(node, e);
+    }
+  }
+  /// Rethrows `e` as described at Guard (or unchanged if it has a file).
+  [[noreturn]] void Rethrow(const YAML::Node& node, const InputError& e) const;
   /// Required / optional string.
   std::string String(const YAML::Node& node, const char* key) const;
   std::string String(const YAML::Node& node, const char* key, const std::string& fallback) const;

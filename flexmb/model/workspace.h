@@ -37,7 +37,8 @@ struct Workspace {
 
   // scratch
   Mat12 H;        ///< geometric stiffness of one joint
-  MatX G, GtK;    ///< marker Jacobian pair and products (12 x nv_a+nv_b)
+  MatX G, GtK;    ///< scratch for marker Jacobian products
+  MatX twist_dq;  ///< scratch: d(J v)/dx of one marker (6 x nv)
   VecX rhs;       ///< right-hand side / solution (nv + n_active)
 };
 

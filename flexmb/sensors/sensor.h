@@ -22,6 +22,9 @@ class Sensor {
   virtual const char* type() const = 0;
   /// Component names, e.g. {"x", "y", "z"}.
   virtual std::vector<std::string> Components() const = 0;
+  /// True if component k is an angle [rad] that may wrap at +-pi, so that a
+  /// results writer can unwrap it over several turns.
+  virtual bool ComponentIsAngle(int k) const { return false; }
   /// Writes the components to out. The workspace holds the marker states,
   /// joint evaluations and accelerations of `state` (Workspace::Update done).
   virtual void Evaluate(const Model& model, const State& state, const Workspace& ws,

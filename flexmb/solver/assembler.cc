@@ -34,14 +34,16 @@ void AddBlock(SparseMat& S, int r0, int c0, const Block& blk, double scale) {
 /// Indices of the bodies a joint or force element couples (marker bodies).
 int BodyOf(const Model& m, int marker) { return marker < 0 ? 0 : m.markers[marker].body; }
 
-/// Adds scale * Ja^T K6 Jb at body blocks (a, b) of the top-left of S.
-void AddCoupling(SparseMat& S, const MarkerState& ma, const MarkerState& mb,
+/// Adds scale * Ja^T K6 Rb at body blocks (a, b) of the top-left of S, where
+/// Rb (6 x nv_b) is marker b's twist Jacobian or its twist tangent.
+template <typename Right>
+void AddCoupling(SparseMat& S, const MarkerState& ma, const MarkerState& mb, const Right& Rb,
                  const Eigen::Ref<const Eigen::Matrix<double, 6, 6>>& K6, double scale, MatX& tmp,
                  MatX& blk) {
   if (ma.nv == 0 || mb.nv == 0 || scale == 0.0) return;
   auto t = tmp.topLeftCorner(6, mb.nv);
   auto b = blk.topLeftCorner(ma.nv, mb.nv);
-  t.noalias() = K6 * mb.J;
+  t.noalias() = K6 * Rb;
   b.noalias() = ma.J.transpose() * t;
   AddBlock(S, ma.v_offset, mb.v_offset, b, scale);
 }
@@ -83,6 +85,7 @@ void InitWorkspace(const Model& model, Workspace& ws, const std::vector<int>& re
   ws.vdot.setZero(model.nv);
   ws.G.setZero(6, max_nv);
   ws.GtK.setZero(max_nv, max_nv);
+  ws.twist_dq.setZero(6, max_nv);
 
   // active constraint rows
   ws.row_of_eq.assign(model.nc, 0);
@@ -234,8 +237,15 @@ void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
       }
       for (int b = 0; b < nm; ++b) {
         const MarkerState& mb = ws.markers[mk[b]];
-        AddCoupling(S, ma, mb, e.K.block<6, 6>(6 * a, 6 * b), -c.stiffness, ws.G, ws.GtK);
-        AddCoupling(S, ma, mb, e.C.block<6, 6>(6 * a, 6 * b), -c.damping, ws.G, ws.GtK);
+        AddCoupling(S, ma, mb, mb.J, e.K.block<6, 6>(6 * a, 6 * b), -c.stiffness, ws.G, ws.GtK);
+        AddCoupling(S, ma, mb, mb.J, e.C.block<6, 6>(6 * a, 6 * b), -c.damping, ws.G, ws.GtK);
+        if (mb.nv == 0 || c.stiffness == 0.0 || e.C.block<6, 6>(6 * a, 6 * b).isZero(0.0)) continue;
+        // dampers: the twist of marker b turns with its body at fixed v
+        const Marker& mkb = model.markers[mk[b]];
+        const Body& bb = *model.bodies[mkb.body];
+        auto td = ws.twist_dq.leftCols(mb.nv);
+        bb.MarkerTwistTangent(s.q.data() + bb.q_offset, s.v.data() + bb.v_offset, mkb, td);
+        AddCoupling(S, ma, mb, td, e.C.block<6, 6>(6 * a, 6 * b), -c.stiffness, ws.G, ws.GtK);
       }
     }
   }
@@ -275,7 +285,8 @@ void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
       body.AddMarkerWrenchTangent(s.q.data() + body.q_offset, marker, w.segment<6>(6 * a), blk);
       AddBlock(S, m[a]->v_offset, m[a]->v_offset, blk, c.stiffness);
       for (int b = 0; b < 2; ++b)
-        AddCoupling(S, *m[a], *m[b], ws.H.block<6, 6>(6 * a, 6 * b), c.stiffness, ws.G, ws.GtK);
+        AddCoupling(S, *m[a], *m[b], m[b]->J, ws.H.block<6, 6>(6 * a, 6 * b), c.stiffness, ws.G,
+                    ws.GtK);
     }
   }
 }

@@ -1,0 +1,118 @@
+#pragma once
+// Shared checks of the force element tests: random marker states, central
+// finite differences of the wrench (reference for K and C), Newton's third
+// law and the potential energy gradient.
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "flexmb/common/error.h"
+#include "flexmb/forces/force_element.h"
+#include "flexmb/joints/motion_driver.h"
+
+namespace flexmb::testing {
+
+inline Vec3 RandomVec(std::mt19937& rng, double scale) {
+  std::uniform_real_distribution<double> u(-scale, scale);
+  return Vec3(u(rng), u(rng), u(rng));
+}
+
+/// Random pose within [-1, 1]^3, random orientation and twist.
+inline MarkerState RandomMarker(std::mt19937& rng) {
+  MarkerState m;
+  m.p_WM = RandomVec(rng, 1.0);
+  m.R_WM = ExpSO3(RandomVec(rng, 3.0));
+  m.v_WM = RandomVec(rng, 2.0);
+  m.w_WM = RandomVec(rng, 2.0);
+  return m;
+}
+
+/// Pose variation k of marker m (flexmb::PerturbMarker), keeping its twist.
+inline MarkerState Perturbed(const MarkerState& m, int k, double eps) {
+  MarkerState p = PerturbMarker(m, k, eps);
+  p.v_WM = m.v_WM;
+  p.w_WM = m.w_WM;
+  return p;
+}
+
+/// Twist component k (v then w) of marker m moved by eps.
+inline MarkerState TwistPerturbed(const MarkerState& m, int k, double eps) {
+  MarkerState p = m;
+  if (k < 3)
+    p.v_WM(k) += eps;
+  else
+    p.w_WM(k - 3) += eps;
+  return p;
+}
+
+inline Vec12 Wrench(const ForceElement& f, const MarkerState& mi, const MarkerState& mj, double t) {
+  ForceEval e;
+  f.Evaluate(mi, mj, t, e);
+  return e.wrench;
+}
+
+/// Central differences of the wrench with respect to the pose variations
+/// (`twist` = false) or the twists (`twist` = true); `columns` = 6 for
+/// single-marker elements.
+inline Mat12 FiniteDifference(const ForceElement& f, const MarkerState& mi, const MarkerState& mj,
+                              double t, bool twist, int columns = 12, double h = 1e-6) {
+  Mat12 D = Mat12::Zero();
+  for (int k = 0; k < columns; ++k) {
+    const bool on_i = k < 6;
+    auto move = [&](const MarkerState& m, double eps) {
+      return twist ? TwistPerturbed(m, k % 6, eps) : Perturbed(m, k % 6, eps);
+    };
+    const MarkerState ip = on_i ? move(mi, h) : mi, im = on_i ? move(mi, -h) : mi;
+    const MarkerState jp = on_i ? mj : move(mj, h), jm = on_i ? mj : move(mj, -h);
+    D.col(k) = (Wrench(f, ip, jp, t) - Wrench(f, im, jm, t)) / (2 * h);
+  }
+  return D;
+}
+
+/// Max-norm of a - b relative to max(1, |b|_max).
+inline double RelErr(const Mat12& a, const Mat12& b) {
+  return (a - b).cwiseAbs().maxCoeff() / std::max(1.0, b.cwiseAbs().maxCoeff());
+}
+
+/// Analytic K and C against central differences, to `tol` relative.
+inline void ExpectTangents(const ForceElement& f, const MarkerState& mi, const MarkerState& mj, double t,
+                           int columns = 12, double tol = 1e-6) {
+  ForceEval e;
+  f.Evaluate(mi, mj, t, e);
+  const Mat12 Kfd = FiniteDifference(f, mi, mj, t, false, columns);
+  const Mat12 Cfd = FiniteDifference(f, mi, mj, t, true, columns);
+  EXPECT_LT(RelErr(e.K, Kfd), tol) << f.type() << " K analytic\n" << e.K << "\nK fd\n" << Kfd;
+  EXPECT_LT(RelErr(e.C, Cfd), tol) << f.type() << " C analytic\n" << e.C << "\nC fd\n" << Cfd;
+}
+
+/// Sum of forces and of moments about an arbitrary point o vanish.
+inline void ExpectThirdLaw(const ForceElement& f, const MarkerState& mi, const MarkerState& mj, double t) {
+  const Vec12 w = Wrench(f, mi, mj, t);
+  const Vec3 o(0.3, -0.7, 1.1);
+  const Vec3 fsum = w.segment<3>(0) + w.segment<3>(6);
+  const Vec3 msum = w.segment<3>(3) + w.segment<3>(9) + (mi.p_WM - o).cross(w.segment<3>(0)) +
+                    (mj.p_WM - o).cross(w.segment<3>(6));
+  const double scale = std::max(1.0, w.cwiseAbs().maxCoeff());
+  EXPECT_LT(fsum.norm(), 1e-12 * scale) << f.type();
+  EXPECT_LT(msum.norm(), 1e-11 * scale) << f.type();
+  EXPECT_GT(w.cwiseAbs().maxCoeff(), 1e-3) << f.type() << ": trivial wrench";
+}
+
+/// Central difference of the potential energy: -dV/dx must equal the wrench.
+inline void ExpectPotentialGradient(const ForceElement& f, const MarkerState& mi, const MarkerState& mj,
+                                    double t, double tol = 1e-6) {
+  const double h = 1e-6;
+  Vec12 grad;
+  for (int k = 0; k < 12; ++k) {
+    const bool on_i = k < 6;
+    const MarkerState ip = on_i ? Perturbed(mi, k, h) : mi, im = on_i ? Perturbed(mi, k, -h) : mi;
+    const MarkerState jp = on_i ? mj : Perturbed(mj, k - 6, h), jm = on_i ? mj : Perturbed(mj, k - 6, -h);
+    grad(k) = (f.PotentialEnergy(ip, jp, t) - f.PotentialEnergy(im, jm, t)) / (2 * h);
+  }
+  const Vec12 w = Wrench(f, mi, mj, t);
+  EXPECT_LT((w + grad).cwiseAbs().maxCoeff(), tol * std::max(1.0, w.cwiseAbs().maxCoeff()))
+      << f.type() << "\nwrench " << w.transpose() << "\n-dV/dx " << -grad.transpose();
+}
+
+}  // namespace flexmb::testing
