@@ -16,7 +16,6 @@ GeneralizedAlpha::GeneralizedAlpha(const Model& model, Workspace& ws, double rho
   const int nv = model.nv;
   for (VecX* x : {&a_, &vdot_, &a1_, &vdot1_, &v1_, &dq_, &res_, &dx_}) x->setZero(nv);
   q1_.setZero(model.nq);
-  qtmp_.setZero(model.nq);
 }
 
 void GeneralizedAlpha::Start(const State& s) {
@@ -79,8 +78,10 @@ StepStatus GeneralizedAlpha::TryStep(const State& s, double h) {
     lu_.Solve(ws.rhs);
     dx_ = ws.rhs.head(nv);
     // update
-    qtmp_ = trial_.q;
-    RetractAll(m, qtmp_, dx_, trial_.q);
+    // q_{n+1} = q_n (+) dq with the accumulated increment (composing the
+    // corrections one by one is not the same on SO(3) and is unstable)
+    dq_ += dx_;
+    RetractAll(m, s.q, dq_, trial_.q);
     trial_.v += gp * dx_;
     vdot1_ += bp * dx_;
     a1_ += ap * bp * dx_;

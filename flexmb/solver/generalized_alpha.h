@@ -66,7 +66,7 @@ class GeneralizedAlpha {
   // accepted state of the integrator: a (pseudo-acceleration), vdot
   VecX a_, vdot_;
   // trial values
-  VecX a1_, vdot1_, q1_, v1_, lam1_, dq_, res_, dx_, qtmp_;
+  VecX a1_, vdot1_, q1_, v1_, lam1_, dq_, res_, dx_;
   State trial_;
 };
 

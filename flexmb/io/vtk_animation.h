@@ -1,0 +1,72 @@
+#pragma once
+/// \file vtk_animation.h
+/// Animation output for ParaView: one XML VTK unstructured grid (.vtu, ASCII)
+/// per frame in DIR/frames/, and a collection file DIR/anim.pvd listing the
+/// frames with their times. After every frame the new entry and the closing
+/// tags are written over the previous closing tags and flushed, so the .pvd
+/// is complete XML between frames and an interrupted run leaves a loadable
+/// animation (constant cost per frame, however long the run).
+///
+/// Each body with a display shape (Body::shape) becomes cells: a box one
+/// hexahedron, a cylinder a fan of wedges, a sphere a triangulated surface.
+/// Bodies without a shape (Shape::Type::kNone) are skipped. Every cell
+/// carries the index of its body in Model::bodies as cell data "body_id".
+
+#include <string>
+#include <vector>
+
+#include "flexmb/model/marker.h"
+
+namespace flexmb {
+
+class Model;
+struct State;
+
+/// Vertices and cells of one body's shape in the user's body frame.
+struct ShapeMesh {
+  int body = 0;                    ///< index in Model::bodies
+  std::vector<Vec3> points_B;      ///< vertices in the user's body frame [m]
+  std::vector<int> connectivity;   ///< vertex indices of all cells (local to this mesh)
+  std::vector<int> cell_sizes;     ///< vertices per cell
+  std::vector<unsigned char> cell_types;  ///< VTK cell types (5 triangle, 12 hexahedron, 13 wedge)
+};
+
+/// Builds the mesh of a body's shape (empty for kNone). Cylinders use
+/// `segments` wedges; spheres `segments` slices and segments/2 stacks.
+/// Throws InputError naming the body if a size is not positive.
+ShapeMesh MakeShapeMesh(const Model& model, int body, int segments = 24);
+
+/// Writer of the frames and the .pvd collection of one run.
+class VtkAnimationWriter {
+ public:
+  /// Creates DIR/frames/ and the shape meshes. Throws InputError if the
+  /// directory cannot be created. `model` must outlive the writer.
+  VtkAnimationWriter(const std::string& dir, const Model& model);
+  ~VtkAnimationWriter();
+  VtkAnimationWriter(const VtkAnimationWriter&) = delete;
+  VtkAnimationWriter& operator=(const VtkAnimationWriter&) = delete;
+
+  /// Writes frame number frames() at time state.t [s] with the body poses of
+  /// `state`, then appends it to anim.pvd.
+  void WriteFrame(const State& state);
+
+  /// Number of frames written.
+  int frames() const { return static_cast<int>(times_.size()); }
+  /// Path of the .pvd file.
+  const std::string& pvd_path() const { return pvd_; }
+  /// Path of frame i.
+  std::string FramePath(int i) const;
+
+ private:
+  void AppendToPvd(double t);
+
+  const Model& model_;
+  std::string dir_, pvd_;
+  std::vector<ShapeMesh> meshes_;
+  std::vector<double> times_;
+  std::FILE* pvd_file_ = nullptr;
+  long pvd_tail_ = 0;  ///< file position of the closing tags in anim.pvd
+  int n_points_ = 0, n_cells_ = 0, n_conn_ = 0;
+};
+
+}  // namespace flexmb
