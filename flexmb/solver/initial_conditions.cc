@@ -54,40 +54,105 @@ void VelocityConstraint(const Model& model, const State& s, Workspace& ws, VecX&
 
 }  // namespace
 
+namespace {
+
+/// Joints whose equations may be redundant: all but the tree parts of the
+/// joint graph. A body held by a single joint (a leaf) gives that joint's
+/// equations their own columns, so they are independent of every other
+/// equation; pruning leaves repeatedly leaves the loops (and the paths that
+/// join them to the ground).
+std::vector<char> LoopJoints(const Model& model) {
+  const int nb = static_cast<int>(model.bodies.size());
+  const int nj = static_cast<int>(model.joints.size());
+  std::vector<int> degree(nb, 0);
+  std::vector<std::vector<int>> joints_of(nb);
+  for (int k = 0; k < nj; ++k)
+    for (int mk : {model.joints[k]->marker_i, model.joints[k]->marker_j}) {
+      const int b = model.markers[mk].body;
+      ++degree[b];
+      joints_of[b].push_back(k);
+    }
+  std::vector<char> alive(nj, 1);
+  std::vector<int> leaves;
+  for (int b = 1; b < nb; ++b)
+    if (degree[b] == 1) leaves.push_back(b);
+  while (!leaves.empty()) {
+    const int b = leaves.back();
+    leaves.pop_back();
+    if (degree[b] != 1) continue;
+    for (int k : joints_of[b]) {
+      if (!alive[k]) continue;
+      alive[k] = 0;
+      for (int mk : {model.joints[k]->marker_i, model.joints[k]->marker_j}) {
+        const int o = model.markers[mk].body;
+        if (--degree[o] == 1 && o != 0) leaves.push_back(o);
+      }
+      break;
+    }
+  }
+  return alive;
+}
+
+}  // namespace
+
 std::vector<int> FindRedundantEquations(const Model& model, const State& s, double tol) {
   std::vector<int> redundant;
   if (model.nc == 0) return redundant;
+  // candidate rows: equations of loop joints; candidate columns: their bodies
+  const std::vector<char> loop = LoopJoints(model);
+  std::vector<int> rows, col_of(model.nv, -1);
+  int ncols = 0;
+  for (size_t k = 0; k < model.joints.size(); ++k) {
+    if (!loop[k]) continue;
+    const Joint& j = *model.joints[k];
+    for (int q = 0; q < j.NumEquations(); ++q) rows.push_back(j.lambda_offset + q);
+    for (int mk : {j.marker_i, j.marker_j}) {
+      const Body& b = *model.bodies[model.markers[mk].body];
+      for (int c = b.v_offset; c < b.v_offset + b.nv(); ++c)
+        if (col_of[c] < 0) col_of[c] = ncols++;
+    }
+  }
+  if (rows.empty()) return redundant;
   Workspace ws;
   InitWorkspace(model, ws);
   EvaluateMarkers(model, s, ws);
   EvaluateConstraints(model, s, ws);
-  const int nc = model.nc;
-  if (static_cast<long>(nc) * model.nv <= 2'000'000L) {
+  // the candidate block of B (rows in model order)
+  std::vector<int> row_pos(model.nc, -1);
+  for (size_t r = 0; r < rows.size(); ++r) row_pos[rows[r]] = static_cast<int>(r);
+  std::vector<Eigen::Triplet<double, int>> trip;
+  for (int c = 0; c < ws.B.outerSize(); ++c)
+    for (SparseMat::InnerIterator it(ws.B, c); it; ++it)
+      if (row_pos[it.row()] >= 0 && col_of[c] >= 0) trip.emplace_back(row_pos[it.row()], col_of[c], it.value());
+  const int nr = static_cast<int>(rows.size());
+  SparseMat Bs(nr, ncols);
+  Bs.setFromTriplets(trip.begin(), trip.end());
+  if (static_cast<long>(nr) * ncols <= 4'000'000L) {
     // greedy modified Gram-Schmidt over the rows in model order (twice, for
     // numerical orthogonality): a row that adds nothing to the earlier ones
     // is redundant
-    const MatX B = MatX(ws.B);
-    MatX basis(model.nv, std::min(nc, model.nv));
+    const MatX B = MatX(Bs);
+    MatX basis(ncols, std::min(nr, ncols));
     int rank = 0;
-    for (int e = 0; e < nc; ++e) {
+    for (int e = 0; e < nr; ++e) {
       VecX r = B.row(e).transpose();
       const double n0 = r.norm();
       for (int pass = 0; pass < 2; ++pass)
         for (int k = 0; k < rank; ++k) r -= basis.col(k).dot(r) * basis.col(k);
       const double n1 = r.norm();
-      if (n0 == 0.0 || n1 <= tol * n0 || rank == model.nv) {
-        redundant.push_back(e);
+      if (n0 == 0.0 || n1 <= tol * n0 || rank == ncols) {
+        redundant.push_back(rows[e]);
       } else {
         basis.col(rank++) = r / n1;
       }
     }
   } else {
-    SparseMat Bt = ws.B.transpose();
+    SparseMat Bt = Bs.transpose();
     Eigen::SparseQR<SparseMat, Eigen::COLAMDOrdering<int>> qr;
     qr.setPivotThreshold(tol);
     qr.compute(Bt);
     const int rank = static_cast<int>(qr.rank());
-    for (int k = rank; k < nc; ++k) redundant.push_back(qr.colsPermutation().indices()(k));
+    for (int k = rank; k < nr; ++k) redundant.push_back(rows[qr.colsPermutation().indices()(k)]);
     std::sort(redundant.begin(), redundant.end());
   }
   return redundant;

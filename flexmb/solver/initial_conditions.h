@@ -17,6 +17,8 @@ class SparseLu;
 /// Global indices of constraint equations that are linearly dependent on the
 /// others at state s (relative tolerance `tol` on the rank decision). Earlier
 /// joints' equations are kept; later ones that add nothing are reported.
+/// Only the loops of the joint graph are examined (tree branches cannot be
+/// redundant), so the cost grows with the size of the loops, not the model.
 std::vector<int> FindRedundantEquations(const Model& model, const State& s, double tol);
 
 /// Moves q to satisfy Phi(q, t) = 0 with the smallest correction in the mass
