@@ -1,0 +1,469 @@
+#include "flexmb/fe/assembly.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include "flexmb/common/error.h"
+#include "flexmb/fe/point_mass.h"
+
+namespace flexmb::fe {
+
+namespace {
+
+const char* const kComponentName[6] = {"ux", "uy", "uz", "rx", "ry", "rz"};
+
+std::string Where(const Origin& o) {
+  if (o.file.empty()) return "";
+  return " (" + o.file + (o.line > 0 ? ":" + std::to_string(o.line) : std::string()) + ")";
+}
+
+std::string ElementName(const Element& e) {
+  return std::string(TypeName(e.type)) + " element " + std::to_string(e.id);
+}
+
+[[noreturn]] void Fail(const Origin& o, const std::string& entity, const std::string& message) {
+  throw InputError(message, {o.file, o.line, entity});
+}
+
+// free-DOF expansion of every full DOF: u_full[f] = sum coef * u_free[idx]
+struct Expansion {
+  std::vector<int> ptr, idx;
+  std::vector<double> coef;
+};
+
+// the free DOF touched by one element or mass, and where each local DOF lands
+struct BlockMap {
+  std::vector<int> union_dofs;          // sorted free DOF indices
+  std::vector<int> entry_ptr;           // local dof -> range in entry_pos/entry_coef
+  std::vector<int> entry_pos;           // position in union_dofs
+  std::vector<double> entry_coef;
+
+  void Build(const int* full, int n, const Expansion& x) {
+    union_dofs.clear();
+    for (int i = 0; i < n; ++i) {
+      if (full[i] < 0) continue;
+      for (int k = x.ptr[full[i]]; k < x.ptr[full[i] + 1]; ++k) union_dofs.push_back(x.idx[k]);
+    }
+    std::sort(union_dofs.begin(), union_dofs.end());
+    union_dofs.erase(std::unique(union_dofs.begin(), union_dofs.end()), union_dofs.end());
+    entry_ptr.assign(n + 1, 0);
+    entry_pos.clear();
+    entry_coef.clear();
+    for (int i = 0; i < n; ++i) {
+      if (full[i] >= 0) {
+        for (int k = x.ptr[full[i]]; k < x.ptr[full[i] + 1]; ++k) {
+          entry_pos.push_back(static_cast<int>(
+              std::lower_bound(union_dofs.begin(), union_dofs.end(), x.idx[k]) - union_dofs.begin()));
+          entry_coef.push_back(x.coef[k]);
+        }
+      }
+      entry_ptr[i + 1] = static_cast<int>(entry_pos.size());
+    }
+  }
+};
+
+// element inputs resolved from the mesh
+struct Resolved {
+  const Material* material = nullptr;
+  const ShellSection* shell = nullptr;
+  const BeamSection* beam = nullptr;
+};
+
+Resolved ResolveElement(const Mesh& mesh, const Element& e) {
+  const std::string name = ElementName(e);
+  const int nn = static_cast<int>(mesh.nodes.size());
+  if (static_cast<int>(e.nodes.size()) != NodeCount(e.type)) {
+    Fail(e.origin, name, "has " + std::to_string(e.nodes.size()) + " nodes, expected " +
+                             std::to_string(NodeCount(e.type)));
+  }
+  for (int n : e.nodes) {
+    if (n < 0 || n >= nn) Fail(e.origin, name, "refers to a node that does not exist (index " + std::to_string(n) + ")");
+  }
+  Resolved r;
+  int material = -1;
+  switch (e.type) {
+    case ElementType::kQuad4:
+    case ElementType::kTria3:
+      if (e.property < 0 || e.property >= static_cast<int>(mesh.shell_sections.size())) {
+        Fail(e.origin, name, "has no shell section");
+      }
+      r.shell = &mesh.shell_sections[e.property];
+      material = r.shell->material;
+      break;
+    case ElementType::kBeam2:
+      if (e.property < 0 || e.property >= static_cast<int>(mesh.beam_sections.size())) {
+        Fail(e.origin, name, "has no beam section");
+      }
+      r.beam = &mesh.beam_sections[e.property];
+      material = r.beam->material;
+      break;
+    default:
+      if (e.property < 0 || e.property >= static_cast<int>(mesh.solid_sections.size())) {
+        Fail(e.origin, name, "has no solid section");
+      }
+      material = mesh.solid_sections[e.property].material;
+      break;
+  }
+  if (material < 0 || material >= static_cast<int>(mesh.materials.size())) {
+    Fail(e.origin, name, "its section has no material");
+  }
+  r.material = &mesh.materials[material];
+  return r;
+}
+
+}  // namespace
+
+AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
+  const int nn = static_cast<int>(mesh.nodes.size());
+  const int ne = static_cast<int>(mesh.elements.size());
+  auto node_id = [&](int n) { return std::to_string(mesh.nodes[n].id); };
+
+  // resolve elements, masses, links and constraints, checking every reference
+  std::vector<Resolved> resolved(ne);
+  for (int e = 0; e < ne; ++e) resolved[e] = ResolveElement(mesh, mesh.elements[e]);
+  std::vector<Mat6> mass6(mesh.point_masses.size());
+  for (size_t k = 0; k < mesh.point_masses.size(); ++k) {
+    const PointMass& pm = mesh.point_masses[k];
+    if (pm.node < 0 || pm.node >= nn) {
+      Fail(pm.origin, "point mass " + std::to_string(pm.id), "refers to a node that does not exist");
+    }
+    mass6[k] = PointMassMatrix(pm);
+  }
+  for (const RigidLink& link : mesh.rigid_links) {
+    const std::string name = "rigid link " + std::to_string(link.id);
+    if (link.independent < 0 || link.independent >= nn) {
+      Fail(link.origin, name, "independent node does not exist");
+    }
+    if (link.dofs <= 0 || link.dofs > 0b111111) Fail(link.origin, name, "component mask must be a subset of 123456");
+    if (link.dependent.empty()) Fail(link.origin, name, "has no dependent nodes");
+    for (int d : link.dependent) {
+      if (d < 0 || d >= nn) Fail(link.origin, name, "a dependent node does not exist (index " + std::to_string(d) + ")");
+      if (d == link.independent) Fail(link.origin, name, "node " + node_id(d) + " is both independent and dependent");
+    }
+  }
+  if (options.apply_constraints) {
+    for (const Constraint& c : mesh.constraints) {
+      if (c.node < 0 || c.node >= nn) Fail(c.origin, "constraint", "refers to a node that does not exist");
+      if (c.dofs < 0 || c.dofs > 0b111111) Fail(c.origin, "constraint", "component mask must be a subset of 123456");
+    }
+  }
+  for (int n : options.extra_fixed_nodes) {
+    if (n < 0 || n >= nn) throw InputError("fixed node index " + std::to_string(n) + " does not exist in the mesh");
+  }
+
+  // active slots from elements and masses
+  std::vector<uint8_t> active(nn, 0);
+  for (const Element& e : mesh.elements) {
+    const uint8_t mask = DofsPerNode(e.type) == 6 ? 0b111111 : 0b000111;
+    for (int n : e.nodes) active[n] |= mask;
+  }
+  for (size_t k = 0; k < mesh.point_masses.size(); ++k) {
+    for (int c = 0; c < 6; ++c) {
+      if (mass6[k].row(c).cwiseAbs().maxCoeff() > 0.0) active[mesh.point_masses[k].node] |= 1 << c;
+    }
+  }
+
+  // dependent slots: each at most once, never an independent node
+  std::vector<std::array<int, 6>> owner(nn);
+  for (auto& o : owner) o.fill(-1);
+  for (size_t l = 0; l < mesh.rigid_links.size(); ++l) {
+    const RigidLink& link = mesh.rigid_links[l];
+    for (int d : link.dependent) {
+      for (int c = 0; c < 6; ++c) {
+        if (!(link.dofs & (1 << c))) continue;
+        if (owner[d][c] >= 0) {
+          const RigidLink& other = mesh.rigid_links[owner[d][c]];
+          if (static_cast<size_t>(owner[d][c]) == l) {
+            Fail(link.origin, "rigid link " + std::to_string(link.id), "lists dependent node " + node_id(d) + " twice");
+          }
+          Fail(link.origin, "rigid link " + std::to_string(link.id),
+               "node " + node_id(d) + " component " + kComponentName[c] +
+                   " is already dependent in rigid link " + std::to_string(other.id) + Where(other.origin));
+        }
+        owner[d][c] = static_cast<int>(l);
+      }
+    }
+  }
+  for (const RigidLink& link : mesh.rigid_links) {
+    for (int c = 0; c < 6; ++c) {
+      const int o = owner[link.independent][c];
+      if (o >= 0) {
+        Fail(link.origin, "rigid link " + std::to_string(link.id),
+             "independent node " + node_id(link.independent) + " is itself dependent in rigid link " +
+                 std::to_string(mesh.rigid_links[o].id) + Where(mesh.rigid_links[o].origin));
+      }
+    }
+  }
+  // independent slots that dependent slots need: u_dep = u_ind - skew(r) theta_ind, theta_dep = theta_ind
+  std::vector<uint8_t> from_links(nn, 0);
+  for (const RigidLink& link : mesh.rigid_links) {
+    const int a = link.independent;
+    for (int d : link.dependent) {
+      const Vec3 r = mesh.nodes[d].x - mesh.nodes[a].x;
+      for (int c = 0; c < 6; ++c) {
+        if (!(link.dofs & active[d] & (1 << c))) continue;
+        from_links[a] |= 1 << c;
+        if (c < 3) {
+          const int j = (c + 1) % 3, k = (c + 2) % 3;
+          // (theta x r)_c = theta_j r_k - theta_k r_j
+          if (r[k] != 0.0) from_links[a] |= 1 << (3 + j);
+          if (r[j] != 0.0) from_links[a] |= 1 << (3 + k);
+        }
+      }
+    }
+  }
+  for (int n = 0; n < nn; ++n) active[n] |= from_links[n];
+
+  // fixed slots; a fixed slot may not be dependent
+  std::vector<uint8_t> fixed(nn, 0);
+  std::vector<const Origin*> fixed_origin(nn, nullptr);
+  if (options.apply_constraints) {
+    for (const Constraint& c : mesh.constraints) {
+      fixed[c.node] |= c.dofs;
+      fixed_origin[c.node] = &c.origin;
+    }
+  }
+  for (int n : options.extra_fixed_nodes) fixed[n] = 0b111111;
+  for (int n = 0; n < nn; ++n) {
+    for (int c = 0; c < 6; ++c) {
+      const int bit = 1 << c;
+      if ((fixed[n] & active[n] & bit) && owner[n][c] >= 0) {
+        const RigidLink& link = mesh.rigid_links[owner[n][c]];
+        std::string by = fixed_origin[n] != nullptr && fixed_origin[n]->file.size() ? "a constraint" + Where(*fixed_origin[n])
+                                                                                   : "a constraint";
+        Fail(link.origin, "rigid link " + std::to_string(link.id),
+             "dependent node " + node_id(n) + " component " + kComponentName[c] + " is also fixed by " + by);
+      }
+    }
+  }
+
+  // numbering, node by node
+  AssembledModel out;
+  DofMap& dm = out.dofs;
+  dm.full.assign(nn, {-1, -1, -1, -1, -1, -1});
+  dm.free.assign(nn, {-1, -1, -1, -1, -1, -1});
+  for (int n = 0; n < nn; ++n) {
+    for (int c = 0; c < 6; ++c) {
+      if (!(active[n] & (1 << c))) continue;
+      dm.full[n][c] = dm.n_full++;
+      if (!(fixed[n] & (1 << c)) && owner[n][c] < 0) dm.free[n][c] = dm.n_free++;
+    }
+  }
+
+  // full -> free expansion (rows of T)
+  Expansion x;
+  x.ptr.assign(dm.n_full + 1, 0);
+  x.idx.reserve(dm.n_full);
+  x.coef.reserve(dm.n_full);
+  for (int n = 0; n < nn; ++n) {
+    for (int c = 0; c < 6; ++c) {
+      const int f = dm.full[n][c];
+      if (f < 0) continue;
+      if (dm.free[n][c] >= 0) {
+        x.idx.push_back(dm.free[n][c]);
+        x.coef.push_back(1.0);
+      } else if (owner[n][c] >= 0) {
+        const int a = mesh.rigid_links[owner[n][c]].independent;
+        if (dm.free[a][c] >= 0) {
+          x.idx.push_back(dm.free[a][c]);
+          x.coef.push_back(1.0);
+        }
+        if (c < 3) {
+          const Vec3 r = mesh.nodes[n].x - mesh.nodes[a].x;
+          const int j = (c + 1) % 3, k = (c + 2) % 3;
+          if (r[k] != 0.0 && dm.free[a][3 + j] >= 0) {
+            x.idx.push_back(dm.free[a][3 + j]);
+            x.coef.push_back(r[k]);
+          }
+          if (r[j] != 0.0 && dm.free[a][3 + k] >= 0) {
+            x.idx.push_back(dm.free[a][3 + k]);
+            x.coef.push_back(-r[j]);
+          }
+        }
+      }
+      x.ptr[f + 1] = static_cast<int>(x.idx.size());
+    }
+  }
+  {
+    std::vector<Eigen::Triplet<double, int>> t;
+    t.reserve(x.idx.size());
+    for (int f = 0; f < dm.n_full; ++f) {
+      for (int k = x.ptr[f]; k < x.ptr[f + 1]; ++k) t.emplace_back(f, x.idx[k], x.coef[k]);
+    }
+    out.T.resize(dm.n_full, dm.n_free);
+    out.T.setFromTriplets(t.begin(), t.end());
+  }
+
+  // local -> full DOF of each block (elements first, then point masses)
+  const int nb = ne + static_cast<int>(mesh.point_masses.size());
+  std::vector<int> block_ptr(nb + 1, 0), block_full;
+  for (int e = 0; e < ne; ++e) {
+    const Element& el = mesh.elements[e];
+    const int dpn = DofsPerNode(el.type);
+    for (int n : el.nodes) {
+      for (int c = 0; c < dpn; ++c) block_full.push_back(dm.full[n][c]);
+    }
+    block_ptr[e + 1] = static_cast<int>(block_full.size());
+  }
+  for (size_t k = 0; k < mesh.point_masses.size(); ++k) {
+    for (int c = 0; c < 6; ++c) block_full.push_back(dm.full[mesh.point_masses[k].node][c]);
+    block_ptr[ne + k + 1] = static_cast<int>(block_full.size());
+  }
+
+  // sparsity pattern: count, fill, sort and unique per column
+  const int nf = dm.n_free;
+  BlockMap bm;
+  std::vector<int64_t> col_ptr(nf + 1, 0);
+  for (int b = 0; b < nb; ++b) {
+    bm.Build(block_full.data() + block_ptr[b], block_ptr[b + 1] - block_ptr[b], x);
+    for (int q : bm.union_dofs) col_ptr[q + 1] += static_cast<int64_t>(bm.union_dofs.size());
+  }
+  for (int q = 0; q < nf; ++q) col_ptr[q + 1] += col_ptr[q];
+  std::vector<int> rows(col_ptr[nf]);
+  {
+    std::vector<int64_t> fill(col_ptr.begin(), col_ptr.end() - 1);
+    for (int b = 0; b < nb; ++b) {
+      bm.Build(block_full.data() + block_ptr[b], block_ptr[b + 1] - block_ptr[b], x);
+      for (int q : bm.union_dofs) {
+        std::copy(bm.union_dofs.begin(), bm.union_dofs.end(), rows.begin() + fill[q]);
+        fill[q] += static_cast<int64_t>(bm.union_dofs.size());
+      }
+    }
+  }
+  std::vector<int> outer(nf + 1, 0);
+  int64_t nnz = 0;
+  for (int q = 0; q < nf; ++q) {
+    auto first = rows.begin() + col_ptr[q], last = rows.begin() + col_ptr[q + 1];
+    std::sort(first, last);
+    last = std::unique(first, last);
+    const int64_t count = last - first;
+    std::copy(first, last, rows.begin() + nnz);
+    nnz += count;
+    if (nnz > INT32_MAX) throw InputError("model too large: more than 2^31 stored matrix entries");
+    outer[q + 1] = static_cast<int>(nnz);
+  }
+  for (SparseMat* a : {&out.K, &out.M}) {
+    a->resize(nf, nf);
+    a->resizeNonZeros(nnz);
+    std::copy(outer.begin(), outer.end(), a->outerIndexPtr());
+    std::copy(rows.begin(), rows.begin() + nnz, a->innerIndexPtr());
+    std::fill(a->valuePtr(), a->valuePtr() + nnz, 0.0);
+  }
+  rows.clear();
+  rows.shrink_to_fit();
+
+  // element matrices, reduced to the block's free DOF and added
+  const int* inner = out.K.innerIndexPtr();
+  double* kv = out.K.valuePtr();
+  double* mv = out.M.valuePtr();
+  MatX ke, me, kl, ml;
+  std::vector<Vec3> coords;
+  for (int b = 0; b < nb; ++b) {
+    const int* full = block_full.data() + block_ptr[b];
+    const int n = block_ptr[b + 1] - block_ptr[b];
+    if (b < ne) {
+      const Element& el = mesh.elements[b];
+      coords.clear();
+      for (int node : el.nodes) coords.push_back(mesh.nodes[node].x);
+      ElementInput in;
+      in.element = &el;
+      in.x = coords.data();
+      in.material = resolved[b].material;
+      in.shell = resolved[b].shell;
+      in.beam = resolved[b].beam;
+      in.mass_form = options.mass_form;
+      ElementMatrices(in, ke, me);
+    } else {
+      ke.setZero(6, 6);
+      me = mass6[b - ne];
+    }
+    bm.Build(full, n, x);
+    const int u = static_cast<int>(bm.union_dofs.size());
+    if (u == 0) continue;
+    kl.setZero(u, u);
+    ml.setZero(u, u);
+    for (int j = 0; j < n; ++j) {
+      for (int qj = bm.entry_ptr[j]; qj < bm.entry_ptr[j + 1]; ++qj) {
+        const int pj = bm.entry_pos[qj];
+        const double cj = bm.entry_coef[qj];
+        for (int i = 0; i < n; ++i) {
+          const double kij = ke(i, j), mij = me(i, j);
+          if (kij == 0.0 && mij == 0.0) continue;
+          for (int qi = bm.entry_ptr[i]; qi < bm.entry_ptr[i + 1]; ++qi) {
+            const double c = bm.entry_coef[qi] * cj;
+            kl(bm.entry_pos[qi], pj) += c * kij;
+            ml(bm.entry_pos[qi], pj) += c * mij;
+          }
+        }
+      }
+    }
+    for (int q = 0; q < u; ++q) {
+      const int col = bm.union_dofs[q];
+      int p = outer[col];
+      for (int r = 0; r < u; ++r) {
+        while (inner[p] != bm.union_dofs[r]) ++p;
+        kv[p] += 0.5 * (kl(r, q) + kl(q, r));
+        mv[p] += 0.5 * (ml(r, q) + ml(q, r));
+      }
+    }
+  }
+  return out;
+}
+
+MassProperties ComputeMassProperties(const Mesh& mesh, const AssembledModel& model) {
+  const DofMap& dm = model.dofs;
+  const int nn = static_cast<int>(mesh.nodes.size());
+  if (static_cast<int>(dm.free.size()) != nn || model.M.rows() != dm.n_free) {
+    throw InputError("mass properties: the assembled model does not belong to this mesh");
+  }
+  // a constrained DOF has an empty row of T: its mass would be missing
+  Eigen::VectorXi row_count = Eigen::VectorXi::Zero(dm.n_full);
+  for (int k = 0; k < model.T.outerSize(); ++k) {
+    for (SparseMat::InnerIterator it(model.T, k); it; ++it) row_count[it.row()] += 1;
+  }
+  if (dm.n_full > 0 && row_count.minCoeff() == 0) {
+    throw InputError("mass properties need the model assembled without constraints or fixed nodes");
+  }
+  // rigid-body vectors about a reference point near the model, free DOF
+  Vec3 x0 = Vec3::Zero();
+  for (const Node& node : mesh.nodes) x0 += node.x;
+  if (nn > 0) x0 /= nn;
+  Eigen::MatrixXd R = Eigen::MatrixXd::Zero(dm.n_free, 6);
+  for (int n = 0; n < nn; ++n) {
+    const Vec3 r = mesh.nodes[n].x - x0;
+    for (int c = 0; c < 6; ++c) {
+      const int f = dm.free[n][c];
+      if (f < 0) continue;
+      if (c < 3) {
+        // translation e_c, rotation about x0: (theta x r)_c
+        R(f, c) = 1.0;
+        const int j = (c + 1) % 3, k = (c + 2) % 3;
+        R(f, 3 + j) = r[k];
+        R(f, 3 + k) = -r[j];
+      } else {
+        R(f, c) = 1.0;
+      }
+    }
+  }
+  const Eigen::Matrix<double, 6, 6> mrr = R.transpose() * (model.M * R);
+  MassProperties p;
+  p.mass = mrr.topLeftCorner<3, 3>().trace() / 3.0;
+  if (!(p.mass > 0.0)) {
+    if (p.mass == 0.0) return p;
+    throw NumericalError("mass properties: the mass matrix gives a negative total mass");
+  }
+  // top-right block is -m skew(c) for a centre c relative to x0
+  const Mat3 s = -0.5 * (mrr.topRightCorner<3, 3>() - mrr.topRightCorner<3, 3>().transpose()) / p.mass;
+  const Vec3 c(s(2, 1), s(0, 2), s(1, 0));
+  Mat3 sc;
+  sc << 0.0, -c.z(), c.y(), c.z(), 0.0, -c.x(), -c.y(), c.x(), 0.0;
+  const Mat3 j0 = 0.5 * (mrr.bottomRightCorner<3, 3>() + mrr.bottomRightCorner<3, 3>().transpose());
+  p.center = x0 + c;
+  p.inertia = j0 + p.mass * sc * sc;
+  return p;
+}
+
+}  // namespace flexmb::fe

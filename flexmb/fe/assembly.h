@@ -1,0 +1,59 @@
+#pragma once
+/// \file assembly.h
+/// Global DOF numbering and sparse assembly of the stiffness and mass
+/// matrices of a Mesh, with rigid links eliminated and single-point
+/// constraints removed.
+
+#include <Eigen/SparseCore>
+#include <vector>
+
+#include "flexmb/fe/element_matrices.h"
+#include "flexmb/fe/mesh.h"
+
+namespace flexmb::fe {
+
+using SparseMat = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+/// Global numbering: every node has 6 DOF slots (ux uy uz rx ry rz). A slot
+/// is active if some element, mass or link gives it stiffness or mass
+/// (rotations of nodes used only by solids are inactive). Active slots that
+/// are neither constrained nor dependent (rigid links) are the free DOF.
+struct DofMap {
+  std::vector<std::array<int, 6>> full;  ///< node, component -> full-system index or -1
+  std::vector<std::array<int, 6>> free;  ///< node, component -> free DOF index or -1
+  int n_full = 0;                        ///< active DOF before links and constraints
+  int n_free = 0;                        ///< free DOF
+};
+
+/// The assembled model. K and M are symmetric, free DOF only (upper and
+/// lower parts stored). T maps free DOF to the full system, u_full = T u_free
+/// (it carries the rigid-link elimination).
+struct AssembledModel {
+  DofMap dofs;
+  SparseMat K, M;   ///< free x free
+  SparseMat T;      ///< full x free
+};
+
+/// Options of the assembly.
+struct AssemblyOptions {
+  MassForm mass_form = MassForm::kConsistent;
+  bool apply_constraints = true;   ///< remove the mesh's single-point constraints
+  std::vector<int> extra_fixed_nodes;  ///< node indices fixed in all 6 DOF (e.g. --fix)
+};
+
+/// Numbers the DOF, computes every element's matrices and assembles K and M,
+/// then eliminates rigid links (K_free = T^T K T) and constraints. Throws
+/// InputError naming the element or link at fault.
+AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options = {});
+
+/// Total mass [kg], centre of mass [m] and inertia about it [kg m^2] from
+/// the assembled (unconstrained) mass matrix and the node positions, via the
+/// six rigid-body modes: exact for consistent and lumped mass alike.
+struct MassProperties {
+  double mass = 0.0;
+  Vec3 center = Vec3::Zero();
+  Mat3 inertia = Mat3::Zero();
+};
+MassProperties ComputeMassProperties(const Mesh& mesh, const AssembledModel& model);
+
+}  // namespace flexmb::fe

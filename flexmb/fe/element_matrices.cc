@@ -1,0 +1,57 @@
+#include "flexmb/fe/element_matrices.h"
+
+#include <string>
+
+#include "flexmb/common/error.h"
+#include "flexmb/fe/elements/beam2.h"
+#include "flexmb/fe/elements/shell_quad4.h"
+#include "flexmb/fe/elements/shell_tria3.h"
+#include "flexmb/fe/elements/solid_hex8.h"
+#include "flexmb/fe/elements/solid_tet10.h"
+#include "flexmb/fe/elements/solid_tet4.h"
+
+namespace flexmb::fe {
+
+namespace {
+
+[[noreturn]] void Fail(const Element& e, const std::string& message) {
+  throw InputError(message, {e.origin.file, e.origin.line,
+                             std::string(TypeName(e.type)) + " element " + std::to_string(e.id)});
+}
+
+}  // namespace
+
+void ElementMatrices(const ElementInput& in, MatX& K, MatX& M) {
+  if (in.element == nullptr) throw InputError("ElementMatrices: no element given");
+  const Element& e = *in.element;
+  if (static_cast<int>(e.nodes.size()) != NodeCount(e.type)) {
+    Fail(e, "has " + std::to_string(e.nodes.size()) + " nodes, expected " +
+                std::to_string(NodeCount(e.type)));
+  }
+  if (in.x == nullptr) Fail(e, "no node coordinates given");
+  if (in.material == nullptr) Fail(e, "no material");
+  switch (e.type) {
+    case ElementType::kQuad4:
+      if (in.shell == nullptr) Fail(e, "no shell section");
+      ShellQuad4Matrices(in, K, M);
+      break;
+    case ElementType::kTria3:
+      if (in.shell == nullptr) Fail(e, "no shell section");
+      ShellTria3Matrices(in, K, M);
+      break;
+    case ElementType::kBeam2:
+      if (in.beam == nullptr) Fail(e, "no beam section");
+      Beam2Matrices(in, K, M);
+      break;
+    case ElementType::kTet4: SolidTet4Matrices(in, K, M); break;
+    case ElementType::kTet10: SolidTet10Matrices(in, K, M); break;
+    case ElementType::kHex8: SolidHex8Matrices(in, K, M); break;
+  }
+  const int n = NodeCount(e.type) * DofsPerNode(e.type);
+  if (K.rows() != n || K.cols() != n || M.rows() != n || M.cols() != n) {
+    Fail(e, "element routine returned matrices of the wrong size");
+  }
+  if (!K.allFinite() || !M.allFinite()) Fail(e, "stiffness or mass matrix is not finite");
+}
+
+}  // namespace flexmb::fe

@@ -1,0 +1,174 @@
+#include "flexmb/fe/elements/beam2.h"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <string>
+
+#include "flexmb/common/error.h"
+
+namespace flexmb::fe {
+namespace {
+
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+using Mat12 = Eigen::Matrix<double, 12, 12>;
+using Mat6x12 = Eigen::Matrix<double, 6, 12>;
+
+ErrorContext Context(const Element& e) {
+  return ErrorContext{e.origin.file, e.origin.line,
+                      std::string(TypeName(e.type)) + " " + std::to_string(e.id)};
+}
+
+Eigen::Matrix3d Skew(const Vec3& v) {
+  Eigen::Matrix3d s;
+  s << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+  return s;
+}
+
+// transport of end dof along the axis by a distance s: rigid motion
+// (u, theta) at x maps to (u - s e1 x theta, theta) at x + s e1
+Mat6 Transport(double s) {
+  Mat6 g = Mat6::Identity();
+  g.block<3, 3>(0, 3) = -Skew(Vec3(s, 0.0, 0.0));
+  return g;
+}
+
+void CheckPositive(double v, const char* what, const ErrorContext& ctx) {
+  if (!(v > 0.0) || !std::isfinite(v))
+    throw InputError(std::string(what) + " must be positive, got " + std::to_string(v), ctx);
+}
+
+}  // namespace
+
+void Beam2Matrices(const ElementInput& in, MatX& K, MatX& M) {
+  if (in.element == nullptr) throw InputError("beam element input without an element");
+  const Element& e = *in.element;
+  const ErrorContext ctx = Context(e);
+  if (e.nodes.size() != 2 || in.x == nullptr)
+    throw InputError("expected 2 nodes, got " + std::to_string(e.nodes.size()), ctx);
+  if (in.beam == nullptr) throw InputError("missing beam section (property)", ctx);
+  if (in.material == nullptr) throw InputError("missing material of the beam section", ctx);
+  const BeamSection& sec = *in.beam;
+  const Material& mat = *in.material;
+
+  CheckPositive(mat.E, "material Young's modulus", ctx);
+  const double G = mat.G > 0.0 ? mat.G : mat.E / (2.0 * (1.0 + mat.nu));
+  CheckPositive(G, "material shear modulus", ctx);
+  if (!(mat.rho >= 0.0) || !std::isfinite(mat.rho) || !(sec.nsm >= 0.0) || !std::isfinite(sec.nsm))
+    throw InputError("negative or non-finite density or non-structural mass", ctx);
+  CheckPositive(sec.A, "section area A", ctx);
+  CheckPositive(sec.Iy, "section moment Iy", ctx);
+  CheckPositive(sec.Iz, "section moment Iz", ctx);
+  CheckPositive(sec.J, "section torsion constant J", ctx);
+  if (!std::isfinite(sec.Iyz) || !(sec.Iy * sec.Iz - sec.Iyz * sec.Iyz > 1e-12 * sec.Iy * sec.Iz))
+    throw InputError("section product of inertia Iyz = " + std::to_string(sec.Iyz) +
+                         " too large: need Iy Iz > Iyz^2",
+                     ctx);
+  if (!(sec.ky >= 0.0) || !(sec.kz >= 0.0) || !std::isfinite(sec.ky) || !std::isfinite(sec.kz))
+    throw InputError("negative or non-finite shear factor", ctx);
+
+  // ends, element frame
+  const Vec3& oa = e.offset_a;
+  const Vec3& ob = e.offset_b;
+  if (!in.x[0].allFinite() || !in.x[1].allFinite() || !oa.allFinite() || !ob.allFinite() ||
+      !e.orientation.allFinite())
+    throw InputError("non-finite node coordinates, offsets or orientation vector", ctx);
+  const Vec3 xa = in.x[0] + oa;
+  const Vec3 xb = in.x[1] + ob;
+  const double L = (xb - xa).norm();
+  const double scale = std::max({xa.norm(), xb.norm(), oa.norm(), ob.norm()});
+  if (!(L > 1e-10 * scale) || !(L > 0.0))
+    throw InputError("zero length (ends A and B coincide)", ctx);
+  const Vec3 ex = (xb - xa) / L;
+  const Vec3& v = e.orientation;
+  const Vec3 vy = v - ex * ex.dot(v);
+  if (!(vy.norm() > 1e-8 * v.norm()) || !(v.norm() > 0.0))
+    throw InputError(v.norm() > 0.0 ? "orientation vector parallel to the beam axis"
+                                    : "zero orientation vector",
+                     ctx);
+  const Vec3 ey = vy.normalized();
+  const Vec3 ez = ex.cross(ey);
+  Eigen::Matrix3d R;  // basic from element
+  R.col(0) = ex;
+  R.col(1) = ey;
+  R.col(2) = ez;
+
+  // section compliance over (N, Vy, Vz, T, My, Mz)
+  Mat6 C = Mat6::Zero();
+  C(0, 0) = 1.0 / (mat.E * sec.A);
+  C(1, 1) = sec.ky > 0.0 ? 1.0 / (sec.ky * G * sec.A) : 0.0;
+  C(2, 2) = sec.kz > 0.0 ? 1.0 / (sec.kz * G * sec.A) : 0.0;
+  C(3, 3) = 1.0 / (G * sec.J);
+  Eigen::Matrix2d eb;
+  eb << sec.Iy, -sec.Iyz, -sec.Iyz, sec.Iz;
+  C.block<2, 2>(4, 4) = (mat.E * eb).inverse();
+
+  // section resultants at distance s before end B under an end-B load P:
+  // S = (I + s B1) P, B1 = [0 0; skew(e1) 0]
+  Mat6 B1 = Mat6::Zero();
+  B1.block<3, 3>(3, 0) = Skew(Vec3::UnitX());
+  const Mat6 cb = C * B1;
+  const Mat6 bc = B1.transpose() * C;
+  const Mat6 bcb = B1.transpose() * C * B1;
+  // cantilever flexibility of end B (A clamped), closed form of int B^T C B
+  const Mat6 F = L * C + 0.5 * L * L * (bc + cb) + L * L * L / 3.0 * bcb;
+  Mat6 kbb = F.inverse();
+  kbb = 0.5 * (kbb + kbb.transpose()).eval();
+
+  // local stiffness: end-A wrench = -Gamma end-B wrench, Gamma^T = Transport(L)
+  const Mat6 gt = Transport(L);
+  Mat12 kl;
+  kl.block<6, 6>(0, 0) = gt.transpose() * kbb * gt;
+  kl.block<6, 6>(0, 6) = -gt.transpose() * kbb;
+  kl.block<6, 6>(6, 0) = -kbb * gt;
+  kl.block<6, 6>(6, 6) = kbb;
+
+  // section mass per length: translations, rotary inertia
+  const double m0 = mat.rho * sec.A + sec.nsm;
+  Mat6 ms = Mat6::Zero();
+  ms.block<3, 3>(0, 0).diagonal().setConstant(m0);
+  ms(3, 3) = mat.rho * (sec.Iy + sec.Iz);
+  ms(4, 4) = mat.rho * sec.Iy;
+  ms(5, 5) = mat.rho * sec.Iz;
+  ms(4, 5) = ms(5, 4) = -mat.rho * sec.Iyz;
+
+  Mat12 ml = Mat12::Zero();
+  if (in.mass_form == MassForm::kConsistent) {
+    // exact static field N(x) = [Gamma_x^T - D(x) Kbb Gamma^T, D(x) Kbb], D(x) the
+    // displacement at x per end-B load; cubic in x, so 4-point Gauss is exact
+    constexpr double kGp[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
+                               0.8611363115940526};
+    constexpr double kGw[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
+                               0.3478548451374538};
+    for (int g = 0; g < 4; ++g) {
+      const double x = 0.5 * L * (1.0 + kGp[g]);
+      const Mat6 D = x * C + 0.5 * x * x * bc + (L * x - 0.5 * x * x) * cb +
+                     ((L - x) * x * x / 2.0 + x * x * x / 3.0) * bcb;
+      const Mat6 dk = D * kbb;
+      Mat6x12 n;
+      n.block<6, 6>(0, 0) = Transport(x) - dk * gt;
+      n.block<6, 6>(0, 6) = dk;
+      ml += n.transpose() * ms * n * (0.5 * L * kGw[g]);
+    }
+  } else {
+    for (int end = 0; end < 2; ++end) {
+      for (int a = 0; a < 3; ++a) ml(6 * end + a, 6 * end + a) = 0.5 * L * m0;
+      for (int a = 3; a < 6; ++a) ml(6 * end + a, 6 * end + a) = 0.5 * L * ms(a, a);
+    }
+  }
+
+  // basic nodal dof -> local end dof: u_end = R^T (u + theta x offset), theta_end = R^T theta
+  Mat12 t = Mat12::Zero();
+  const Eigen::Matrix3d rt = R.transpose();
+  const Vec3 off[2] = {oa, ob};
+  for (int i = 0; i < 2; ++i) {
+    t.block<3, 3>(6 * i, 6 * i) = rt;
+    t.block<3, 3>(6 * i, 6 * i + 3) = -rt * Skew(off[i]);
+    t.block<3, 3>(6 * i + 3, 6 * i + 3) = rt;
+  }
+  K = t.transpose() * kl * t;
+  K = 0.5 * (K + K.transpose()).eval();
+  M = t.transpose() * ml * t;
+  M = 0.5 * (M + M.transpose()).eval();
+}
+
+}  // namespace flexmb::fe

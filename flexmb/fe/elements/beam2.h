@@ -1,0 +1,35 @@
+#pragma once
+/// \file beam2.h
+/// 2-node 3D Timoshenko beam with a general section (CBAR / CBEAM / B31
+/// like). Element frame (Nastran CBAR convention): x from end A to end B,
+/// y in the plane of x and the orientation vector v (Element::orientation),
+/// z = x cross y. The ends may be offset from their nodes (Element::offset_a,
+/// offset_b, basic frame); the offsets are rigid links, u_end = u_node +
+/// theta_node x offset. The stiffness is exact for a prismatic Timoshenko
+/// beam without span loads: it is the inverse of the cantilever flexibility
+/// of the section compliance (axial EA, shear ky G A and kz G A, torsion G J,
+/// bending E [Iy -Iyz; -Iyz Iz] coupled through Iyz), integrated in closed
+/// form; with Iyz = 0 it equals the classical matrix with the shear
+/// parameter phi = 12 E I / (k G A L^2). ky = kz = 0 gives Euler-Bernoulli
+/// bending. The consistent mass uses the same exact static displacement
+/// fields as interpolation (cubic Hermite for Euler-Bernoulli, the
+/// phi-dependent functions otherwise) with translational inertia
+/// (rho A + nsm) and the section's rotary inertia rho [Iy + Iz, Iy, Iz, Iyz].
+/// Details: docs/design.md, "FE: beam element".
+
+#include "flexmb/fe/element_matrices.h"
+
+namespace flexmb::fe {
+
+/// Fills K [N/m, N, N m] and M [kg, kg m, kg m^2] (12 x 12, basic frame,
+/// node by node ux uy uz rx ry rz) of a 2-node beam. MassForm::kLumped puts
+/// half the mass (rho A + nsm) L on each node's translations and half the
+/// section's rotary inertia rho L [Iy + Iz, Iy, Iz] on its rotations
+/// (element axes, the product Iyz dropped), transformed to the basic frame
+/// at the element's ends. Throws InputError naming the element (type, id,
+/// file:line) for zero length, an orientation vector zero or parallel to the
+/// axis, non-positive A, Iy, Iz or J, Iy Iz <= Iyz^2, negative shear factors,
+/// a missing section or material, or bad material constants.
+void Beam2Matrices(const ElementInput& in, MatX& K, MatX& M);
+
+}  // namespace flexmb::fe

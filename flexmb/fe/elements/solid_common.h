@@ -1,0 +1,135 @@
+#pragma once
+/// \file solid_common.h
+/// Pieces shared by the isoparametric solids (tet4, tet10, hex8): input
+/// checks, the isotropic elasticity matrix, the Jacobian with its sign
+/// check, the strain-displacement matrix, and quadrature loops for the
+/// stiffness and the consistent and lumped (HRZ) mass. Strains are ordered
+/// xx yy zz xy yz zx with engineering shear. Element DOF: ux uy uz per node,
+/// node by node, basic frame. Details: docs/design.md, "FE: solid elements".
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+#include <string>
+
+#include "flexmb/common/error.h"
+#include "flexmb/fe/element_matrices.h"
+
+namespace flexmb::fe::solid {
+
+/// Context naming the element for error messages ("8-node hexahedron 5" at
+/// the element's file:line).
+ErrorContext Context(const Element& element);
+
+/// Checked material values of a solid.
+struct SolidData {
+  double E = 0.0;    ///< Young's modulus [Pa]
+  double nu = 0.0;   ///< Poisson's ratio
+  double rho = 0.0;  ///< density [kg/m^3]
+  double h = 0.0;    ///< longest edge between the first and the other corner nodes [m]
+};
+
+/// Checks element, material and coordinates of a solid with `n_nodes` nodes
+/// (the first `n_corners` of them corners) and returns the values; throws
+/// InputError naming the element otherwise (missing material, E <= 0, nu
+/// outside (-1, 0.5), negative density, non-finite or coincident nodes).
+SolidData CheckSolidInput(const ElementInput& in, int n_nodes, int n_corners);
+
+/// Isotropic elasticity matrix [Pa], stress = D strain.
+Eigen::Matrix<double, 6, 6> ElasticityMatrix(const SolidData& s);
+
+/// One quadrature point in natural coordinates with its weight (the
+/// reference element's measure included).
+struct QuadPoint {
+  double xi, eta, zeta, w;
+};
+
+/// Jacobian J = dX/dxi (rows: d/dxi, d/deta, d/dzeta of x y z) from the
+/// natural derivatives `dn` (3 x N) and node coordinates; returns det J and
+/// the cartesian derivatives `dx` (3 x N). Throws InputError naming the
+/// element if det J <= tol = 1e-10 h^3: "inverted" below -tol, else
+/// "degenerate".
+template <int N>
+double CartesianDerivatives(const Eigen::Matrix<double, 3, N>& dn, const Vec3* x,
+                            const SolidData& s, const Element& e,
+                            Eigen::Matrix<double, 3, N>& dx) {
+  Eigen::Matrix3d j = Eigen::Matrix3d::Zero();
+  for (int i = 0; i < N; ++i) j += dn.col(i) * x[i].transpose();
+  const double det = j.determinant();
+  const double tol = 1e-10 * s.h * s.h * s.h;
+  if (!(det > tol))
+    throw InputError(det < -tol ? "inverted element (negative Jacobian determinant " +
+                                      std::to_string(det) + ")"
+                                : "degenerate element (zero Jacobian determinant)",
+                     Context(e));
+  dx = j.inverse() * dn;
+  return det;
+}
+
+/// Strain-displacement matrix (6 x 3N) from cartesian derivatives.
+template <int N>
+Eigen::Matrix<double, 6, 3 * N> StrainMatrix(const Eigen::Matrix<double, 3, N>& dx) {
+  Eigen::Matrix<double, 6, 3 * N> b = Eigen::Matrix<double, 6, 3 * N>::Zero();
+  for (int i = 0; i < N; ++i) {
+    b(0, 3 * i) = dx(0, i);
+    b(1, 3 * i + 1) = dx(1, i);
+    b(2, 3 * i + 2) = dx(2, i);
+    b(3, 3 * i) = dx(1, i);
+    b(3, 3 * i + 1) = dx(0, i);
+    b(4, 3 * i + 1) = dx(2, i);
+    b(4, 3 * i + 2) = dx(1, i);
+    b(5, 3 * i) = dx(2, i);
+    b(5, 3 * i + 2) = dx(0, i);
+  }
+  return b;
+}
+
+/// Adds rho int N^T N dV (3 DOF per node) over the given points to `m`;
+/// `shape(p, n, dn)` gives shape functions and natural derivatives.
+template <int N, class Shape>
+void AddConsistentMass(const QuadPoint* pts, int count, Shape&& shape, const Vec3* x,
+                       const SolidData& s, const Element& e,
+                       Eigen::Matrix<double, 3 * N, 3 * N>& m) {
+  Eigen::Matrix<double, N, 1> n;
+  Eigen::Matrix<double, 3, N> dn, dx;
+  for (int g = 0; g < count; ++g) {
+    shape(pts[g], n, dn);
+    const double det = CartesianDerivatives<N>(dn, x, s, e, dx);
+    const Eigen::Matrix<double, N, N> nn = n * n.transpose() * (s.rho * det * pts[g].w);
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j)
+        for (int a = 0; a < 3; ++a) m(3 * i + a, 3 * j + a) += nn(i, j);
+  }
+}
+
+/// Adds int B^T D B dV over the given points to `k`.
+template <int N, class Shape>
+void AddStiffness(const QuadPoint* pts, int count, Shape&& shape, const Vec3* x,
+                  const SolidData& s, const Element& e, Eigen::Matrix<double, 3 * N, 3 * N>& k) {
+  const Eigen::Matrix<double, 6, 6> d = ElasticityMatrix(s);
+  Eigen::Matrix<double, N, 1> n;
+  Eigen::Matrix<double, 3, N> dn, dx;
+  for (int g = 0; g < count; ++g) {
+    shape(pts[g], n, dn);
+    const double det = CartesianDerivatives<N>(dn, x, s, e, dx);
+    const Eigen::Matrix<double, 6, 3 * N> b = StrainMatrix<N>(dx);
+    k += b.transpose() * d * b * (det * pts[g].w);
+  }
+}
+
+/// HRZ lumping (Hinton, Rock, Zienkiewicz 1976): the diagonal of the
+/// consistent mass scaled so that each direction carries the total mass.
+/// Positive for every element here (row sums are not: tet10 corners).
+template <int M>
+void LumpHrz(Eigen::Matrix<double, M, M>& m) {
+  const Eigen::Matrix<double, M, 1> diag = m.diagonal();
+  // total mass: sum of the x-direction block of the consistent matrix
+  double total = 0.0, dsum = 0.0;
+  for (int i = 0; i < M; i += 3) {
+    for (int j = 0; j < M; j += 3) total += m(i, j);
+    dsum += diag(i);
+  }
+  m.setZero();
+  if (dsum > 0.0) m.diagonal() = diag * (total / dsum);
+}
+
+}  // namespace flexmb::fe::solid

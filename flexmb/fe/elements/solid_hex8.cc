@@ -1,0 +1,91 @@
+#include "flexmb/fe/elements/solid_hex8.h"
+
+#include <Eigen/Cholesky>
+#include <cmath>
+
+#include "flexmb/fe/elements/solid_common.h"
+
+namespace flexmb::fe {
+namespace {
+
+using Mat24 = Eigen::Matrix<double, 24, 24>;
+
+constexpr double kXi[8] = {-1.0, 1.0, 1.0, -1.0, -1.0, 1.0, 1.0, -1.0};
+constexpr double kEta[8] = {-1.0, -1.0, 1.0, 1.0, -1.0, -1.0, 1.0, 1.0};
+constexpr double kZeta[8] = {-1.0, -1.0, -1.0, -1.0, 1.0, 1.0, 1.0, 1.0};
+
+// trilinear shape functions and their natural derivatives
+void Shape(const solid::QuadPoint& p, Eigen::Matrix<double, 8, 1>& n,
+           Eigen::Matrix<double, 3, 8>& dn) {
+  for (int i = 0; i < 8; ++i) {
+    const double a = 1.0 + p.xi * kXi[i], b = 1.0 + p.eta * kEta[i], c = 1.0 + p.zeta * kZeta[i];
+    n(i) = 0.125 * a * b * c;
+    dn(0, i) = 0.125 * kXi[i] * b * c;
+    dn(1, i) = 0.125 * kEta[i] * a * c;
+    dn(2, i) = 0.125 * kZeta[i] * a * b;
+  }
+}
+
+// tensor-product Gauss rule with `order` points per direction (2 or 3)
+int GaussRule(int order, solid::QuadPoint* pts) {
+  const double g2[2] = {-1.0 / std::sqrt(3.0), 1.0 / std::sqrt(3.0)};
+  const double w2[2] = {1.0, 1.0};
+  const double g3[3] = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)};
+  const double w3[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+  const double* g = order == 2 ? g2 : g3;
+  const double* w = order == 2 ? w2 : w3;
+  int k = 0;
+  for (int i = 0; i < order; ++i)
+    for (int j = 0; j < order; ++j)
+      for (int l = 0; l < order; ++l) pts[k++] = {g[i], g[j], g[l], w[i] * w[j] * w[l]};
+  return k;
+}
+
+}  // namespace
+
+void SolidHex8Matrices(const ElementInput& in, MatX& K, MatX& M, Hex8Formulation formulation) {
+  const solid::SolidData s = solid::CheckSolidInput(in, 8, 8);
+  const Element& e = *in.element;
+  Eigen::Matrix<double, 8, 1> n;
+  Eigen::Matrix<double, 3, 8> dn, dx;
+  solid::QuadPoint g2[8], g3[27];
+  GaussRule(2, g2);
+  GaussRule(3, g3);
+
+  Mat24 k = Mat24::Zero();
+  if (formulation == Hex8Formulation::kFullIntegration) {
+    solid::AddStiffness<8>(g2, 8, Shape, in.x, s, e, k);
+  } else {
+    // centre Jacobian for Taylor's correction
+    Shape({0.0, 0.0, 0.0, 0.0}, n, dn);
+    Eigen::Matrix3d j0 = Eigen::Matrix3d::Zero();
+    for (int i = 0; i < 8; ++i) j0 += dn.col(i) * in.x[i].transpose();
+    const double det0 = j0.determinant();
+    const Eigen::Matrix3d j0_inv = j0.inverse();
+    const Eigen::Matrix<double, 6, 6> d = solid::ElasticityMatrix(s);
+    Eigen::Matrix<double, 24, 9> kci = Eigen::Matrix<double, 24, 9>::Zero();
+    Eigen::Matrix<double, 9, 9> kii = Eigen::Matrix<double, 9, 9>::Zero();
+    for (const solid::QuadPoint& p : g2) {
+      Shape(p, n, dn);
+      const double det = solid::CartesianDerivatives<8>(dn, in.x, s, e, dx);
+      const Eigen::Matrix<double, 6, 24> b = solid::StrainMatrix<8>(dx);
+      // modes 1 - xi^2, 1 - eta^2, 1 - zeta^2: natural derivatives, then cartesian
+      const Eigen::Matrix3d dp = Eigen::Vector3d(-2.0 * p.xi, -2.0 * p.eta, -2.0 * p.zeta).asDiagonal();
+      const Eigen::Matrix3d dpx = j0_inv * dp * (det0 / det);
+      const Eigen::Matrix<double, 6, 9> bi = solid::StrainMatrix<3>(dpx);
+      const Eigen::Matrix<double, 6, 24> db = d * b * (det * p.w);
+      k += b.transpose() * db;
+      kci += db.transpose() * bi;
+      kii += bi.transpose() * d * bi * (det * p.w);
+    }
+    k -= kci * kii.ldlt().solve(kci.transpose());
+  }
+
+  Mat24 m = Mat24::Zero();
+  solid::AddConsistentMass<8>(g3, 27, Shape, in.x, s, e, m);
+  if (in.mass_form == MassForm::kLumped) solid::LumpHrz<24>(m);
+  K = 0.5 * (k + k.transpose());
+  M = 0.5 * (m + m.transpose());
+}
+
+}  // namespace flexmb::fe

@@ -1,0 +1,38 @@
+#pragma once
+/// \file solid_hex8.h
+/// 8-node trilinear hexahedron (CHEXA with 8 nodes, C3D8 / C3D8I), 3 DOF per
+/// node. Node order as Nastran and Abaqus: face 1 2 3 4, then 5 6 7 8 above
+/// 1 2 3 4, numbered so that the Jacobian is positive (natural corners
+/// (-1,-1,-1), (1,-1,-1), (1,1,-1), (-1,1,-1), then the same at zeta = +1).
+/// Default: incompatible modes (Wilson, Taylor, Doherty, Ghaboussi 1973;
+/// Taylor, Beresford, Wilson 1976),
+/// which remove shear locking in bending. Details: docs/design.md,
+/// "FE: solid elements".
+
+#include "flexmb/fe/element_matrices.h"
+
+namespace flexmb::fe {
+
+/// Stiffness formulation of the 8-node hexahedron.
+enum class Hex8Formulation {
+  /// Full 2x2x2 integration plus the nine incompatible modes (1 - xi_a^2)
+  /// per displacement component, with Taylor's correction (derivatives from
+  /// the centre Jacobian J0, scaled by det J0 / det J) so that the patch test
+  /// passes on distorted elements; the modes are condensed out (C3D8I-like).
+  kIncompatibleModes,
+  /// Plain full 2x2x2 integration (C3D8-like); locks in bending.
+  kFullIntegration,
+};
+
+/// Fills K [N/m] and M [kg] (24 x 24, basic frame, node by node ux uy uz) of
+/// an 8-node hexahedron; consistent mass by 3x3x3 Gauss (exact for any
+/// trilinear geometry), MassForm::kLumped by HRZ lumping (one eighth of the
+/// mass per node on a parallelepiped). Throws InputError naming the element
+/// if the Jacobian determinant is not positive at an integration point
+/// (2x2x2 and 3x3x3; inverted, degenerate or too distorted), for a missing
+/// material or bad material constants. Corners are not checked: the
+/// MacNeal-Harder patch elements have slightly negative corner Jacobians.
+void SolidHex8Matrices(const ElementInput& in, MatX& K, MatX& M,
+                       Hex8Formulation formulation = Hex8Formulation::kIncompatibleModes);
+
+}  // namespace flexmb::fe

@@ -1,0 +1,74 @@
+#include "flexmb/fe/elements/solid_tet10.h"
+
+#include "flexmb/fe/elements/solid_common.h"
+
+namespace flexmb::fe {
+namespace {
+
+using Mat30 = Eigen::Matrix<double, 30, 30>;
+
+// mid-edge node k (5..10) between corners kEdge[k - 5]
+constexpr int kEdge[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+
+// quadratic shape functions from the volume coordinates L = (1 - xi - eta - zeta, xi, eta, zeta)
+void Shape(const solid::QuadPoint& p, Eigen::Matrix<double, 10, 1>& n,
+           Eigen::Matrix<double, 3, 10>& dn) {
+  const double l[4] = {1.0 - p.xi - p.eta - p.zeta, p.xi, p.eta, p.zeta};
+  // dL_i / d(xi, eta, zeta)
+  const double dl[4][3] = {{-1.0, -1.0, -1.0}, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
+  for (int i = 0; i < 4; ++i) {
+    n(i) = l[i] * (2.0 * l[i] - 1.0);
+    for (int d = 0; d < 3; ++d) dn(d, i) = (4.0 * l[i] - 1.0) * dl[i][d];
+  }
+  for (int k = 0; k < 6; ++k) {
+    const int a = kEdge[k][0], b = kEdge[k][1];
+    n(4 + k) = 4.0 * l[a] * l[b];
+    for (int d = 0; d < 3; ++d) dn(d, 4 + k) = 4.0 * (dl[a][d] * l[b] + l[a] * dl[b][d]);
+  }
+}
+
+// 4-point rule, exact for degree 2
+constexpr double kA = 0.5854101966249685, kB = 0.1381966011250105;
+constexpr solid::QuadPoint kFourPoint[4] = {{kB, kB, kB, 1.0 / 24.0},
+                                            {kA, kB, kB, 1.0 / 24.0},
+                                            {kB, kA, kB, 1.0 / 24.0},
+                                            {kB, kB, kA, 1.0 / 24.0}};
+
+// symmetric 14-point rule with positive weights, exact for degree 5 (the
+// rule of Walkington 2000 and quadpy; weights sum to the reference volume
+// 1/6; exactness checked in tests/unit/fe/solid_test.cc)
+constexpr double kA1 = 0.0927352503108912, kW1 = 0.01224884051939366;
+constexpr double kA2 = 0.3108859192633006, kW2 = 0.01878132095300264;
+constexpr double kB3 = 0.0455037041256496, kW3 = 0.007091003462846911;
+constexpr double kC1 = 1.0 - 3.0 * kA1, kC2 = 1.0 - 3.0 * kA2, kC3 = 0.5 - kB3;
+constexpr solid::QuadPoint kFourteenPoint[14] = {
+    {kA1, kA1, kA1, kW1}, {kC1, kA1, kA1, kW1}, {kA1, kC1, kA1, kW1}, {kA1, kA1, kC1, kW1},
+    {kA2, kA2, kA2, kW2}, {kC2, kA2, kA2, kW2}, {kA2, kC2, kA2, kW2}, {kA2, kA2, kC2, kW2},
+    {kC3, kC3, kB3, kW3}, {kC3, kB3, kC3, kW3}, {kC3, kB3, kB3, kW3}, {kB3, kC3, kC3, kW3},
+    {kB3, kC3, kB3, kW3}, {kB3, kB3, kC3, kW3}};
+
+// corners, for the Jacobian check
+constexpr solid::QuadPoint kCorners[4] = {
+    {0.0, 0.0, 0.0, 0.0}, {1.0, 0.0, 0.0, 0.0}, {0.0, 1.0, 0.0, 0.0}, {0.0, 0.0, 1.0, 0.0}};
+
+}  // namespace
+
+void SolidTet10Matrices(const ElementInput& in, MatX& K, MatX& M) {
+  const solid::SolidData s = solid::CheckSolidInput(in, 10, 4);
+  const Element& e = *in.element;
+  Eigen::Matrix<double, 10, 1> n;
+  Eigen::Matrix<double, 3, 10> dn, dx;
+  for (const solid::QuadPoint& c : kCorners) {
+    Shape(c, n, dn);
+    solid::CartesianDerivatives<10>(dn, in.x, s, e, dx);
+  }
+  Mat30 k = Mat30::Zero();
+  Mat30 m = Mat30::Zero();
+  solid::AddStiffness<10>(kFourPoint, 4, Shape, in.x, s, e, k);
+  solid::AddConsistentMass<10>(kFourteenPoint, 14, Shape, in.x, s, e, m);
+  if (in.mass_form == MassForm::kLumped) solid::LumpHrz<30>(m);
+  K = 0.5 * (k + k.transpose());
+  M = 0.5 * (m + m.transpose());
+}
+
+}  // namespace flexmb::fe

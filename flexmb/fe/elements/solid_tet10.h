@@ -1,0 +1,23 @@
+#pragma once
+/// \file solid_tet10.h
+/// 10-node quadratic tetrahedron (CTETRA with 10 nodes, C3D10), 3 DOF per
+/// node. Node order as Nastran and Abaqus: corners 1-4 (positive volume as
+/// for the tet4), then mid-edge nodes 5 (1-2), 6 (2-3), 7 (3-1), 8 (1-4),
+/// 9 (2-4), 10 (3-4). Mid-edge nodes may be off the straight edge (curved
+/// isoparametric element). Details: docs/design.md, "FE: solid elements".
+
+#include "flexmb/fe/element_matrices.h"
+
+namespace flexmb::fe {
+
+/// Fills K [N/m] and M [kg] (30 x 30, basic frame, node by node ux uy uz) of
+/// a 10-node tetrahedron: stiffness by the 4-point degree-2 rule (exact for
+/// straight edges), consistent mass by a 14-point degree-5 rule (exact for
+/// the quartic N_i N_j on straight edges); MassForm::kLumped is HRZ lumping
+/// (corners 1/36, mid-edge nodes 4/27 of the mass each, all positive).
+/// Throws InputError naming the element if the Jacobian determinant is not
+/// positive at a corner or an integration point (inverted, degenerate or
+/// badly curved), for a missing material or bad material constants.
+void SolidTet10Matrices(const ElementInput& in, MatX& K, MatX& M);
+
+}  // namespace flexmb::fe

@@ -1,0 +1,40 @@
+#include "flexmb/fe/elements/solid_tet4.h"
+
+#include "flexmb/fe/elements/solid_common.h"
+
+namespace flexmb::fe {
+namespace {
+
+using Mat12 = Eigen::Matrix<double, 12, 12>;
+
+// linear shape functions N = (1 - xi - eta - zeta, xi, eta, zeta)
+void Shape(const solid::QuadPoint& p, Eigen::Matrix<double, 4, 1>& n,
+           Eigen::Matrix<double, 3, 4>& dn) {
+  n << 1.0 - p.xi - p.eta - p.zeta, p.xi, p.eta, p.zeta;
+  dn << -1.0, 1.0, 0.0, 0.0, -1.0, 0.0, 1.0, 0.0, -1.0, 0.0, 0.0, 1.0;
+}
+
+// centroid, weight = reference volume 1/6
+constexpr solid::QuadPoint kOnePoint[1] = {{0.25, 0.25, 0.25, 1.0 / 6.0}};
+// 4-point rule, exact for polynomials of degree 2
+constexpr double kA = 0.5854101966249685, kB = 0.1381966011250105;
+constexpr solid::QuadPoint kFourPoint[4] = {{kB, kB, kB, 1.0 / 24.0},
+                                            {kA, kB, kB, 1.0 / 24.0},
+                                            {kB, kA, kB, 1.0 / 24.0},
+                                            {kB, kB, kA, 1.0 / 24.0}};
+
+}  // namespace
+
+void SolidTet4Matrices(const ElementInput& in, MatX& K, MatX& M) {
+  const solid::SolidData s = solid::CheckSolidInput(in, 4, 4);
+  const Element& e = *in.element;
+  Mat12 k = Mat12::Zero();
+  Mat12 m = Mat12::Zero();
+  solid::AddStiffness<4>(kOnePoint, 1, Shape, in.x, s, e, k);
+  solid::AddConsistentMass<4>(kFourPoint, 4, Shape, in.x, s, e, m);
+  if (in.mass_form == MassForm::kLumped) solid::LumpHrz<12>(m);
+  K = 0.5 * (k + k.transpose());
+  M = 0.5 * (m + m.transpose());
+}
+
+}  // namespace flexmb::fe

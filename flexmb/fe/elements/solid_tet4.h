@@ -1,0 +1,20 @@
+#pragma once
+/// \file solid_tet4.h
+/// 4-node linear tetrahedron (CTETRA with 4 nodes, C3D4): constant strain,
+/// 3 DOF per node. Node order as Nastran and Abaqus: corners 1 2 3 with
+/// (x2 - x1) x (x3 - x1) pointing toward node 4 (positive volume).
+/// Details: docs/design.md, "FE: solid elements".
+
+#include "flexmb/fe/element_matrices.h"
+
+namespace flexmb::fe {
+
+/// Fills K [N/m] and M [kg] (12 x 12, basic frame, node by node ux uy uz) of
+/// a 4-node tetrahedron: K = V B^T D B (exact, one point); consistent mass
+/// rho V / 20 (1 + delta_ij) from the 4-point degree-2 rule (exact);
+/// MassForm::kLumped gives rho V / 4 per node (HRZ). Throws InputError naming
+/// the element for an inverted (negative volume) or degenerate element, a
+/// missing material or bad material constants.
+void SolidTet4Matrices(const ElementInput& in, MatX& K, MatX& M);
+
+}  // namespace flexmb::fe

@@ -1,0 +1,158 @@
+#pragma once
+/// \file mesh.h
+/// A linear finite-element model of one part: nodes, elements, properties,
+/// materials, sets, single-point constraints, rigid links and concentrated
+/// masses. Entities keep the ids of the file they came from; element and
+/// link connectivity refers to node *indices* (positions in Mesh::nodes).
+/// Units are whatever the source uses, consistently; flexmb's own models are
+/// SI (m, kg, s, N, Pa).
+
+#include <Eigen/Core>
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace flexmb::fe {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+
+/// Where an entity was defined, for messages ("frame.bdf:1234").
+struct Origin {
+  std::string file;
+  int line = 0;
+};
+
+/// A grid point. Coordinates are in the basic (global) frame.
+struct Node {
+  int id = 0;        ///< id in the source file (> 0)
+  Vec3 x = Vec3::Zero();  ///< position [m]
+  Origin origin;
+};
+
+/// Isotropic linear elastic material (Nastran MAT1).
+struct Material {
+  int id = 0;
+  std::string name;
+  double E = 0.0;    ///< Young's modulus [Pa]
+  double nu = 0.0;   ///< Poisson's ratio
+  double G = 0.0;    ///< shear modulus [Pa]; E / (2 (1 + nu)) if not given
+  double rho = 0.0;  ///< density [kg/m^3]
+  Origin origin;
+};
+
+/// Element families with their node counts.
+enum class ElementType {
+  kQuad4,   ///< 4-node shell (CQUAD4, S4), 6 DOF per node
+  kTria3,   ///< 3-node shell (CTRIA3, S3), 6 DOF per node
+  kBeam2,   ///< 2-node Timoshenko beam (CBAR, CBEAM, B31), 6 DOF per node
+  kTet4,    ///< 4-node tetrahedron (CTETRA, C3D4), 3 DOF per node
+  kTet10,   ///< 10-node tetrahedron (CTETRA, C3D10), 3 DOF per node
+  kHex8,    ///< 8-node hexahedron (CHEXA, C3D8), 3 DOF per node
+};
+
+/// Number of nodes of an element type.
+int NodeCount(ElementType type);
+/// Translational-only (3) or full (6) nodal DOF of an element type.
+int DofsPerNode(ElementType type);
+/// Name for messages ("CQUAD4-like shell").
+const char* TypeName(ElementType type);
+
+/// Shell section (PSHELL): thickness, material, non-structural mass.
+struct ShellSection {
+  int id = 0;
+  int material = -1;          ///< index into Mesh::materials
+  double thickness = 0.0;     ///< [m]
+  double nsm = 0.0;           ///< non-structural mass per area [kg/m^2]
+  Origin origin;
+};
+
+/// Beam section (PBAR, PBARL, PBEAM at one station): properties in the
+/// element frame (x along the axis, y from the orientation vector).
+struct BeamSection {
+  int id = 0;
+  int material = -1;          ///< index into Mesh::materials
+  double A = 0.0;             ///< area [m^2]
+  double Iy = 0.0, Iz = 0.0;  ///< second moments about element y and z [m^4]
+  double Iyz = 0.0;           ///< product of inertia [m^4]
+  double J = 0.0;             ///< torsion constant [m^4]
+  double ky = 0.0, kz = 0.0;  ///< shear factors (area ratio); 0 = no shear flexibility
+  double nsm = 0.0;           ///< non-structural mass per length [kg/m]
+  Origin origin;
+};
+
+/// Solid section (PSOLID): material only.
+struct SolidSection {
+  int id = 0;
+  int material = -1;
+  Origin origin;
+};
+
+/// One element. `property` indexes the section list of its family (shell,
+/// beam or solid sections).
+struct Element {
+  int id = 0;
+  ElementType type = ElementType::kQuad4;
+  int property = -1;
+  std::vector<int> nodes;             ///< node indices, in the source's order
+  Vec3 orientation = Vec3::Zero();    ///< beams: vector in the x-y plane of the element frame
+  Vec3 offset_a = Vec3::Zero();       ///< beams: offset of end A from its node, basic frame [m]
+  Vec3 offset_b = Vec3::Zero();       ///< beams: offset of end B
+  double shell_offset = 0.0;          ///< shells: offset of the mid-surface along the normal [m]
+  Origin origin;
+};
+
+/// Concentrated mass with inertia (CONM2): mass at an offset from its node;
+/// inertia about the mass's own centre, basic axes.
+struct PointMass {
+  int id = 0;
+  int node = -1;                  ///< node index
+  double mass = 0.0;              ///< [kg]
+  Vec3 offset = Vec3::Zero();     ///< from the node, basic frame [m]
+  Mat3 inertia = Mat3::Zero();    ///< about the mass centre [kg m^2]
+  Origin origin;
+};
+
+/// Rigid link (RBE2): the listed DOF (subset of 1..6, as a bit mask, bit k =
+/// DOF k+1) of each dependent node follow the independent node rigidly.
+struct RigidLink {
+  int id = 0;
+  int independent = -1;           ///< node index
+  std::vector<int> dependent;     ///< node indices
+  int dofs = 0b111111;            ///< component mask
+  Origin origin;
+};
+
+/// Single-point constraint: the masked DOF of a node are fixed at zero.
+struct Constraint {
+  int node = -1;                  ///< node index
+  int dofs = 0b111111;            ///< component mask
+  Origin origin;
+};
+
+/// A linear FE model of one part.
+struct Mesh {
+  std::string source;                       ///< file it was read from
+  std::vector<Node> nodes;
+  std::vector<Element> elements;
+  std::vector<Material> materials;
+  std::vector<ShellSection> shell_sections;
+  std::vector<BeamSection> beam_sections;
+  std::vector<SolidSection> solid_sections;
+  std::vector<PointMass> point_masses;
+  std::vector<RigidLink> rigid_links;
+  std::vector<Constraint> constraints;
+  std::map<std::string, std::vector<int>> node_sets;     ///< name -> node indices
+  std::map<std::string, std::vector<int>> element_sets;  ///< name -> element indices
+
+  /// Index of the node with this id, or -1.
+  int NodeIndex(int id) const;
+  /// Rebuilds the id -> index map (call after adding nodes).
+  void IndexNodes();
+
+ private:
+  std::map<int, int> node_index_;
+};
+
+}  // namespace flexmb::fe

@@ -1,0 +1,24 @@
+#pragma once
+/// \file point_mass.h
+/// The 6 x 6 nodal mass matrix of a concentrated mass with inertia (CONM2).
+
+#include <Eigen/Core>
+
+#include "flexmb/fe/mesh.h"
+
+namespace flexmb::fe {
+
+/// 6 x 6 matrix in the node's DOF order (ux uy uz rx ry rz).
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+
+/// Mass matrix at the node of a mass `pm.mass` [kg] whose centre sits at
+/// `pm.offset` [m] from the node, with inertia `pm.inertia` [kg m^2] about
+/// that centre (basic axes): with d = offset,
+///   M = [[m I, -m skew(d)], [m skew(d), I_c - m skew(d)^2]],
+/// so that 1/2 (v, w)^T M (v, w) is the kinetic energy of the rigid mass when
+/// the node moves with velocity v and angular velocity w. Throws InputError
+/// naming the mass (id, file, line) for a negative or non-finite mass or an
+/// inertia that is not symmetric positive semi-definite.
+Mat6 PointMassMatrix(const PointMass& pm);
+
+}  // namespace flexmb::fe

@@ -1,0 +1,312 @@
+#pragma once
+// Helpers shared by the shell element unit tests: element set-up, rigid-body
+// modes, analytic mass properties of a flat polygonal plate, and a small
+// dense assembly for patch tests.
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <functional>
+#include <vector>
+
+#include "flexmb/common/error.h"
+#include "flexmb/fe/element_matrices.h"
+#include "flexmb/fe/elements/shell_quad4.h"
+#include "flexmb/fe/elements/shell_tria3.h"
+
+namespace flexmb::fe::testing {
+
+inline Eigen::Matrix3d Skew(const Vec3& v) {
+  Eigen::Matrix3d s;
+  s << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+  return s;
+}
+
+// A shell element with its section and material (owned here).
+struct ShellFixture {
+  Element element;
+  Material material;
+  ShellSection section;
+  std::vector<Vec3> x;
+
+  ShellFixture(ElementType type, std::vector<Vec3> nodes, double t = 0.1, double E = 2.1e11,
+               double nu = 0.3, double rho = 7800.0, double nsm = 0.0) {
+    element.id = 7;
+    element.type = type;
+    element.origin = {"plate.bdf", 12};
+    for (size_t i = 0; i < nodes.size(); ++i) element.nodes.push_back(static_cast<int>(i));
+    material.id = 1;
+    material.E = E;
+    material.nu = nu;
+    material.rho = rho;
+    section.id = 1;
+    section.material = 0;
+    section.thickness = t;
+    section.nsm = nsm;
+    x = std::move(nodes);
+  }
+
+  ElementInput Input(MassForm form = MassForm::kConsistent) const {
+    ElementInput in;
+    in.element = &element;
+    in.x = x.data();
+    in.material = &material;
+    in.shell = &section;
+    in.mass_form = form;
+    return in;
+  }
+
+  void Compute(MatX& K, MatX& M, MassForm form = MassForm::kConsistent) const {
+    if (element.type == ElementType::kQuad4)
+      ShellQuad4Matrices(Input(form), K, M);
+    else
+      ShellTria3Matrices(Input(form), K, M);
+  }
+};
+
+// 6 rigid-body modes (columns: translations x y z, rotations about the
+// origin x y z) for nodes at x.
+inline MatX RigidModes(const std::vector<Vec3>& x) {
+  const int n = static_cast<int>(x.size());
+  MatX r = MatX::Zero(6 * n, 6);
+  for (int i = 0; i < n; ++i) {
+    r.block<3, 3>(6 * i, 0).setIdentity();
+    r.block<3, 3>(6 * i, 3) = -Skew(x[i]);
+    r.block<3, 3>(6 * i + 3, 3).setIdentity();
+  }
+  return r;
+}
+
+// Rigid-body mass matrix [[m I, -skew(S)], [skew(S), J_O]] of a flat plate
+// (polygon `poly` in local plane coordinates, fan-triangulated from vertex 0),
+// placed at p = c0 + R (x, y, z), occupying z in [zc - t/2, zc + t/2], with
+// density rho and non-structural mass nsm per area at z = zc.
+inline Eigen::Matrix<double, 6, 6> PlateRigidMass(const std::vector<Eigen::Vector2d>& poly,
+                                                  const Eigen::Matrix3d& R, const Vec3& c0,
+                                                  double t, double zc, double rho, double nsm) {
+  double area = 0.0;
+  Eigen::Vector2d s1 = Eigen::Vector2d::Zero();
+  Eigen::Matrix2d s2 = Eigen::Matrix2d::Zero();
+  for (size_t k = 1; k + 1 < poly.size(); ++k) {
+    const Eigen::Vector2d a = poly[0], b = poly[k], c = poly[k + 1];
+    const double ak = 0.5 * ((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+    const Eigen::Vector2d sum = a + b + c;
+    area += ak;
+    s1 += ak * sum / 3.0;
+    s2 += ak / 12.0 * (a * a.transpose() + b * b.transpose() + c * c.transpose() + sum * sum.transpose());
+  }
+  // moments per unit mass density per area of the mid-surface, local frame
+  Vec3 m1(s1.x(), s1.y(), zc * area);
+  Eigen::Matrix3d m2;
+  m2 << s2(0, 0), s2(0, 1), zc * s1.x(), s2(1, 0), s2(1, 1), zc * s1.y(), zc * s1.x(), zc * s1.y(),
+      zc * zc * area;
+  const double mu = rho * t + nsm;
+  const double mass = mu * area;
+  Vec3 f1 = mu * m1;
+  Eigen::Matrix3d f2 = mu * m2;
+  f2(2, 2) += rho * t * t * t / 12.0 * area;
+  // to the basic frame
+  const Vec3 s = mass * c0 + R * f1;
+  const Eigen::Matrix3d q = mass * c0 * c0.transpose() + c0 * (R * f1).transpose() +
+                            (R * f1) * c0.transpose() + R * f2 * R.transpose();
+  Eigen::Matrix<double, 6, 6> out;
+  out.block<3, 3>(0, 0) = mass * Eigen::Matrix3d::Identity();
+  out.block<3, 3>(0, 3) = -Skew(s);
+  out.block<3, 3>(3, 0) = Skew(s);
+  out.block<3, 3>(3, 3) = q.trace() * Eigen::Matrix3d::Identity() - q;
+  return out;
+}
+
+// A random proper rotation and translation.
+inline Eigen::Matrix3d RandomRotation(unsigned seed) {
+  std::srand(seed);
+  const Eigen::Quaterniond q(Eigen::Vector4d::Random().normalized());
+  return q.toRotationMatrix();
+}
+
+// Dense assembly of shell elements (6 dof per node) given connectivity.
+struct DensePatch {
+  std::vector<Vec3> x;
+  std::vector<std::vector<int>> elements;
+  double t = 0.1, E = 1.0e6, nu = 0.25;
+
+  MatX Stiffness() const {
+    const int n = 6 * static_cast<int>(x.size());
+    MatX k = MatX::Zero(n, n);
+    for (const auto& conn : elements) {
+      std::vector<Vec3> xe;
+      for (int i : conn) xe.push_back(x[i]);
+      ShellFixture f(conn.size() == 4 ? ElementType::kQuad4 : ElementType::kTria3, xe, t, E, nu);
+      MatX ke, me;
+      f.Compute(ke, me);
+      for (size_t a = 0; a < conn.size(); ++a)
+        for (size_t b = 0; b < conn.size(); ++b)
+          k.block<6, 6>(6 * conn[a], 6 * conn[b]) += ke.block<6, 6>(6 * a, 6 * b);
+    }
+    return k;
+  }
+};
+
+// Solves K u = 0 for the free dof given prescribed values on the others.
+inline Eigen::VectorXd SolvePrescribed(const MatX& k, const std::vector<bool>& fixed,
+                                       const Eigen::VectorXd& u_fixed) {
+  const int n = static_cast<int>(k.rows());
+  std::vector<int> f, p;
+  for (int i = 0; i < n; ++i) (fixed[i] ? p : f).push_back(i);
+  MatX kff(f.size(), f.size()), kfp(f.size(), p.size());
+  for (size_t a = 0; a < f.size(); ++a) {
+    for (size_t b = 0; b < f.size(); ++b) kff(a, b) = k(f[a], f[b]);
+    for (size_t b = 0; b < p.size(); ++b) kfp(a, b) = k(f[a], p[b]);
+  }
+  Eigen::VectorXd up(p.size());
+  for (size_t b = 0; b < p.size(); ++b) up(b) = u_fixed(p[b]);
+  const Eigen::VectorXd uf = kff.ldlt().solve(-kfp * up);
+  Eigen::VectorXd u = u_fixed;
+  for (size_t a = 0; a < f.size(); ++a) u(f[a]) = uf(a);
+  return u;
+}
+
+// MacNeal & Harder (1985) patch: rectangle 0.24 x 0.12, four interior nodes.
+struct Patch {
+  std::vector<Eigen::Vector2d> p = {{0.0, 0.0},    {0.24, 0.0},  {0.24, 0.12}, {0.0, 0.12},
+                                    {0.04, 0.02},  {0.18, 0.03}, {0.16, 0.08}, {0.08, 0.08}};
+  std::vector<std::vector<int>> quads = {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7},
+                                         {4, 5, 6, 7}};
+  std::vector<std::vector<int>> Trias() const {
+    std::vector<std::vector<int>> out;
+    for (const auto& q : quads) {
+      out.push_back({q[0], q[1], q[2]});
+      out.push_back({q[0], q[2], q[3]});
+    }
+    return out;
+  }
+};
+
+// equivalent nodal loads on the boundary corners of the patch from a
+// constant resultant: `vec(n)` is the traction (or moment) vector per length
+inline std::vector<Eigen::Vector2d> EdgeLoads(const Patch& patch,
+                                       const std::function<Eigen::Vector2d(Eigen::Vector2d)>& vec) {
+  std::vector<Eigen::Vector2d> f(4, Eigen::Vector2d::Zero());
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::Vector2d a = patch.p[k], b = patch.p[(k + 1) % 4];
+    const double len = (b - a).norm();
+    const Eigen::Vector2d n = Eigen::Vector2d((b - a).y(), -(b - a).x()) / len;
+    f[k] += 0.5 * len * vec(n);
+    f[(k + 1) % 4] += 0.5 * len * vec(n);
+  }
+  return f;
+}
+
+// Runs the patch with boundary values from a field (local u v w rx ry rz at
+// a point), checks interior nodes reproduce it and returns the local nodal
+// forces of the four corners.
+inline std::vector<Eigen::Matrix<double, 6, 1>> RunPatch(
+    const Patch& patch, const std::vector<std::vector<int>>& elements,
+    const std::function<Eigen::Matrix<double, 6, 1>(Eigen::Vector2d)>& field, double tol) {
+  const Eigen::Matrix3d R = RandomRotation(11);
+  const Vec3 c0(0.7, -0.4, 1.1);
+  DensePatch dp;
+  dp.t = 0.001;
+  dp.E = 1e6;
+  dp.nu = 0.25;
+  for (const auto& q : patch.p) dp.x.push_back(c0 + R * Vec3(q.x(), q.y(), 0.0));
+  dp.elements = elements;
+  const MatX k = dp.Stiffness();
+  const int n = static_cast<int>(patch.p.size());
+  Eigen::VectorXd exact(6 * n);
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Matrix<double, 6, 1> l = field(patch.p[i]);
+    exact.segment<3>(6 * i) = R * l.head<3>();
+    exact.segment<3>(6 * i + 3) = R * l.tail<3>();
+  }
+  std::vector<bool> fixed(6 * n, false);
+  for (int i = 0; i < 4 * 6; ++i) fixed[i] = true;
+  Eigen::VectorXd start = exact;
+  start.tail(6 * (n - 4)).setZero();
+  const Eigen::VectorXd u = SolvePrescribed(k, fixed, start);
+  // rotations weighted by the patch size for a dimensionally consistent norm
+  Eigen::VectorXd err = u - exact, ref = exact;
+  for (int i = 0; i < n; ++i) {
+    err.segment<3>(6 * i + 3) *= 0.24;
+    ref.segment<3>(6 * i + 3) *= 0.24;
+  }
+  EXPECT_LT(err.norm(), tol * ref.norm()) << err.transpose();
+  const Eigen::VectorXd f = k * u;
+  std::vector<Eigen::Matrix<double, 6, 1>> out(4);
+  for (int i = 0; i < 4; ++i) {
+    out[i].head<3>() = R.transpose() * f.segment<3>(6 * i);
+    out[i].tail<3>() = R.transpose() * f.segment<3>(6 * i + 3);
+  }
+  return out;
+}
+
+inline void MembranePatch(const std::vector<std::vector<int>>& elements) {
+  const Patch patch;
+  // u = 1e-3 (x + y / 2), v = 1e-3 (y + x / 2): eps = 1e-3 (1, 1, 1), omega = 0
+  auto field = [](Eigen::Vector2d p) {
+    Eigen::Matrix<double, 6, 1> l = Eigen::Matrix<double, 6, 1>::Zero();
+    l(0) = 1e-3 * (p.x() + 0.5 * p.y());
+    l(1) = 1e-3 * (p.y() + 0.5 * p.x());
+    return l;
+  };
+  const double c = 1e6 * 0.001 / (1.0 - 0.0625);
+  const Eigen::Vector3d nres = c * Eigen::Vector3d(1e-3 * 1.25, 1e-3 * 1.25, 1e-3 * 0.375);
+  const auto loads = EdgeLoads(patch, [&](Eigen::Vector2d n) {
+    return Eigen::Vector2d(nres(0) * n.x() + nres(2) * n.y(), nres(2) * n.x() + nres(1) * n.y());
+  });
+  const auto f = RunPatch(patch, elements, field, 1e-9);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_NEAR(f[i](0), loads[i].x(), 1e-10 * nres.norm());
+    EXPECT_NEAR(f[i](1), loads[i].y(), 1e-10 * nres.norm());
+    EXPECT_NEAR(f[i].tail<4>().norm(), 0.0, 1e-10 * nres.norm());
+  }
+}
+
+inline void BendingPatch(const std::vector<std::vector<int>>& elements) {
+  const Patch patch;
+  // w = 1e-3 (x^2 + x y + y^2) / 2, Kirchhoff rotations: rx = dw/dy, ry = -dw/dx
+  auto field = [](Eigen::Vector2d p) {
+    Eigen::Matrix<double, 6, 1> l = Eigen::Matrix<double, 6, 1>::Zero();
+    l(2) = 1e-3 * (p.x() * p.x() + p.x() * p.y() + p.y() * p.y()) / 2.0;
+    l(3) = 1e-3 * (p.y() + 0.5 * p.x());
+    l(4) = -1e-3 * (p.x() + 0.5 * p.y());
+    return l;
+  };
+  // curvatures of beta = (ry, -rx): (-1e-3, -1e-3, -1e-3); M = D kappa
+  const double d = 1e6 * 1e-9 / 12.0 / (1.0 - 0.0625);
+  const Eigen::Vector3d m = d * Eigen::Vector3d(-1e-3 * 1.25, -1e-3 * 1.25, -1e-3 * 0.375);
+  const auto loads = EdgeLoads(patch, [&](Eigen::Vector2d n) {
+    return Eigen::Vector2d(m(0) * n.x() + m(2) * n.y(), m(2) * n.x() + m(1) * n.y());
+  });
+  const auto f = RunPatch(patch, elements, field, 1e-9);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_NEAR(f[i](4), loads[i].x(), 1e-9 * m.norm());   // on ry = beta_x
+    EXPECT_NEAR(f[i](3), -loads[i].y(), 1e-9 * m.norm());  // on rx = -beta_y
+    EXPECT_NEAR(f[i].head<3>().norm() + std::abs(f[i](5)), 0.0, 1e-9 * m.norm());
+  }
+}
+
+// eigenvalues of K: exactly six (numerically) zero, the rest clearly positive
+inline void ExpectSixRigidModes(const MatX& K) {
+  ASSERT_LT((K - K.transpose()).norm(), 1e-13 * K.norm());
+  const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<MatX>(K).eigenvalues();
+  const double top = ev.maxCoeff();
+  for (int k = 0; k < 6; ++k) EXPECT_LT(std::abs(ev(k)), 1e-11 * top) << "eigenvalue " << k;
+  EXPECT_GT(ev(6), 1e-9 * top);
+}
+
+inline void ExpectInputError(const ShellFixture& f, const std::string& what) {
+  MatX K, M;
+  try {
+    f.Compute(K, M);
+    ADD_FAILURE() << "no InputError for " << what;
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("plate.bdf:12"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("shell 7"), std::string::npos) << msg;
+    EXPECT_NE(msg.find(what), std::string::npos) << msg;
+  }
+}
+
+}  // namespace flexmb::fe::testing
