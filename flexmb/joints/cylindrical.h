@@ -1,20 +1,19 @@
 #pragma once
 /// \file cylindrical.h
 
-#include "flexmb/joints/joint.h"
+#include "flexmb/joints/lower_pair.h"
 
 namespace flexmb {
 
 /// Cylindrical joint: z axes of markers i and j aligned, origin j on the z axis of i; coordinates: translation along z_i [m], angle about z_i [rad].
-class CylindricalJoint final : public Joint {
+class CylindricalJoint final : public LowerPairJoint {
  public:
-  explicit CylindricalJoint(std::string name) : Joint(std::move(name)) {}
+  explicit CylindricalJoint(std::string name)
+      : LowerPairJoint(std::move(name), {PairEquation::Perpendicular(2, 0),
+                                          PairEquation::Perpendicular(2, 1),
+                                          PairEquation::InPlane(0),
+                                          PairEquation::InPlane(1)}) {}
   const char* type() const override { return "cylindrical"; }
-  int NumEquations() const override { return 4; }
-  std::string EquationName(int k) const override;
-  void Evaluate(const MarkerState& mi, const MarkerState& mj, double t, JointEval& e) const override;
-  void AddGeometricStiffness(const MarkerState& mi, const MarkerState& mj, const double* lambda,
-                             Mat12& H) const override;
   int NumCoordinates() const override { return 2; }
   const char* CoordinateName(int k) const override { return k == 0 ? "translation" : "angle"; }
   bool CoordinateIsAngle(int k) const override { return k == 1; }

@@ -1,21 +1,19 @@
 #pragma once
 /// \file fixed.h
 
-#include "flexmb/joints/joint.h"
+#include "flexmb/joints/lower_pair.h"
 
 namespace flexmb {
 
 /// Fixed joint: markers i and j coincide in position and orientation.
-class FixedJoint final : public Joint {
+class FixedJoint final : public LowerPairJoint {
  public:
-  explicit FixedJoint(std::string name) : Joint(std::move(name)) {}
+  explicit FixedJoint(std::string name)
+      : LowerPairJoint(std::move(name), {PairEquation::Coincide(),
+                                          PairEquation::Perpendicular(2, 0),
+                                          PairEquation::Perpendicular(2, 1),
+                                          PairEquation::Perpendicular(0, 1)}) {}
   const char* type() const override { return "fixed"; }
-  int NumEquations() const override { return 6; }
-  std::string EquationName(int k) const override;
-  void Evaluate(const MarkerState& mi, const MarkerState& mj, double t, JointEval& e) const override;
-  void AddGeometricStiffness(const MarkerState& mi, const MarkerState& mj, const double* lambda,
-                             Mat12& H) const override;
-
 };
 
 }  // namespace flexmb

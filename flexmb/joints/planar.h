@@ -1,21 +1,18 @@
 #pragma once
 /// \file planar.h
 
-#include "flexmb/joints/joint.h"
+#include "flexmb/joints/lower_pair.h"
 
 namespace flexmb {
 
 /// Planar joint: the x-y planes of markers i and j coincide (z axes parallel, origin j in the x-y plane of i).
-class PlanarJoint final : public Joint {
+class PlanarJoint final : public LowerPairJoint {
  public:
-  explicit PlanarJoint(std::string name) : Joint(std::move(name)) {}
+  explicit PlanarJoint(std::string name)
+      : LowerPairJoint(std::move(name), {PairEquation::Perpendicular(2, 0),
+                                          PairEquation::Perpendicular(2, 1),
+                                          PairEquation::InPlane(2)}) {}
   const char* type() const override { return "planar"; }
-  int NumEquations() const override { return 3; }
-  std::string EquationName(int k) const override;
-  void Evaluate(const MarkerState& mi, const MarkerState& mj, double t, JointEval& e) const override;
-  void AddGeometricStiffness(const MarkerState& mi, const MarkerState& mj, const double* lambda,
-                             Mat12& H) const override;
-
 };
 
 }  // namespace flexmb

@@ -1,20 +1,20 @@
 #pragma once
 /// \file prismatic.h
 
-#include "flexmb/joints/joint.h"
+#include "flexmb/joints/lower_pair.h"
 
 namespace flexmb {
 
 /// Prismatic joint: orientations of markers i and j equal, origin j on the z axis of i; coordinate: translation of j along z_i [m].
-class PrismaticJoint final : public Joint {
+class PrismaticJoint final : public LowerPairJoint {
  public:
-  explicit PrismaticJoint(std::string name) : Joint(std::move(name)) {}
+  explicit PrismaticJoint(std::string name)
+      : LowerPairJoint(std::move(name), {PairEquation::Perpendicular(2, 0),
+                                          PairEquation::Perpendicular(2, 1),
+                                          PairEquation::Perpendicular(0, 1),
+                                          PairEquation::InPlane(0),
+                                          PairEquation::InPlane(1)}) {}
   const char* type() const override { return "prismatic"; }
-  int NumEquations() const override { return 5; }
-  std::string EquationName(int k) const override;
-  void Evaluate(const MarkerState& mi, const MarkerState& mj, double t, JointEval& e) const override;
-  void AddGeometricStiffness(const MarkerState& mi, const MarkerState& mj, const double* lambda,
-                             Mat12& H) const override;
   int NumCoordinates() const override { return 1; }
   const char* CoordinateName(int) const override { return "translation"; }
   double Coordinate(int k, const MarkerState& mi, const MarkerState& mj, Vec12* dq) const override;

@@ -1,21 +1,16 @@
 #pragma once
 /// \file spherical.h
 
-#include "flexmb/joints/joint.h"
+#include "flexmb/joints/lower_pair.h"
 
 namespace flexmb {
 
 /// Spherical (ball) joint: the origins of markers i and j coincide.
-class SphericalJoint final : public Joint {
+class SphericalJoint final : public LowerPairJoint {
  public:
-  explicit SphericalJoint(std::string name) : Joint(std::move(name)) {}
+  explicit SphericalJoint(std::string name)
+      : LowerPairJoint(std::move(name), {PairEquation::Coincide()}) {}
   const char* type() const override { return "spherical"; }
-  int NumEquations() const override { return 3; }
-  std::string EquationName(int k) const override;
-  void Evaluate(const MarkerState& mi, const MarkerState& mj, double t, JointEval& e) const override;
-  void AddGeometricStiffness(const MarkerState& mi, const MarkerState& mj, const double* lambda,
-                             Mat12& H) const override;
-
 };
 
 }  // namespace flexmb
