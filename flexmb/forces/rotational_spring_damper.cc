@@ -6,19 +6,6 @@
 #include "flexmb/joints/constraint_primitives.h"
 
 namespace flexmb {
-namespace {
-
-// integral of f from 0 to x by Simpson's rule on 64 intervals
-double Integral(const ScalarFunction& f, double x) {
-  const int n = 64;
-  const double h = x / n;
-  double s = f.Value(0.0) + f.Value(x);
-  for (int k = 1; k < n; ++k) s += (k % 2 ? 4.0 : 2.0) * f.Value(k * h);
-  return s * h / 3.0;
-}
-
-}  // namespace
-
 RotationalSpringDamper::RotationalSpringDamper(std::string name, RotationalSpringDamperLaw law)
     : ForceElement(std::move(name)), law_(std::move(law)) {
   const ErrorContext ctx{"", 0, "force '" + this->name() + "'"};
@@ -75,7 +62,7 @@ double RotationalSpringDamper::PotentialEnergy(const MarkerState& mi, const Mark
                                                double) const {
   const double delta =
       std::remainder(primitives::RelativeAngle(mi, mj, nullptr) - law_.angle0, 2.0 * M_PI);
-  const double spring = law_.torque_angle ? Integral(*law_.torque_angle, delta)
+  const double spring = law_.torque_angle ? law_.torque_angle->IntegralFromZero(delta)
                                           : 0.5 * law_.stiffness * delta * delta;
   return spring + law_.preload * delta;
 }

@@ -5,19 +5,6 @@
 #include "flexmb/common/error.h"
 
 namespace flexmb {
-namespace {
-
-// integral of f from 0 to x by Simpson's rule on 64 intervals
-double Integral(const ScalarFunction& f, double x) {
-  const int n = 64;
-  const double h = x / n;
-  double s = f.Value(0.0) + f.Value(x);
-  for (int k = 1; k < n; ++k) s += (k % 2 ? 4.0 : 2.0) * f.Value(k * h);
-  return s * h / 3.0;
-}
-
-}  // namespace
-
 SpringDamper::SpringDamper(std::string name, SpringDamperLaw law)
     : ForceElement(std::move(name)), law_(std::move(law)) {
   const ErrorContext ctx{"", 0, "force '" + this->name() + "'"};
@@ -79,7 +66,7 @@ void SpringDamper::Evaluate(const MarkerState& mi, const MarkerState& mj, double
 
 double SpringDamper::PotentialEnergy(const MarkerState& mi, const MarkerState& mj, double) const {
   const double x = (mj.p_WM - mi.p_WM).norm() - law_.free_length;
-  const double spring = law_.force_deflection ? Integral(*law_.force_deflection, x)
+  const double spring = law_.force_deflection ? law_.force_deflection->IntegralFromZero(x)
                                               : 0.5 * law_.stiffness * x * x;
   return spring + law_.preload * x;
 }

@@ -9,6 +9,14 @@
 
 namespace flexmb {
 
+double ScalarFunction::IntegralFromZero(double x) const {
+  const int n = 64;
+  const double h = x / n;
+  double s = Value(0.0) + Value(x);
+  for (int k = 1; k < n; ++k) s += (k % 2 ? 4.0 : 2.0) * Value(k * h);
+  return s * h / 3.0;
+}
+
 TableFunction::TableFunction(std::vector<double> x, std::vector<double> y,
                              Interpolation interpolation, bool extrapolate)
     : x_(std::move(x)), y_(std::move(y)), interpolation_(interpolation), extrapolate_(extrapolate) {

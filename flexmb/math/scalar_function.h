@@ -21,6 +21,10 @@ class ScalarFunction {
   virtual double Derivative(double x) const = 0;
   /// d2f/dx2.
   virtual double SecondDerivative(double x) const = 0;
+  /// Integral of f from 0 to x (the potential of a tabulated force law), by
+  /// composite Simpson's rule on 64 intervals; exact for polynomials up to
+  /// cubic pieces that the 64 intervals resolve.
+  virtual double IntegralFromZero(double x) const;
 };
 
 /// f(x) = c.
