@@ -1,10 +1,11 @@
 # Entry points. `make demo` and `make test` work on a fresh machine: both
 # install the Debian packages (scripts/install-deps.sh) and build first.
-.PHONY: deps build demo test test-unit test-asan bench clean
+.PHONY: deps build demo test test-unit test-asan fuzz bench clean
 
 JOBS ?= $(shell nproc)
 BUILD := build/release
 DEMO_OUT ?= out/demo
+FUZZ_SECONDS ?= 20
 
 deps:
 	bash scripts/install-deps.sh
@@ -26,6 +27,11 @@ test-asan: deps
 	cmake --preset asan >/dev/null
 	cmake --build --preset asan -j $(JOBS) --target flexmb_unit_tests
 	ctest --preset asan -j $(JOBS)
+
+fuzz: deps
+	cmake --preset asan >/dev/null
+	cmake --build --preset asan -j $(JOBS) --target flexmb_fuzz_targets
+	bash scripts/run-fuzz.sh build/asan/bin $(FUZZ_SECONDS)
 
 bench: build
 	$(BUILD)/bin/flexmb_bench

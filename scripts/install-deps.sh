@@ -7,6 +7,8 @@ set -euo pipefail
 PACKAGES=(
   # toolchain
   g++ cmake ninja-build make pkg-config
+  # libFuzzer targets for the readers (make fuzz)
+  clang
   # numerics
   libeigen3-dev libsuitesparse-dev libopenblas-dev libspectra-dev
   # input / output / command line

@@ -1,16 +1,19 @@
 /// \file main.cc
 /// The flexmb command line: "run" and "check" over the library's RunModel and
-/// CheckModel (flexmb/io/run.h).
+/// CheckModel (flexmb/io/run.h), the "fe" group ("fe modes", "fe info",
+/// "fe export") over flexmb/io/fe_commands.h.
 
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <csignal>
 #include <cstdio>
+#include <iostream>
 #include <optional>
 #include <string>
 
 #include "flexmb/common/error.h"
+#include "flexmb/io/fe_commands.h"
 #include "flexmb/io/run.h"
 
 namespace {
@@ -47,10 +50,12 @@ int Run(const std::string& model, const std::string& out, std::optional<double> 
   return flexmb::ExitCode(s.status);
 }
 
-int Check(const std::string& model) {
+// runs a command: exit 2 for an input error, 1 for a numerical or other
+// error, the message on stderr only (stdout stays valid JSON or empty)
+template <class F>
+int Guarded(F&& command) {
   try {
-    flexmb::CheckModel(model, stdout);
-    return 0;
+    return command();
   } catch (const flexmb::InputError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
@@ -81,6 +86,32 @@ int main(int argc, char** argv) {
   CLI::App* check = app.add_subcommand("check", "validate a model file and report its constraints");
   check->add_option("model", model, "model file (YAML)")->required();
 
+  CLI::App* fe = app.add_subcommand("fe", "finite-element models of parts: modes, info, export");
+  fe->require_subcommand(1);
+  flexmb::io::FeModesOptions modes_opt;
+  CLI::App* modes = fe->add_subcommand("modes", "natural frequencies of a part's full FE model");
+  modes->add_option("model", modes_opt.model_path, "mesh file, FE model file (.yaml) or exchange-set directory")
+      ->required();
+  modes->add_option("--fix", modes_opt.fix, "nodes to clamp: comma-separated node ids or a node set name");
+  modes->add_option("--count,-n", modes_opt.count, "number of modes (default 10)");
+  modes->add_flag("--json", modes_opt.json, "print one JSON object instead of the table");
+  modes->add_flag("--lumped", modes_opt.lumped, "lumped instead of consistent element mass");
+  modes->add_option("--shift", modes_opt.shift, "spectral shift [rad^2/s^2], negative (default: automatic)");
+
+  flexmb::io::FeInfoOptions info_opt;
+  CLI::App* info = fe->add_subcommand("info", "counts, mass, centre of mass and bounding box of an FE model");
+  info->add_option("model", info_opt.model_path, "mesh file, FE model file (.yaml) or exchange-set directory")
+      ->required();
+  info->add_flag("--json", info_opt.json, "print one JSON object instead of text");
+
+  flexmb::io::FeExportOptions export_opt;
+  CLI::App* fe_export =
+      fe->add_subcommand("export", "write the exchange set (M_CCS.hb, K_CCS.hb, geometry.vtk, dof_map.txt)");
+  fe_export->add_option("model", export_opt.model_path, "mesh file, FE model file (.yaml) or exchange-set directory")
+      ->required();
+  fe_export->add_option("--hb", export_opt.hb_dir, "directory to write the exchange set to")->required();
+  fe_export->add_option("--fix", export_opt.fix, "nodes to clamp: comma-separated node ids or a node set name");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -92,5 +123,11 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (run->parsed()) return Run(model, out, t_end, dt, animation, quiet);
-  return Check(model);
+  if (modes->parsed()) return Guarded([&] { return flexmb::io::FeModes(modes_opt, std::cout); });
+  if (info->parsed()) return Guarded([&] { return flexmb::io::FeInfo(info_opt, std::cout); });
+  if (fe_export->parsed()) return Guarded([&] { return flexmb::io::FeExport(export_opt, std::cout); });
+  return Guarded([&] {
+    flexmb::CheckModel(model, stdout);
+    return 0;
+  });
 }

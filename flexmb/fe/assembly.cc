@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "flexmb/common/error.h"
 #include "flexmb/fe/point_mass.h"
@@ -82,29 +84,27 @@ Resolved ResolveElement(const Mesh& mesh, const Element& e) {
   for (int n : e.nodes) {
     if (n < 0 || n >= nn) Fail(e.origin, name, "refers to a node that does not exist (index " + std::to_string(n) + ")");
   }
+  // the element's section in the list of its family, checked
+  auto section = [&](const auto& list, const char* family) {
+    if (e.property < 0 || e.property >= static_cast<int>(list.size())) {
+      Fail(e.origin, name, std::string("has no ") + family + " section");
+    }
+    return &list[e.property];
+  };
   Resolved r;
   int material = -1;
   switch (e.type) {
     case ElementType::kQuad4:
     case ElementType::kTria3:
-      if (e.property < 0 || e.property >= static_cast<int>(mesh.shell_sections.size())) {
-        Fail(e.origin, name, "has no shell section");
-      }
-      r.shell = &mesh.shell_sections[e.property];
+      r.shell = section(mesh.shell_sections, "shell");
       material = r.shell->material;
       break;
     case ElementType::kBeam2:
-      if (e.property < 0 || e.property >= static_cast<int>(mesh.beam_sections.size())) {
-        Fail(e.origin, name, "has no beam section");
-      }
-      r.beam = &mesh.beam_sections[e.property];
+      r.beam = section(mesh.beam_sections, "beam");
       material = r.beam->material;
       break;
     default:
-      if (e.property < 0 || e.property >= static_cast<int>(mesh.solid_sections.size())) {
-        Fail(e.origin, name, "has no solid section");
-      }
-      material = mesh.solid_sections[e.property].material;
+      material = section(mesh.solid_sections, "solid")->material;
       break;
   }
   if (material < 0 || material >= static_cast<int>(mesh.materials.size())) {
@@ -113,6 +113,79 @@ Resolved ResolveElement(const Mesh& mesh, const Element& e) {
   r.material = &mesh.materials[material];
   return r;
 }
+
+// M_full (assembly.h): element and point masses on the full numbering,
+// before rigid-link elimination and constraints; pattern from the blocks'
+// full DOF, values added block by block
+class FullMassAssembler {
+ public:
+  FullMassAssembler(int n_full, const std::vector<int>& block_ptr, const std::vector<int>& block_full)
+      : m_(n_full, n_full) {
+    const int nb = static_cast<int>(block_ptr.size()) - 1;
+    std::vector<int64_t> col_ptr(n_full + 1, 0);
+    std::vector<int> dofs;
+    auto block_dofs = [&](int b) {
+      dofs.clear();
+      for (int k = block_ptr[b]; k < block_ptr[b + 1]; ++k)
+        if (block_full[k] >= 0) dofs.push_back(block_full[k]);
+      std::sort(dofs.begin(), dofs.end());
+      dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+    };
+    for (int b = 0; b < nb; ++b) {
+      block_dofs(b);
+      for (int q : dofs) col_ptr[q + 1] += static_cast<int64_t>(dofs.size());
+    }
+    for (int q = 0; q < n_full; ++q) col_ptr[q + 1] += col_ptr[q];
+    std::vector<int> rows(col_ptr[n_full]);
+    std::vector<int64_t> fill(col_ptr.begin(), col_ptr.end() - 1);
+    for (int b = 0; b < nb; ++b) {
+      block_dofs(b);
+      for (int q : dofs) {
+        std::copy(dofs.begin(), dofs.end(), rows.begin() + fill[q]);
+        fill[q] += static_cast<int64_t>(dofs.size());
+      }
+    }
+    std::vector<int> outer(n_full + 1, 0);
+    int64_t nnz = 0;
+    for (int q = 0; q < n_full; ++q) {
+      auto first = rows.begin() + col_ptr[q], last = rows.begin() + col_ptr[q + 1];
+      std::sort(first, last);
+      last = std::unique(first, last);
+      std::copy(first, last, rows.begin() + nnz);
+      nnz += last - first;
+      if (nnz > INT32_MAX) throw InputError("model too large: more than 2^31 stored mass matrix entries");
+      outer[q + 1] = static_cast<int>(nnz);
+    }
+    m_.resizeNonZeros(nnz);
+    std::copy(outer.begin(), outer.end(), m_.outerIndexPtr());
+    std::copy(rows.begin(), rows.begin() + nnz, m_.innerIndexPtr());
+    std::fill(m_.valuePtr(), m_.valuePtr() + nnz, 0.0);
+  }
+
+  // adds the symmetric part of one block's mass matrix (local DOF -> full[])
+  void Add(const int* full, int n, const MatX& me) {
+    order_.clear();
+    for (int i = 0; i < n; ++i)
+      if (full[i] >= 0) order_.emplace_back(full[i], i);
+    std::sort(order_.begin(), order_.end());
+    const int* outer = m_.outerIndexPtr();
+    const int* inner = m_.innerIndexPtr();
+    double* value = m_.valuePtr();
+    for (const auto& [col, j] : order_) {
+      int p = outer[col];
+      for (const auto& [row, i] : order_) {
+        while (inner[p] != row) ++p;
+        value[p] += 0.5 * (me(i, j) + me(j, i));
+      }
+    }
+  }
+
+  SparseMat Take() { return std::move(m_); }
+
+ private:
+  SparseMat m_;
+  std::vector<std::pair<int, int>> order_;
+};
 
 }  // namespace
 
@@ -245,6 +318,8 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
   DofMap& dm = out.dofs;
   dm.full.assign(nn, {-1, -1, -1, -1, -1, -1});
   dm.free.assign(nn, {-1, -1, -1, -1, -1, -1});
+  dm.node_ids.resize(nn);
+  for (int n = 0; n < nn; ++n) dm.node_ids[n] = mesh.nodes[n].id;
   for (int n = 0; n < nn; ++n) {
     for (int c = 0; c < 6; ++c) {
       if (!(active[n] & (1 << c))) continue;
@@ -354,6 +429,10 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
   }
   rows.clear();
   rows.shrink_to_fit();
+  // M_full is M itself when T is the identity (no dependent or fixed DOF)
+  const bool full_is_free = dm.n_full == dm.n_free;
+  std::optional<FullMassAssembler> full_mass;
+  if (!full_is_free) full_mass.emplace(dm.n_full, block_ptr, block_full);
 
   // element matrices, reduced to the block's free DOF and added
   const int* inner = out.K.innerIndexPtr();
@@ -380,6 +459,7 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
       ke.setZero(6, 6);
       me = mass6[b - ne];
     }
+    if (full_mass) full_mass->Add(full, n, me);
     bm.Build(full, n, x);
     const int u = static_cast<int>(bm.union_dofs.size());
     if (u == 0) continue;
@@ -410,6 +490,7 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
       }
     }
   }
+  out.M_full = full_mass ? full_mass->Take() : out.M;
   return out;
 }
 

@@ -23,6 +23,7 @@ struct DofMap {
   std::vector<std::array<int, 6>> free;  ///< node, component -> free DOF index or -1
   int n_full = 0;                        ///< active DOF before links and constraints
   int n_free = 0;                        ///< free DOF
+  std::vector<int> node_ids;             ///< node -> the user's node id (for messages)
 };
 
 /// The assembled model. K and M are symmetric, free DOF only (upper and
@@ -32,6 +33,14 @@ struct AssembledModel {
   DofMap dofs;
   SparseMat K, M;   ///< free x free
   SparseMat T;      ///< full x free
+  /// Mass matrix of all active DOF before rigid-link elimination and
+  /// constraints (n_full x n_full, numbered by DofMap::full, upper and lower
+  /// parts stored), so that M = T^T M_full T restricted to the free DOF. It
+  /// keeps the element and point mass carried by dependent (rigid-link) and
+  /// constrained nodes node by node, which the inertia invariants need (T^T
+  /// M_full T is exact for the kinetic energy but mixes nodes). Imported
+  /// matrices: M_full = M as imported (full = free numbering).
+  SparseMat M_full;
 };
 
 /// Options of the assembly.

@@ -110,7 +110,8 @@ void AddSpringDamper(const YAML::Node& node, const std::string& name, ParseConte
                        "force_velocity", "free_length", "preload"});
   EitherOr(node, "stiffness", "force_deflection", ctx);
   EitherOr(node, "damping", "force_velocity", ctx);
-  const auto [i, j] = MarkerPair(node, ctx);
+  const auto [i0, j0] = MarkerPair(node, ctx);
+  const int i = i0, j = j0;  // named copies: clang 14 cannot capture structured bindings
   SpringDamperLaw law;
   law.stiffness = NonNegative(node, "stiffness", ctx);
   law.damping = NonNegative(node, "damping", ctx);
@@ -134,7 +135,8 @@ void AddRotationalSpringDamper(const YAML::Node& node, const std::string& name, 
   ctx.CheckKeys(node, {"name", "type", "i", "j", "stiffness", "torque_angle", "damping", "angle0",
                        "preload"});
   EitherOr(node, "stiffness", "torque_angle", ctx);
-  const auto [i, j] = MarkerPair(node, ctx);
+  const auto [i0, j0] = MarkerPair(node, ctx);
+  const int i = i0, j = j0;  // named copies: clang 14 cannot capture structured bindings
   RotationalSpringDamperLaw law;
   law.stiffness = NonNegative(node, "stiffness", ctx);
   law.damping = NonNegative(node, "damping", ctx);
@@ -150,7 +152,8 @@ void AddBushing(const YAML::Node& node, const std::string& name, ParseContext& c
   ctx.CheckKeys(node, {"name", "type", "i", "j", "translational_stiffness", "rotational_stiffness",
                        "translational_damping", "rotational_damping", "preload_force",
                        "preload_torque"});
-  const auto [i, j] = MarkerPair(node, ctx);
+  const auto [i0, j0] = MarkerPair(node, ctx);
+  const int i = i0, j = j0;  // named copies: clang 14 cannot capture structured bindings
   BushingData d;
   d.translational_stiffness = NonNegative3(node, "translational_stiffness", ctx);
   d.rotational_stiffness = NonNegative3(node, "rotational_stiffness", ctx);

@@ -1,3 +1,4 @@
+#include "flexmb/io/json_text.h"
 #include "flexmb/io/run.h"
 
 #include <chrono>
@@ -18,6 +19,8 @@ namespace flexmb {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+using io::JsonNumber;
+using io::JsonString;
 
 double Seconds(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double>(b - a).count();
@@ -53,35 +56,6 @@ class OutputGrid {
   double t0_, dt_, eps_;
   long k_ = 0;
 };
-
-std::string JsonString(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      case '\r': out += "\\r"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof(buf), "\\u%04x", c);
-          out += buf;
-        } else {
-          out += c;
-        }
-    }
-  }
-  return out + "\"";
-}
-
-std::string JsonNumber(double x) {
-  if (!std::isfinite(x)) return "null";
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "%.17g", x);
-  return buf;
-}
 
 // the message of e, naming the model file if the error does not name a file
 std::string Describe(const Error& e, const std::string& model_path) {

@@ -18,36 +18,17 @@
 #include <sstream>
 #include <thread>
 
+#include "cli_runner.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 constexpr const char* kPython = "/usr/bin/python3";
 
-std::string ReadFile(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-void WriteFile(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
-
-struct Result {
-  int code = -1;
-  std::string out, err;
-};
-
-// runs the flexmb binary with `args` in `dir`, capturing stdout and stderr
-Result Cli(const fs::path& dir, const std::string& args) {
-  const std::string cmd = "cd '" + dir.string() + "' && '" FLEXMB_CLI "' " + args +
-                          " > cli_stdout.txt 2> cli_stderr.txt";
-  const int status = std::system(cmd.c_str());
-  Result r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = ReadFile(dir / "cli_stdout.txt");
-  r.err = ReadFile(dir / "cli_stderr.txt");
-  return r;
-}
+using flexmb::testing::CliResult;
+using flexmb::testing::ReadFile;
+using flexmb::testing::RunCli;
+using flexmb::testing::WriteFile;
 
 std::vector<std::vector<std::string>> ReadCsv(const fs::path& p) {
   std::vector<std::vector<std::string>> rows;
@@ -122,13 +103,13 @@ class Cli : public ::testing::Test {
 };
 
 TEST_F(Cli, Version) {
-  const Result r = ::Cli(dir_, "--version");
+  const CliResult r = RunCli(dir_, "--version");
   EXPECT_EQ(r.code, 0);
   EXPECT_NE(r.out.find("flexmb 0."), std::string::npos) << r.out;
 }
 
 TEST_F(Cli, RunWritesResultsSummaryAndAnimation) {
-  const Result r = ::Cli(dir_, "run pendulum.yaml --out res --t-end 1.5 --animation --quiet");
+  const CliResult r = RunCli(dir_, "run pendulum.yaml --out res --t-end 1.5 --animation --quiet");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(r.out.empty()) << "--quiet prints nothing: " << r.out;
 
@@ -181,7 +162,7 @@ TEST_F(Cli, RunWritesResultsSummaryAndAnimation) {
 }
 
 TEST_F(Cli, RunPrintsDegreesOfFreedom) {
-  const Result r = ::Cli(dir_, "run pendulum.yaml --out res --t-end 0.1");
+  const CliResult r = RunCli(dir_, "run pendulum.yaml --out res --t-end 0.1");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("1 degrees of freedom"), std::string::npos) << r.out;
   // not a terminal: no progress bar
@@ -227,7 +208,7 @@ joints:
 )yaml";
 
 TEST_F(Cli, CheckReportsDofAndRedundantEquations) {
-  Result r = ::Cli(dir_, "check pendulum.yaml");
+  CliResult r = RunCli(dir_, "check pendulum.yaml");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("degrees of freedom: 1\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("constraint equations: 5 (0 redundant)"), std::string::npos) << r.out;
@@ -236,7 +217,7 @@ TEST_F(Cli, CheckReportsDofAndRedundantEquations) {
   EXPECT_NE(r.out.find("sensors: 2"), std::string::npos) << r.out;
 
   WriteFile(dir_ / "four_bar.yaml", kFourBar);
-  r = ::Cli(dir_, "check four_bar.yaml");
+  r = RunCli(dir_, "check four_bar.yaml");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("degrees of freedom: 1\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("constraint equations: 20 (3 redundant)"), std::string::npos) << r.out;
@@ -253,12 +234,12 @@ TEST_F(Cli, BadModelIsAnInputErrorWithFileAndLine) {
   std::string text = kPendulum;
   text.replace(text.find("    mass: 1.0"), 13, "    mas: 1.0");
   WriteFile(dir_ / "bad.yaml", text);
-  Result r = ::Cli(dir_, "check bad.yaml");
+  CliResult r = RunCli(dir_, "check bad.yaml");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("bad.yaml:8:"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("mas"), std::string::npos) << r.err;
 
-  r = ::Cli(dir_, "run bad.yaml --out res");
+  r = RunCli(dir_, "run bad.yaml --out res");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("bad.yaml:8:"), std::string::npos) << r.err;
   const auto s = ReadSummary(dir_ / "res" / "summary.json");
@@ -266,11 +247,11 @@ TEST_F(Cli, BadModelIsAnInputErrorWithFileAndLine) {
   EXPECT_EQ(s.at("status"), "failed");
   EXPECT_NE(s.at("message").find("bad.yaml:8:"), std::string::npos);
 
-  r = ::Cli(dir_, "run missing.yaml --out res2");
+  r = RunCli(dir_, "run missing.yaml --out res2");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("missing.yaml"), std::string::npos) << r.err;
 
-  r = ::Cli(dir_, "run pendulum.yaml --out res3 --dt -1");
+  r = RunCli(dir_, "run pendulum.yaml --out res3 --dt -1");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("--dt"), std::string::npos) << r.err;
 }
@@ -295,7 +276,7 @@ output: {interval: 0.01}
 
 TEST_F(Cli, NumericalFailureKeepsRowsAndReportsFailure) {
   WriteFile(dir_ / "blowup.yaml", kBlowUp);
-  const Result r = ::Cli(dir_, "run blowup.yaml --out res");
+  const CliResult r = RunCli(dir_, "run blowup.yaml --out res");
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("error:"), std::string::npos) << r.err;
   const auto s = ReadSummary(dir_ / "res" / "summary.json");

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "flexmb/common/error.h"
+#include "flexmb/fe/elements/element_common.h"
 
 namespace flexmb::fe {
 namespace {
@@ -12,17 +13,6 @@ namespace {
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 using Mat12 = Eigen::Matrix<double, 12, 12>;
 using Mat6x12 = Eigen::Matrix<double, 6, 12>;
-
-ErrorContext Context(const Element& e) {
-  return ErrorContext{e.origin.file, e.origin.line,
-                      std::string(TypeName(e.type)) + " " + std::to_string(e.id)};
-}
-
-Eigen::Matrix3d Skew(const Vec3& v) {
-  Eigen::Matrix3d s;
-  s << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
-  return s;
-}
 
 // transport of end dof along the axis by a distance s: rigid motion
 // (u, theta) at x maps to (u - s e1 x theta, theta) at x + s e1
@@ -37,18 +27,28 @@ void CheckPositive(double v, const char* what, const ErrorContext& ctx) {
     throw InputError(std::string(what) + " must be positive, got " + std::to_string(v), ctx);
 }
 
-}  // namespace
+// everything the stiffness, mass and section forces share: checks, element
+// frame, section compliance, local stiffness and the map to the local end dof
+struct BeamLocal {
+  const Material* mat = nullptr;
+  const BeamSection* sec = nullptr;
+  double L = 0.0;
+  Eigen::Matrix3d R;  // basic from element
+  Mat6 C, bc, cb, bcb, kbb, gt;
+  Mat12 kl;  // local end stiffness
+  Mat12 t;   // basic nodal dof -> local end dof
+};
 
-void Beam2Matrices(const ElementInput& in, MatX& K, MatX& M) {
-  if (in.element == nullptr) throw InputError("beam element input without an element");
-  const Element& e = *in.element;
-  const ErrorContext ctx = Context(e);
-  if (e.nodes.size() != 2 || in.x == nullptr)
-    throw InputError("expected 2 nodes, got " + std::to_string(e.nodes.size()), ctx);
+BeamLocal Setup(const ElementInput& in) {
+  BeamLocal b;
+  const Element& e = CheckElementNodes(in, 2, "beam");
+  const ErrorContext ctx = ElementContext(e);
   if (in.beam == nullptr) throw InputError("missing beam section (property)", ctx);
   if (in.material == nullptr) throw InputError("missing material of the beam section", ctx);
   const BeamSection& sec = *in.beam;
   const Material& mat = *in.material;
+  b.mat = &mat;
+  b.sec = &sec;
 
   CheckPositive(mat.E, "material Young's modulus", ctx);
   const double G = mat.G > 0.0 ? mat.G : mat.E / (2.0 * (1.0 + mat.nu));
@@ -75,6 +75,7 @@ void Beam2Matrices(const ElementInput& in, MatX& K, MatX& M) {
   const Vec3 xa = in.x[0] + oa;
   const Vec3 xb = in.x[1] + ob;
   const double L = (xb - xa).norm();
+  b.L = L;
   const double scale = std::max({xa.norm(), xb.norm(), oa.norm(), ob.norm()});
   if (!(L > 1e-10 * scale) || !(L > 0.0))
     throw InputError("zero length (ends A and B coincide)", ctx);
@@ -87,13 +88,14 @@ void Beam2Matrices(const ElementInput& in, MatX& K, MatX& M) {
                      ctx);
   const Vec3 ey = vy.normalized();
   const Vec3 ez = ex.cross(ey);
-  Eigen::Matrix3d R;  // basic from element
+  Eigen::Matrix3d& R = b.R;
   R.col(0) = ex;
   R.col(1) = ey;
   R.col(2) = ez;
 
   // section compliance over (N, Vy, Vz, T, My, Mz)
-  Mat6 C = Mat6::Zero();
+  Mat6& C = b.C;
+  C.setZero();
   C(0, 0) = 1.0 / (mat.E * sec.A);
   C(1, 1) = sec.ky > 0.0 ? 1.0 / (sec.ky * G * sec.A) : 0.0;
   C(2, 2) = sec.kz > 0.0 ? 1.0 / (sec.kz * G * sec.A) : 0.0;
@@ -106,21 +108,45 @@ void Beam2Matrices(const ElementInput& in, MatX& K, MatX& M) {
   // S = (I + s B1) P, B1 = [0 0; skew(e1) 0]
   Mat6 B1 = Mat6::Zero();
   B1.block<3, 3>(3, 0) = Skew(Vec3::UnitX());
-  const Mat6 cb = C * B1;
-  const Mat6 bc = B1.transpose() * C;
-  const Mat6 bcb = B1.transpose() * C * B1;
+  const Mat6 cb = b.cb = C * B1;
+  const Mat6 bc = b.bc = B1.transpose() * C;
+  const Mat6 bcb = b.bcb = B1.transpose() * C * B1;
   // cantilever flexibility of end B (A clamped), closed form of int B^T C B
   const Mat6 F = L * C + 0.5 * L * L * (bc + cb) + L * L * L / 3.0 * bcb;
-  Mat6 kbb = F.inverse();
+  Mat6& kbb = b.kbb;
+  kbb = F.inverse();
   kbb = 0.5 * (kbb + kbb.transpose()).eval();
 
   // local stiffness: end-A wrench = -Gamma end-B wrench, Gamma^T = Transport(L)
-  const Mat6 gt = Transport(L);
-  Mat12 kl;
+  const Mat6 gt = b.gt = Transport(L);
+  Mat12& kl = b.kl;
   kl.block<6, 6>(0, 0) = gt.transpose() * kbb * gt;
   kl.block<6, 6>(0, 6) = -gt.transpose() * kbb;
   kl.block<6, 6>(6, 0) = -kbb * gt;
   kl.block<6, 6>(6, 6) = kbb;
+
+  // basic nodal dof -> local end dof: u_end = R^T (u + theta x offset), theta_end = R^T theta
+  Mat12& t = b.t;
+  t.setZero();
+  const Eigen::Matrix3d rt = R.transpose();
+  const Vec3 off[2] = {oa, ob};
+  for (int i = 0; i < 2; ++i) {
+    t.block<3, 3>(6 * i, 6 * i) = rt;
+    t.block<3, 3>(6 * i, 6 * i + 3) = -rt * Skew(off[i]);
+    t.block<3, 3>(6 * i + 3, 6 * i + 3) = rt;
+  }
+  return b;
+}
+
+}  // namespace
+
+void Beam2Matrices(const ElementInput& in, MatX& K, MatX& M) {
+  const BeamLocal b = Setup(in);
+  const Material& mat = *b.mat;
+  const BeamSection& sec = *b.sec;
+  const double L = b.L;
+  const Mat6 &C = b.C, &bc = b.bc, &cb = b.cb, &bcb = b.bcb, &kbb = b.kbb, &gt = b.gt;
+  const Mat12 &kl = b.kl, &t = b.t;
 
   // section mass per length: translations, rotary inertia
   const double m0 = mat.rho * sec.A + sec.nsm;
@@ -156,19 +182,19 @@ void Beam2Matrices(const ElementInput& in, MatX& K, MatX& M) {
     }
   }
 
-  // basic nodal dof -> local end dof: u_end = R^T (u + theta x offset), theta_end = R^T theta
-  Mat12 t = Mat12::Zero();
-  const Eigen::Matrix3d rt = R.transpose();
-  const Vec3 off[2] = {oa, ob};
-  for (int i = 0; i < 2; ++i) {
-    t.block<3, 3>(6 * i, 6 * i) = rt;
-    t.block<3, 3>(6 * i, 6 * i + 3) = -rt * Skew(off[i]);
-    t.block<3, 3>(6 * i + 3, 6 * i + 3) = rt;
-  }
   K = t.transpose() * kl * t;
   K = 0.5 * (K + K.transpose()).eval();
   M = t.transpose() * ml * t;
   M = 0.5 * (M + M.transpose()).eval();
+}
+
+void Beam2SectionForces(const ElementInput& in, MatX& S, Eigen::Matrix3d& axes) {
+  const BeamLocal b = Setup(in);
+  // end wrenches on the element: f = kl t u; section forces at A = -f_A, at B = f_B
+  Mat12 sign = Mat12::Identity();
+  sign.topLeftCorner<6, 6>() *= -1.0;
+  S = sign * b.kl * b.t;
+  axes = b.R;
 }
 
 }  // namespace flexmb::fe

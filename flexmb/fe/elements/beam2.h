@@ -17,6 +17,8 @@
 /// (rho A + nsm) and the section's rotary inertia rho [Iy + Iz, Iy, Iz, Iyz].
 /// Details: docs/design.md, "FE: beam element".
 
+#include <Eigen/Core>
+
 #include "flexmb/fe/element_matrices.h"
 
 namespace flexmb::fe {
@@ -31,5 +33,20 @@ namespace flexmb::fe {
 /// axis, non-positive A, Iy, Iz or J, Iy Iz <= Iyz^2, negative shear factors,
 /// a missing section or material, or bad material constants.
 void Beam2Matrices(const ElementInput& in, MatX& K, MatX& M);
+
+/// Section forces of a 2-node beam at its two ends: fills S (12 x 12) with
+/// the map from the element's nodal DOF (basic frame, node by node ux uy uz
+/// rx ry rz, as K) to (N, Vy, Vz, T, My, Mz) [N, N m] at end A (rows 0-5)
+/// and end B (rows 6-11), in the element frame, and `axes` with its axes as
+/// columns (basic from element; x from end A to end B, y from the
+/// orientation vector). They are the resultants of the stresses on a cut
+/// face with outward normal +x (the force and moment, about the section's
+/// centre, that the part of the beam beyond the cut exerts on the part
+/// before it): N > 0 in tension, T the moment about x, My and Mz about y and
+/// z. They come from the end wrenches K_local u_local (moments about the
+/// ends): the section forces at B are B's wrench, at A minus A's wrench,
+/// exact for the element's Timoshenko stiffness without span loads (the
+/// forces vary linearly in between). Throws InputError as Beam2Matrices.
+void Beam2SectionForces(const ElementInput& in, MatX& S, Eigen::Matrix3d& axes);
 
 }  // namespace flexmb::fe

@@ -1,21 +1,14 @@
 #include "flexmb/fe/elements/shell_common.h"
 
+#include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 
 namespace flexmb::fe::shell {
 
-ErrorContext Context(const Element& element) {
-  return ErrorContext{element.origin.file, element.origin.line,
-                      std::string(TypeName(element.type)) + " " + std::to_string(element.id)};
-}
-
 ShellData CheckShellInput(const ElementInput& in, int n_nodes) {
-  if (in.element == nullptr) throw InputError("shell element input without an element");
-  const Element& e = *in.element;
-  const ErrorContext ctx = Context(e);
-  if (static_cast<int>(e.nodes.size()) != n_nodes || in.x == nullptr)
-    throw InputError("expected " + std::to_string(n_nodes) + " nodes, got " +
-                         std::to_string(e.nodes.size()), ctx);
+  const Element& e = CheckElementNodes(in, n_nodes, "shell");
+  const ErrorContext ctx = ElementContext(e);
   if (in.shell == nullptr) throw InputError("missing shell section (property)", ctx);
   if (in.material == nullptr) throw InputError("missing material of the shell section", ctx);
   const ShellSection& sec = *in.shell;
@@ -30,17 +23,42 @@ ShellData CheckShellInput(const ElementInput& in, int n_nodes) {
   s.offset = e.shell_offset;
   if (!(s.t > 0.0) || !std::isfinite(s.t))
     throw InputError("non-positive shell thickness " + std::to_string(s.t), ctx);
-  if (!(s.E > 0.0) || !std::isfinite(s.E))
-    throw InputError("material Young's modulus must be positive, got " + std::to_string(s.E), ctx);
-  if (!(s.nu > -1.0 && s.nu < 0.5))
-    throw InputError("material Poisson's ratio must lie in (-1, 0.5), got " + std::to_string(s.nu),
-                     ctx);
+  CheckElasticConstants(mat, ctx);
   if (!(s.rho >= 0.0) || !(s.nsm >= 0.0) || !std::isfinite(s.rho) || !std::isfinite(s.nsm))
     throw InputError("negative or non-finite density or non-structural mass", ctx);
   if (!std::isfinite(s.offset)) throw InputError("non-finite shell offset", ctx);
-  for (int i = 0; i < n_nodes; ++i)
-    if (!in.x[i].allFinite()) throw InputError("non-finite node coordinates", ctx);
   return s;
+}
+
+SectionConstants Constants(const ShellData& s) {
+  SectionConstants c;
+  c.membrane = MembraneMatrix(s);
+  c.bending = BendingMatrix(s);
+  c.shear = kShearFactor * s.G * s.t;
+  c.drilling_tie = kDrillingFactor * s.G * s.t;
+  c.drilling_stabilization = kDrillingStabilization * s.G * s.t;
+  c.m0 = s.rho * s.t + s.nsm;
+  c.m2 = s.rho * s.t * s.t * s.t / 12.0;
+  return c;
+}
+
+double LongestEdge(const Vec3* x, int n, const ErrorContext& ctx) {
+  double max_edge = 0.0, min_edge = INFINITY;
+  for (int i = 0; i < n; ++i) {
+    const double len = (x[(i + 1) % n] - x[i]).norm();
+    max_edge = std::max(max_edge, len);
+    min_edge = std::min(min_edge, len);
+  }
+  if (!(min_edge > 1e-8 * max_edge)) throw InputError("coincident nodes", ctx);
+  return max_edge;
+}
+
+Eigen::Matrix3d FrameAxes(const Vec3& e1, const Vec3& e3) {
+  Eigen::Matrix3d r;
+  r.col(0) = e1;
+  r.col(1) = e3.cross(e1);
+  r.col(2) = e3;
+  return r;
 }
 
 Eigen::Matrix3d MembraneMatrix(const ShellData& s) {
@@ -53,25 +71,61 @@ Eigen::Matrix3d BendingMatrix(const ShellData& s) {
   return MembraneMatrix(s) * (s.t * s.t / 12.0);
 }
 
+Eigen::Matrix3d PlaneStressMatrix(const ShellData& s) {
+  Eigen::Matrix3d c;
+  c << 1.0, s.nu, 0.0, s.nu, 1.0, 0.0, 0.0, 0.0, 0.5 * (1.0 - s.nu);
+  return c * (s.E / (1.0 - s.nu * s.nu));
+}
+
 template <int N>
-void ToBasic(const LocalFrame<N>& frame, const Eigen::Matrix<double, 6 * N, 6 * N>& local,
-             MatX& out) {
-  // T maps basic nodal dof to local mid-surface dof, node block by node block
+Eigen::Matrix<double, 6 * N, 6 * N> LocalTransform(const LocalFrame<N>& frame) {
+  // node block by node block
   Eigen::Matrix<double, 6 * N, 6 * N> t = Eigen::Matrix<double, 6 * N, 6 * N>::Zero();
   const Eigen::Matrix3d rt = frame.R.transpose();
   for (int i = 0; i < N; ++i) {
-    const Eigen::Vector3d d = frame.d.col(i);
-    Eigen::Matrix3d skew_d;
-    skew_d << 0.0, -d.z(), d.y(), d.z(), 0.0, -d.x(), -d.y(), d.x(), 0.0;
     t.template block<3, 3>(6 * i, 6 * i) = rt;
-    t.template block<3, 3>(6 * i, 6 * i + 3) = -rt * skew_d;
+    t.template block<3, 3>(6 * i, 6 * i + 3) = -rt * Skew(frame.d.col(i));
     t.template block<3, 3>(6 * i + 3, 6 * i + 3) = rt;
   }
+  return t;
+}
+
+template <int N>
+void ToBasic(const LocalFrame<N>& frame, const Eigen::Matrix<double, 6 * N, 6 * N>& local,
+             MatX& out) {
+  const Eigen::Matrix<double, 6 * N, 6 * N> t = LocalTransform<N>(frame);
   out = t.transpose() * local * t;
   out = 0.5 * (out + out.transpose()).eval();
 }
 
+template <int N>
+Eigen::Matrix<double, 6, 6 * N> SurfaceStress(const LocalFrame<N>& frame, const ShellData& s,
+                                              const Eigen::Matrix<double, 2, N>& dx) {
+  const Eigen::Matrix3d c = PlaneStressMatrix(s);
+  const Eigen::Matrix<double, 3, 2 * N> sm = c * MembraneStrain<N>(dx);
+  const Eigen::Matrix<double, 3, 3 * N> sb = c * BendingStrain<N>(dx) * (0.5 * s.t);
+  // local: rows bottom then top, columns node by node u v w rx ry rz
+  Eigen::Matrix<double, 6, 6 * N> local = Eigen::Matrix<double, 6, 6 * N>::Zero();
+  for (int i = 0; i < N; ++i) {
+    for (int a = 0; a < 2; ++a) {
+      local.template block<3, 1>(0, 6 * i + kMembraneDofs[a]) = sm.col(2 * i + a);
+      local.template block<3, 1>(3, 6 * i + kMembraneDofs[a]) = sm.col(2 * i + a);
+    }
+    for (int a = 0; a < 3; ++a) {
+      local.template block<3, 1>(0, 6 * i + kPlateDofs[a]) = -sb.col(3 * i + a);
+      local.template block<3, 1>(3, 6 * i + kPlateDofs[a]) = sb.col(3 * i + a);
+    }
+  }
+  return local * LocalTransform<N>(frame);
+}
+
+template Eigen::Matrix<double, 18, 18> LocalTransform<3>(const LocalFrame<3>&);
+template Eigen::Matrix<double, 24, 24> LocalTransform<4>(const LocalFrame<4>&);
 template void ToBasic<3>(const LocalFrame<3>&, const Eigen::Matrix<double, 18, 18>&, MatX&);
 template void ToBasic<4>(const LocalFrame<4>&, const Eigen::Matrix<double, 24, 24>&, MatX&);
+template Eigen::Matrix<double, 6, 18> SurfaceStress<3>(const LocalFrame<3>&, const ShellData&,
+                                                       const Eigen::Matrix<double, 2, 3>&);
+template Eigen::Matrix<double, 6, 24> SurfaceStress<4>(const LocalFrame<4>&, const ShellData&,
+                                                       const Eigen::Matrix<double, 2, 4>&);
 
 }  // namespace flexmb::fe::shell

@@ -9,6 +9,8 @@
 /// offset (Element::shell_offset) is handled the same way.
 /// Details and constants: docs/design.md, "FE: shell elements".
 
+#include <Eigen/Core>
+
 #include "flexmb/fe/element_matrices.h"
 
 namespace flexmb::fe {
@@ -23,5 +25,18 @@ namespace flexmb::fe {
 /// coincident nodes, a non-convex or badly warped quad, non-positive
 /// thickness, or a missing section or material.
 void ShellQuad4Matrices(const ElementInput& in, MatX& K, MatX& M);
+
+/// Stress recovery of a 4-node shell: fills S (6 x 24) with the map from the
+/// element's nodal DOF (basic frame, node by node ux uy uz rx ry rz, as K) to
+/// the in-plane stresses (sxx, syy, sxy) [Pa] at the centroid of the bottom
+/// (rows 0-2) and top (rows 3-5) surfaces, z = -t/2 and +t/2 from the
+/// (offset) mid-surface along e3, in the element frame, and `axes` with its
+/// axes as columns (basic from element): e3 the unit normal of the mean
+/// plane along (x3 - x1) x (x4 - x2), e1 the edge from node 1 to node 2
+/// projected on the mean plane, e2 = e3 x e1. The strains are those of the
+/// stiffness at the centroid (membrane B at xi = eta = 0, where the
+/// incompatible modes have no strain; curvatures of the bilinear rotations).
+/// Throws InputError as ShellQuad4Matrices for a bad element.
+void ShellQuad4Stress(const ElementInput& in, MatX& S, Eigen::Matrix3d& axes);
 
 }  // namespace flexmb::fe

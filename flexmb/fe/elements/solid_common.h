@@ -2,8 +2,9 @@
 /// \file solid_common.h
 /// Pieces shared by the isoparametric solids (tet4, tet10, hex8): input
 /// checks, the isotropic elasticity matrix, the Jacobian with its sign
-/// check, the strain-displacement matrix, and quadrature loops for the
-/// stiffness and the consistent and lumped (HRZ) mass. Strains are ordered
+/// check, the strain-displacement matrix, the stress at a point, and
+/// quadrature loops for the stiffness and the consistent and lumped (HRZ)
+/// mass. Strains are ordered
 /// xx yy zz xy yz zx with engineering shear. Element DOF: ux uy uz per node,
 /// node by node, basic frame. Details: docs/design.md, "FE: solid elements".
 
@@ -13,12 +14,9 @@
 
 #include "flexmb/common/error.h"
 #include "flexmb/fe/element_matrices.h"
+#include "flexmb/fe/elements/element_common.h"
 
 namespace flexmb::fe::solid {
-
-/// Context naming the element for error messages ("8-node hexahedron 5" at
-/// the element's file:line).
-ErrorContext Context(const Element& element);
 
 /// Checked material values of a solid.
 struct SolidData {
@@ -43,6 +41,14 @@ struct QuadPoint {
   double xi, eta, zeta, w;
 };
 
+/// 4-point rule on the reference tetrahedron (volume coordinates
+/// 0.5854.../0.1381..., weights 1/24), exact for polynomials of degree 2.
+inline constexpr double kTetRuleA = 0.5854101966249685, kTetRuleB = 0.1381966011250105;
+inline constexpr QuadPoint kTetFourPoint[4] = {{kTetRuleB, kTetRuleB, kTetRuleB, 1.0 / 24.0},
+                                               {kTetRuleA, kTetRuleB, kTetRuleB, 1.0 / 24.0},
+                                               {kTetRuleB, kTetRuleA, kTetRuleB, 1.0 / 24.0},
+                                               {kTetRuleB, kTetRuleB, kTetRuleA, 1.0 / 24.0}};
+
 /// Jacobian J = dX/dxi (rows: d/dxi, d/deta, d/dzeta of x y z) from the
 /// natural derivatives `dn` (3 x N) and node coordinates; returns det J and
 /// the cartesian derivatives `dx` (3 x N). Throws InputError naming the
@@ -60,7 +66,7 @@ double CartesianDerivatives(const Eigen::Matrix<double, 3, N>& dn, const Vec3* x
     throw InputError(det < -tol ? "inverted element (negative Jacobian determinant " +
                                       std::to_string(det) + ")"
                                 : "degenerate element (zero Jacobian determinant)",
-                     Context(e));
+                     ElementContext(e));
   dx = j.inverse() * dn;
   return det;
 }
@@ -81,6 +87,21 @@ Eigen::Matrix<double, 6, 3 * N> StrainMatrix(const Eigen::Matrix<double, 3, N>& 
     b(5, 3 * i + 2) = dx(0, i);
   }
   return b;
+}
+
+/// Stress recovery at the natural point `p`: D B there, the 6 x 3N map from
+/// the nodal displacements (basic frame, node by node ux uy uz) to the
+/// stresses (sxx, syy, szz, sxy, syz, szx) [Pa] in the basic frame, with the
+/// strain-displacement matrix of the stiffness (StrainMatrix). Throws as
+/// CartesianDerivatives.
+template <int N, class Shape>
+Eigen::Matrix<double, 6, 3 * N> PointStress(const QuadPoint& p, Shape&& shape, const Vec3* x,
+                                            const SolidData& s, const Element& e) {
+  Eigen::Matrix<double, N, 1> n;
+  Eigen::Matrix<double, 3, N> dn, dx;
+  shape(p, n, dn);
+  CartesianDerivatives<N>(dn, x, s, e, dx);
+  return ElasticityMatrix(s) * StrainMatrix<N>(dx);
 }
 
 /// Adds rho int N^T N dV (3 DOF per node) over the given points to `m`;
@@ -118,7 +139,9 @@ void AddStiffness(const QuadPoint* pts, int count, Shape&& shape, const Vec3* x,
 
 /// HRZ lumping (Hinton, Rock, Zienkiewicz 1976): the diagonal of the
 /// consistent mass scaled so that each direction carries the total mass.
-/// Positive for every element here (row sums are not: tet10 corners).
+/// Positive for every element here (row sums are not: tet10 corners); keeps
+/// the centre of mass only where the element is symmetric enough (any
+/// straight-sided tetrahedron, a parallelepiped), not on a tapered hexahedron.
 template <int M>
 void LumpHrz(Eigen::Matrix<double, M, M>& m) {
   const Eigen::Matrix<double, M, 1> diag = m.diagonal();
@@ -130,6 +153,36 @@ void LumpHrz(Eigen::Matrix<double, M, M>& m) {
   }
   m.setZero();
   if (dsum > 0.0) m.diagonal() = diag * (total / dsum);
+}
+
+/// Row-sum lumping: each node gets rho int N_i dV in every direction. Keeps
+/// the total mass and its first moment (the centre of mass) exactly; positive
+/// for elements whose shape functions are non-negative (tet4, hex8), not for
+/// tet10, whose corner rows sum to a negative mass.
+template <int M>
+void LumpRowSum(Eigen::Matrix<double, M, M>& m) {
+  const Eigen::Matrix<double, M, 1> rows = m.rowwise().sum();
+  m.setZero();
+  m.diagonal() = rows;
+}
+
+/// How a solid lumps its mass.
+enum class Lumping { kHrz, kRowSum };
+
+/// Final step of every solid: lumps the consistent mass `m` (HRZ or row
+/// sums) if `form` asks for it, then returns the symmetric parts of k and m
+/// in K and M.
+template <int N>
+void Finish(const Eigen::Matrix<double, N, N>& k, Eigen::Matrix<double, N, N>& m, MassForm form,
+            Lumping lumping, MatX& K, MatX& M) {
+  if (form == MassForm::kLumped) {
+    if (lumping == Lumping::kHrz)
+      LumpHrz<N>(m);
+    else
+      LumpRowSum<N>(m);
+  }
+  K = 0.5 * (k + k.transpose());
+  M = 0.5 * (m + m.transpose());
 }
 
 }  // namespace flexmb::fe::solid

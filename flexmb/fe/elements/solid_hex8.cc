@@ -83,9 +83,12 @@ void SolidHex8Matrices(const ElementInput& in, MatX& K, MatX& M, Hex8Formulation
 
   Mat24 m = Mat24::Zero();
   solid::AddConsistentMass<8>(g3, 27, Shape, in.x, s, e, m);
-  if (in.mass_form == MassForm::kLumped) solid::LumpHrz<24>(m);
-  K = 0.5 * (k + k.transpose());
-  M = 0.5 * (m + m.transpose());
+  solid::Finish<24>(k, m, in.mass_form, solid::Lumping::kRowSum, K, M);
+}
+
+void SolidHex8Stress(const ElementInput& in, MatX& S) {
+  const solid::SolidData s = solid::CheckSolidInput(in, 8, 8);
+  S = solid::PointStress<8>({0.0, 0.0, 0.0, 0.0}, Shape, in.x, s, *in.element);
 }
 
 }  // namespace flexmb::fe

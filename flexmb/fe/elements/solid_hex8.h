@@ -26,13 +26,25 @@ enum class Hex8Formulation {
 
 /// Fills K [N/m] and M [kg] (24 x 24, basic frame, node by node ux uy uz) of
 /// an 8-node hexahedron; consistent mass by 3x3x3 Gauss (exact for any
-/// trilinear geometry), MassForm::kLumped by HRZ lumping (one eighth of the
-/// mass per node on a parallelepiped). Throws InputError naming the element
+/// trilinear geometry), MassForm::kLumped by row sums, rho int N_i dV per
+/// node (one eighth of the mass on a parallelepiped; positive, and exact in
+/// mass and centre of mass on any valid hexahedron, which HRZ lumping is not
+/// on a tapered one). Throws InputError naming the element
 /// if the Jacobian determinant is not positive at an integration point
 /// (2x2x2 and 3x3x3; inverted, degenerate or too distorted), for a missing
 /// material or bad material constants. Corners are not checked: the
 /// MacNeal-Harder patch elements have slightly negative corner Jacobians.
 void SolidHex8Matrices(const ElementInput& in, MatX& K, MatX& M,
                        Hex8Formulation formulation = Hex8Formulation::kIncompatibleModes);
+
+/// Stress recovery of an 8-node hexahedron: fills S (6 x 24) with the map
+/// from the nodal displacements (basic frame, node by node ux uy uz, as K)
+/// to the stresses (sxx, syy, szz, sxy, syz, szx) [Pa] at the centre (xi =
+/// eta = zeta = 0), basic frame: D B of the trilinear field there. The
+/// incompatible modes of the default formulation have no strain at the
+/// centre (their Taylor-corrected derivatives vanish there), so both
+/// formulations share this recovery. Throws InputError as SolidHex8Matrices
+/// for a bad material or a non-positive Jacobian at the centre.
+void SolidHex8Stress(const ElementInput& in, MatX& S);
 
 }  // namespace flexmb::fe

@@ -27,13 +27,6 @@ void Shape(const solid::QuadPoint& p, Eigen::Matrix<double, 10, 1>& n,
   }
 }
 
-// 4-point rule, exact for degree 2
-constexpr double kA = 0.5854101966249685, kB = 0.1381966011250105;
-constexpr solid::QuadPoint kFourPoint[4] = {{kB, kB, kB, 1.0 / 24.0},
-                                            {kA, kB, kB, 1.0 / 24.0},
-                                            {kB, kA, kB, 1.0 / 24.0},
-                                            {kB, kB, kA, 1.0 / 24.0}};
-
 // symmetric 14-point rule with positive weights, exact for degree 5 (the
 // rule of Walkington 2000 and quadpy; weights sum to the reference volume
 // 1/6; exactness checked in tests/unit/fe/solid_test.cc)
@@ -64,11 +57,14 @@ void SolidTet10Matrices(const ElementInput& in, MatX& K, MatX& M) {
   }
   Mat30 k = Mat30::Zero();
   Mat30 m = Mat30::Zero();
-  solid::AddStiffness<10>(kFourPoint, 4, Shape, in.x, s, e, k);
+  solid::AddStiffness<10>(solid::kTetFourPoint, 4, Shape, in.x, s, e, k);
   solid::AddConsistentMass<10>(kFourteenPoint, 14, Shape, in.x, s, e, m);
-  if (in.mass_form == MassForm::kLumped) solid::LumpHrz<30>(m);
-  K = 0.5 * (k + k.transpose());
-  M = 0.5 * (m + m.transpose());
+  solid::Finish<30>(k, m, in.mass_form, solid::Lumping::kHrz, K, M);
+}
+
+void SolidTet10Stress(const ElementInput& in, MatX& S) {
+  const solid::SolidData s = solid::CheckSolidInput(in, 10, 4);
+  S = solid::PointStress<10>({0.25, 0.25, 0.25, 0.0}, Shape, in.x, s, *in.element);
 }
 
 }  // namespace flexmb::fe

@@ -20,4 +20,12 @@ namespace flexmb::fe {
 /// badly curved), for a missing material or bad material constants.
 void SolidTet10Matrices(const ElementInput& in, MatX& K, MatX& M);
 
+/// Stress recovery of a 10-node tetrahedron: fills S (6 x 30) with the map
+/// from the nodal displacements (basic frame, node by node ux uy uz, as K)
+/// to the stresses (sxx, syy, szz, sxy, syz, szx) [Pa] at the centroid
+/// (volume coordinates 1/4), basic frame: D B of the stiffness there. Throws
+/// InputError as SolidTet10Matrices for a bad material or a non-positive
+/// Jacobian at the centroid.
+void SolidTet10Stress(const ElementInput& in, MatX& S);
+
 }  // namespace flexmb::fe

@@ -16,12 +16,6 @@ void Shape(const solid::QuadPoint& p, Eigen::Matrix<double, 4, 1>& n,
 
 // centroid, weight = reference volume 1/6
 constexpr solid::QuadPoint kOnePoint[1] = {{0.25, 0.25, 0.25, 1.0 / 6.0}};
-// 4-point rule, exact for polynomials of degree 2
-constexpr double kA = 0.5854101966249685, kB = 0.1381966011250105;
-constexpr solid::QuadPoint kFourPoint[4] = {{kB, kB, kB, 1.0 / 24.0},
-                                            {kA, kB, kB, 1.0 / 24.0},
-                                            {kB, kA, kB, 1.0 / 24.0},
-                                            {kB, kB, kA, 1.0 / 24.0}};
 
 }  // namespace
 
@@ -31,10 +25,13 @@ void SolidTet4Matrices(const ElementInput& in, MatX& K, MatX& M) {
   Mat12 k = Mat12::Zero();
   Mat12 m = Mat12::Zero();
   solid::AddStiffness<4>(kOnePoint, 1, Shape, in.x, s, e, k);
-  solid::AddConsistentMass<4>(kFourPoint, 4, Shape, in.x, s, e, m);
-  if (in.mass_form == MassForm::kLumped) solid::LumpHrz<12>(m);
-  K = 0.5 * (k + k.transpose());
-  M = 0.5 * (m + m.transpose());
+  solid::AddConsistentMass<4>(solid::kTetFourPoint, 4, Shape, in.x, s, e, m);
+  solid::Finish<12>(k, m, in.mass_form, solid::Lumping::kHrz, K, M);
+}
+
+void SolidTet4Stress(const ElementInput& in, MatX& S) {
+  const solid::SolidData s = solid::CheckSolidInput(in, 4, 4);
+  S = solid::PointStress<4>(kOnePoint[0], Shape, in.x, s, *in.element);
 }
 
 }  // namespace flexmb::fe

@@ -17,4 +17,10 @@ namespace flexmb::fe {
 /// missing material or bad material constants.
 void SolidTet4Matrices(const ElementInput& in, MatX& K, MatX& M);
 
+/// Stress recovery of a 4-node tetrahedron: fills S (6 x 12) with the map
+/// from the nodal displacements (basic frame, node by node ux uy uz, as K)
+/// to the constant stresses (sxx, syy, szz, sxy, syz, szx) [Pa], basic
+/// frame: D B of the stiffness. Throws InputError as SolidTet4Matrices.
+void SolidTet4Stress(const ElementInput& in, MatX& S);
+
 }  // namespace flexmb::fe

@@ -4,26 +4,22 @@
 
 #include <Eigen/Dense>
 
-#include "fe_test_models.h"
 #include "flexmb/common/error.h"
 #include "flexmb/fe/point_mass.h"
+#include "tests/unit/fe/fe_test_models.h"
 
 namespace flexmb::fe {
 namespace {
 
 using testing::AddBeam;
 using testing::AddConstraint;
+using testing::AddElement;
 using testing::AddMaterial;
 using testing::AddNode;
 using testing::AddPointMass;
 using testing::AddRigidLink;
 using testing::AddRoundBar;
-
-Mat3 Skew(const Vec3& v) {
-  Mat3 s;
-  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return s;
-}
+using testing::Skew;
 
 // beams 0-1-2, a shell 1-2-3-4, a tetrahedron 5-6-7-8 whose nodes 5 and 6
 // hang on node 2 by a rigid link, a point mass with inertia at node 7,
@@ -48,18 +44,8 @@ Mesh MixedModel() {
   }
   AddBeam(mesh, bar, 0, 1, Vec3(0, 1, 0));
   AddBeam(mesh, bar, 1, 2, Vec3(0, 0.3, 1));
-  Element quad;
-  quad.id = 10;
-  quad.type = ElementType::kQuad4;
-  quad.property = 0;
-  quad.nodes = {1, 2, 3, 4};
-  mesh.elements.push_back(quad);
-  Element tet;
-  tet.id = 11;
-  tet.type = ElementType::kTet4;
-  tet.property = 0;
-  tet.nodes = {5, 6, 7, 8};
-  mesh.elements.push_back(tet);
+  AddElement(mesh, ElementType::kQuad4, 0, {1, 2, 3, 4});
+  AddElement(mesh, ElementType::kTet4, 0, {5, 6, 7, 8});
   Mat3 inertia;
   inertia << 0.2, 0.01, 0.0, 0.01, 0.3, -0.02, 0.0, -0.02, 0.25;
   AddPointMass(mesh, 7, 4.0, Vec3(0.1, -0.2, 0.3), inertia);
@@ -67,6 +53,18 @@ Mesh MixedModel() {
   AddConstraint(mesh, 0, 0b111111);
   AddConstraint(mesh, 8, 0b000001);
   return mesh;
+}
+
+// mass and centre from the assembled mass matrix, consistent and lumped,
+// against the analytic values
+void ExpectMassAndCenter(const Mesh& mesh, double m, const Vec3& center) {
+  for (MassForm form : {MassForm::kConsistent, MassForm::kLumped}) {
+    AssemblyOptions options;
+    options.mass_form = form;
+    const MassProperties p = ComputeMassProperties(mesh, Assemble(mesh, options));
+    EXPECT_NEAR(p.mass, m, 1e-13 * m);
+    EXPECT_LT((p.center - center).norm(), 1e-13);
+  }
 }
 
 TEST(Assembly, MixedModelNumbering) {
@@ -220,6 +218,72 @@ TEST(Assembly, RigidLinkReproducesRigidBodyMass) {
   EXPECT_LT((md - ref).cwiseAbs().maxCoeff(), 1e-13 * ref.norm());
 }
 
+// Two beams joined by a rigid link whose dependent node has all six DOF
+// (rotations follow theta_dep = theta_ind, translations u_ind + theta x r),
+// and a tetrahedron hanging on the second beam's end by a translations-only
+// link: the free model has exactly six zero-energy modes, the rigid-body
+// motions, which the link matrix T carries to every DOF of the full system,
+// and the assembled mass has the parts' exact mass and centre.
+TEST(Assembly, RigidLinksWithRotationsKeepExactlySixRigidModes) {
+  Mesh mesh;
+  const int steel = AddMaterial(mesh, 2.1e11, 0.3, 7850.0);
+  const int bar = AddRoundBar(mesh, steel, 0.03);
+  SolidSection solid;
+  solid.material = steel;
+  mesh.solid_sections.push_back(solid);
+  const std::vector<Vec3> x = {{0.0, 0.0, 0.0}, {1.0, 0.1, 0.0},  {1.4, 0.3, 0.2},
+                               {2.3, 0.2, 0.5}, {2.5, 0.2, 0.4},  {2.6, 0.6, 0.5},
+                               {2.4, 0.4, 0.9}, {2.9, 0.7, 0.95}};
+  for (const Vec3& p : x) AddNode(mesh, p);
+  AddBeam(mesh, bar, 0, 1, Vec3(0, 0, 1));
+  AddBeam(mesh, bar, 2, 3, Vec3(0, 1, 0));
+  AddElement(mesh, ElementType::kTet4, 0, {4, 5, 6, 7});
+  AddRigidLink(mesh, 1, 1, {2});
+  AddRigidLink(mesh, 2, 3, {4, 5, 6}, 0b000111);
+  Mat3 inertia;
+  inertia << 0.02, 0.001, 0.0, 0.001, 0.03, 0.0, 0.0, 0.0, 0.025;
+  AddPointMass(mesh, 0, 3.0, Vec3(0.05, -0.1, 0.02), inertia);
+  const AssembledModel model = Assemble(mesh);
+  const DofMap& dm = model.dofs;
+  // node 2's six DOF and the translations of 4, 5, 6 are dependent
+  EXPECT_EQ(dm.n_free, dm.n_full - 6 - 9);
+
+  // rigid motion in free coordinates, and in full coordinates for T
+  auto rigid = [&](bool full) {
+    const auto& index = full ? dm.full : dm.free;
+    Eigen::MatrixXd r = Eigen::MatrixXd::Zero(full ? dm.n_full : dm.n_free, 6);
+    for (size_t n = 0; n < x.size(); ++n)
+      for (int c = 0; c < 6; ++c) {
+        if (index[n][c] < 0) continue;
+        for (int a = 0; a < 6; ++a) {
+          Vec3 u = Vec3::Zero(), th = Vec3::Zero();
+          (a < 3 ? u : th)[a % 3] = 1.0;
+          r(index[n][c], a) = c < 3 ? (u + th.cross(x[n]))[c] : th[c - 3];
+        }
+      }
+    return r;
+  };
+  const Eigen::MatrixXd r_free = rigid(false), r_full = rigid(true);
+  EXPECT_LT((model.T * r_free - r_full).cwiseAbs().maxCoeff(), 1e-14);
+  const Eigen::MatrixXd k(model.K);
+  EXPECT_LT((k * r_free).norm(), 1e-12 * k.norm() * r_free.norm());
+  const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(k).eigenvalues();
+  for (int i = 0; i < 6; ++i) EXPECT_LT(std::abs(ev(i)), 1e-11 * ev.maxCoeff()) << "eigenvalue " << i;
+  EXPECT_GT(ev(6), 1e-9 * ev.maxCoeff());
+
+  // mass and centre: bars (mass at their middle), tetrahedron (centroid), point mass
+  const double rho_a = 7850.0 * mesh.beam_sections[bar].A;
+  const double l1 = (x[1] - x[0]).norm(), l2 = (x[3] - x[2]).norm();
+  const double v_tet = (x[5] - x[4]).cross(x[6] - x[4]).dot(x[7] - x[4]) / 6.0;
+  ASSERT_GT(v_tet, 0.0);
+  const double m = rho_a * (l1 + l2) + 7850.0 * v_tet + 3.0;
+  const Vec3 center = (rho_a * l1 * 0.5 * (x[0] + x[1]) + rho_a * l2 * 0.5 * (x[2] + x[3]) +
+                       7850.0 * v_tet * 0.25 * (x[4] + x[5] + x[6] + x[7]) +
+                       3.0 * (x[0] + Vec3(0.05, -0.1, 0.02))) /
+                      m;
+  ExpectMassAndCenter(mesh, m, center);
+}
+
 // mass and centre of beams with point masses, consistent and lumped
 TEST(Assembly, MassPropertiesOfBeamsExact) {
   Mesh mesh;
@@ -235,13 +299,7 @@ TEST(Assembly, MassPropertiesOfBeamsExact) {
   const double m = rho_a * (2.0 + 1.5 + 1.0) + 10.0;
   const Vec3 center =
       (rho_a * (2.0 * (x0 + x1) / 2 + 1.5 * (x1 + x2) / 2 + 1.0 * (x2 + x3) / 2) + 10.0 * (x3 + Vec3(0, 0, 0.5))) / m;
-  for (MassForm form : {MassForm::kConsistent, MassForm::kLumped}) {
-    AssemblyOptions options;
-    options.mass_form = form;
-    const MassProperties p = ComputeMassProperties(mesh, Assemble(mesh, options));
-    EXPECT_NEAR(p.mass, m, 1e-13 * m);
-    EXPECT_LT((p.center - center).norm(), 1e-13);
-  }
+  ExpectMassAndCenter(mesh, m, center);
   AddConstraint(mesh, 0, 0b111111);
   EXPECT_THROW(ComputeMassProperties(mesh, Assemble(mesh)), InputError);
 }

@@ -1,12 +1,115 @@
 #pragma once
 /// \file fe_test_models.h
-/// Small meshes built in code for the FE assembly and modal tests.
+/// Helpers shared by the FE tests (unit and validation): small meshes built
+/// in code, rigid-body modes and their checks, a dense solve with prescribed
+/// DOF, and the check of an InputError's message.
 
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <cstdlib>
+#include <initializer_list>
 #include <string>
+#include <vector>
 
+#include "flexmb/common/error.h"
+#include "flexmb/fe/element_matrices.h"
 #include "flexmb/fe/mesh.h"
 
 namespace flexmb::fe::testing {
+
+/// Cross-product matrix: Skew(v) w = v x w.
+inline Mat3 Skew(const Vec3& v) {
+  Mat3 s;
+  s << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+  return s;
+}
+
+/// A pseudo-random proper rotation, reproducible from its seed.
+inline Mat3 RandomRotation(unsigned seed) {
+  std::srand(seed);
+  return Eigen::Quaterniond(Eigen::Vector4d::Random().normalized()).toRotationMatrix();
+}
+
+/// The six rigid-body modes of nodes at x with 3 (ux uy uz) or 6 (ux uy uz
+/// rx ry rz) DOF per node, node by node: columns are the translations along
+/// x, y, z and the rotations about the origin's x, y, z axes.
+inline MatX RigidModes(const std::vector<Vec3>& x, int dofs_per_node) {
+  const int n = static_cast<int>(x.size());
+  MatX r = MatX::Zero(dofs_per_node * n, 6);
+  for (int i = 0; i < n; ++i) {
+    r.block<3, 3>(dofs_per_node * i, 0).setIdentity();
+    r.block<3, 3>(dofs_per_node * i, 3) = -Skew(x[i]);
+    if (dofs_per_node == 6) r.block<3, 3>(6 * i + 3, 3).setIdentity();
+  }
+  return r;
+}
+
+/// Checks an element or model stiffness K with nodes at x: symmetric, the
+/// six rigid-body modes store no energy (R^T K R = 0 to round-off), exactly
+/// six eigenvalues at round-off level and the others above `positive` times
+/// the largest (no spurious zero-energy mode).
+inline void ExpectSixRigidModes(const MatX& K, const std::vector<Vec3>& x, int dofs_per_node,
+                                double positive = 1e-9) {
+  EXPECT_LT((K - K.transpose()).norm(), 1e-13 * K.norm());
+  const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<MatX>(K).eigenvalues();
+  const double top = ev.cwiseAbs().maxCoeff();
+  for (int i = 0; i < 6; ++i) EXPECT_LT(std::abs(ev(i)), 1e-11 * top) << "eigenvalue " << i;
+  for (int i = 6; i < ev.size(); ++i) EXPECT_GT(ev(i), positive * top) << "eigenvalue " << i;
+  const MatX r = RigidModes(x, dofs_per_node);
+  EXPECT_LT((r.transpose() * K * r).norm(), 1e-11 * top);
+}
+
+/// Solves K u = 0 for the DOF not marked `fixed`, the fixed ones taking their
+/// values from `u_fixed`; returns the whole u.
+inline Eigen::VectorXd SolvePrescribed(const MatX& k, const std::vector<bool>& fixed,
+                                       const Eigen::VectorXd& u_fixed) {
+  const int n = static_cast<int>(k.rows());
+  std::vector<int> f, p;
+  for (int i = 0; i < n; ++i) (fixed[i] ? p : f).push_back(i);
+  MatX kff(f.size(), f.size()), kfp(f.size(), p.size());
+  for (size_t a = 0; a < f.size(); ++a) {
+    for (size_t b = 0; b < f.size(); ++b) kff(a, b) = k(f[a], f[b]);
+    for (size_t b = 0; b < p.size(); ++b) kfp(a, b) = k(f[a], p[b]);
+  }
+  Eigen::VectorXd up(p.size());
+  for (size_t b = 0; b < p.size(); ++b) up(b) = u_fixed(p[b]);
+  const Eigen::VectorXd uf = kff.ldlt().solve(-kfp * up);
+  Eigen::VectorXd u = u_fixed;
+  for (size_t a = 0; a < f.size(); ++a) u(f[a]) = uf(a);
+  return u;
+}
+
+/// Dense assembly of the stiffness of `elements` (lists of node indices)
+/// on n_nodes nodes with dofs_per_node DOF each; `stiffness(conn)` returns
+/// the element matrix of the element on the nodes conn, node by node.
+template <class F>
+MatX DenseStiffness(int n_nodes, int dofs_per_node, const std::vector<std::vector<int>>& elements,
+                    F&& stiffness) {
+  const int d = dofs_per_node;
+  MatX k = MatX::Zero(d * n_nodes, d * n_nodes);
+  for (const std::vector<int>& conn : elements) {
+    const MatX ke = stiffness(conn);
+    for (size_t a = 0; a < conn.size(); ++a)
+      for (size_t b = 0; b < conn.size(); ++b)
+        k.block(d * conn[a], d * conn[b], d, d) += ke.block(d * a, d * b, d, d);
+  }
+  return k;
+}
+
+/// Runs `f` and expects an InputError whose message contains every one of
+/// `parts` (file:line, entity, the complaint).
+template <class F>
+void ExpectInputErrorWith(F&& f, std::initializer_list<std::string> parts) {
+  try {
+    f();
+    ADD_FAILURE() << "no InputError; expected one mentioning " << *parts.begin();
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    for (const std::string& part : parts) EXPECT_NE(msg.find(part), std::string::npos) << msg;
+  }
+}
 
 /// Adds a node with id = index + 1 and returns its index.
 inline int AddNode(Mesh& mesh, const Vec3& x) {
@@ -43,17 +146,24 @@ inline int AddRoundBar(Mesh& mesh, int material, double r) {
   return static_cast<int>(mesh.beam_sections.size()) - 1;
 }
 
-/// Adds a 2-node beam between node indices a and b.
-inline int AddBeam(Mesh& mesh, int section, int a, int b, const Vec3& orientation) {
+/// Adds an element of any type on the node indices `nodes` with the section
+/// `property` of its family; id = position + 1, origin test.bdf:1000 + id.
+inline int AddElement(Mesh& mesh, ElementType type, int property, std::vector<int> nodes) {
   Element e;
   e.id = static_cast<int>(mesh.elements.size()) + 1;
-  e.type = ElementType::kBeam2;
-  e.property = section;
-  e.nodes = {a, b};
-  e.orientation = orientation;
+  e.type = type;
+  e.property = property;
+  e.nodes = std::move(nodes);
   e.origin = {"test.bdf", 1000 + e.id};
   mesh.elements.push_back(e);
   return static_cast<int>(mesh.elements.size()) - 1;
+}
+
+/// Adds a 2-node beam between node indices a and b.
+inline int AddBeam(Mesh& mesh, int section, int a, int b, const Vec3& orientation) {
+  const int e = AddElement(mesh, ElementType::kBeam2, section, {a, b});
+  mesh.elements[e].orientation = orientation;
+  return e;
 }
 
 /// Adds a point mass without inertia at node index n.

@@ -6,22 +6,17 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
-#include <Eigen/Geometry>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "flexmb/common/error.h"
 #include "flexmb/fe/element_matrices.h"
 #include "flexmb/fe/elements/shell_quad4.h"
 #include "flexmb/fe/elements/shell_tria3.h"
+#include "tests/unit/fe/fe_test_models.h"
 
 namespace flexmb::fe::testing {
-
-inline Eigen::Matrix3d Skew(const Vec3& v) {
-  Eigen::Matrix3d s;
-  s << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
-  return s;
-}
 
 // A shell element with its section and material (owned here).
 struct ShellFixture {
@@ -65,19 +60,6 @@ struct ShellFixture {
   }
 };
 
-// 6 rigid-body modes (columns: translations x y z, rotations about the
-// origin x y z) for nodes at x.
-inline MatX RigidModes(const std::vector<Vec3>& x) {
-  const int n = static_cast<int>(x.size());
-  MatX r = MatX::Zero(6 * n, 6);
-  for (int i = 0; i < n; ++i) {
-    r.block<3, 3>(6 * i, 0).setIdentity();
-    r.block<3, 3>(6 * i, 3) = -Skew(x[i]);
-    r.block<3, 3>(6 * i + 3, 3).setIdentity();
-  }
-  return r;
-}
-
 // Rigid-body mass matrix [[m I, -skew(S)], [skew(S), J_O]] of a flat plate
 // (polygon `poly` in local plane coordinates, fan-triangulated from vertex 0),
 // placed at p = c0 + R (x, y, z), occupying z in [zc - t/2, zc + t/2], with
@@ -118,11 +100,97 @@ inline Eigen::Matrix<double, 6, 6> PlateRigidMass(const std::vector<Eigen::Vecto
   return out;
 }
 
-// A random proper rotation and translation.
-inline Eigen::Matrix3d RandomRotation(unsigned seed) {
-  std::srand(seed);
-  const Eigen::Quaterniond q(Eigen::Vector4d::Random().normalized());
-  return q.toRotationMatrix();
+// Polygon p (local plane coordinates) placed at c0 + R (x, y, h), h the
+// optional heights off the plane (warping).
+inline std::vector<Vec3> Place(const std::vector<Eigen::Vector2d>& p, const Eigen::Matrix3d& R,
+                               const Vec3& c0, const std::vector<double>& h = {}) {
+  std::vector<Vec3> x;
+  for (size_t i = 0; i < p.size(); ++i)
+    x.push_back(c0 + R * Vec3(p[i].x(), p[i].y(), h.empty() ? 0.0 : h[i]));
+  return x;
+}
+
+// Area of a polygon given in plane coordinates [m^2].
+inline double PolygonArea(const std::vector<Eigen::Vector2d>& poly) {
+  double a = 0.0;
+  for (size_t k = 0; k < poly.size(); ++k) {
+    const Eigen::Vector2d &p = poly[k], &q = poly[(k + 1) % poly.size()];
+    a += 0.5 * (p.x() * q.y() - p.y() * q.x());
+  }
+  return a;
+}
+
+// The element on nodes x (any rotation, offset, warping): zero strain energy
+// in the six rigid motions, exactly six zero eigenvalues, positive definite
+// consistent mass.
+inline void ExpectRigidBodyModes(const ShellFixture& f) {
+  MatX K, M;
+  f.Compute(K, M);
+  const MatX r = RigidModes(f.x, 6);
+  EXPECT_LT((K * r).norm(), 1e-12 * K.norm() * r.norm());
+  ExpectSixRigidModes(K, f.x, 6);
+  EXPECT_LT((M - M.transpose()).norm(), 1e-14 * M.norm());
+  EXPECT_GT(Eigen::SelfAdjointEigenSolver<MatX>(M).eigenvalues().minCoeff(), 0.0);
+}
+
+// Consistent mass of the plate `poly` (rotated by R to c0, thickness t,
+// offset along the normal): R^T M R equals the rigid-body mass matrix of the
+// plate, with its non-structural mass and rotary inertia, exactly.
+inline void ExpectExactRigidBodyMass(ElementType type, const std::vector<Eigen::Vector2d>& poly,
+                                     const Eigen::Matrix3d& R, const Vec3& c0, double offset) {
+  const double t = 0.08, rho = 2700.0, nsm = 3.5;
+  ShellFixture f(type, Place(poly, R, c0), t, 7e10, 0.33, rho, nsm);
+  f.element.shell_offset = offset;
+  MatX K, M;
+  f.Compute(K, M);
+  const MatX r = RigidModes(f.x, 6);
+  const Eigen::Matrix<double, 6, 6> expected = PlateRigidMass(poly, R, c0, t, offset, rho, nsm);
+  const MatX got = r.transpose() * M * r;
+  EXPECT_LT((got - expected).norm(), 1e-12 * expected.norm()) << got << "\n\n" << expected;
+}
+
+// Lumped mass of a flat element without offset: diagonal and positive,
+// exact total mass and first moment (the top rows of the rigid-body mass),
+// rotary inertia rho t^3 / 12 per area on every rotation.
+inline void ExpectLumpedMass(ElementType type, const std::vector<Eigen::Vector2d>& poly,
+                             const Eigen::Matrix3d& R, const Vec3& c0) {
+  const double t = 0.08, rho = 2700.0, nsm = 3.5;
+  ShellFixture f(type, Place(poly, R, c0), t, 7e10, 0.33, rho, nsm);
+  MatX K, M;
+  f.Compute(K, M, MassForm::kLumped);
+  EXPECT_LT((M - MatX(M.diagonal().asDiagonal())).norm(), 1e-12 * M.norm());
+  EXPECT_GT(M.diagonal().minCoeff(), 0.0);
+  const MatX r = RigidModes(f.x, 6);
+  const Eigen::Matrix<double, 6, 6> expected = PlateRigidMass(poly, R, c0, t, 0.0, rho, nsm);
+  EXPECT_LT(((r.transpose() * M * r).topRows(3) - expected.topRows(3)).norm(),
+            1e-12 * expected.norm());
+  for (int a = 3; a < 6; ++a) {
+    double rot = 0.0;
+    for (size_t i = 0; i < poly.size(); ++i) rot += M(6 * i + a, 6 * i + a);
+    EXPECT_NEAR(rot, rho * t * t * t / 12.0 * PolygonArea(poly), 1e-12 * rot);
+  }
+}
+
+// Renumbering the nodes cyclically by `shift` only permutes K and M.
+inline void ExpectInvariantToCyclicNodeOrder(ElementType type, const std::vector<Vec3>& x,
+                                             int shift) {
+  const int n = static_cast<int>(x.size());
+  ShellFixture f(type, x, 0.03);
+  MatX K, M;
+  f.Compute(K, M);
+  std::vector<Vec3> y;
+  for (int i = 0; i < n; ++i) y.push_back(x[(i + shift) % n]);
+  ShellFixture g(type, y, 0.03);
+  MatX K2, M2;
+  g.Compute(K2, M2);
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) {
+      const int pa = (a + n - shift) % n, pb = (b + n - shift) % n;
+      EXPECT_LT((K.block<6, 6>(6 * a, 6 * b) - K2.block<6, 6>(6 * pa, 6 * pb)).norm(),
+                1e-10 * K.norm());
+      EXPECT_LT((M.block<6, 6>(6 * a, 6 * b) - M2.block<6, 6>(6 * pa, 6 * pb)).norm(),
+                1e-12 * M.norm());
+    }
 }
 
 // Dense assembly of shell elements (6 dof per node) given connectivity.
@@ -132,40 +200,16 @@ struct DensePatch {
   double t = 0.1, E = 1.0e6, nu = 0.25;
 
   MatX Stiffness() const {
-    const int n = 6 * static_cast<int>(x.size());
-    MatX k = MatX::Zero(n, n);
-    for (const auto& conn : elements) {
+    return DenseStiffness(static_cast<int>(x.size()), 6, elements, [&](const std::vector<int>& conn) {
       std::vector<Vec3> xe;
       for (int i : conn) xe.push_back(x[i]);
       ShellFixture f(conn.size() == 4 ? ElementType::kQuad4 : ElementType::kTria3, xe, t, E, nu);
       MatX ke, me;
       f.Compute(ke, me);
-      for (size_t a = 0; a < conn.size(); ++a)
-        for (size_t b = 0; b < conn.size(); ++b)
-          k.block<6, 6>(6 * conn[a], 6 * conn[b]) += ke.block<6, 6>(6 * a, 6 * b);
-    }
-    return k;
+      return ke;
+    });
   }
 };
-
-// Solves K u = 0 for the free dof given prescribed values on the others.
-inline Eigen::VectorXd SolvePrescribed(const MatX& k, const std::vector<bool>& fixed,
-                                       const Eigen::VectorXd& u_fixed) {
-  const int n = static_cast<int>(k.rows());
-  std::vector<int> f, p;
-  for (int i = 0; i < n; ++i) (fixed[i] ? p : f).push_back(i);
-  MatX kff(f.size(), f.size()), kfp(f.size(), p.size());
-  for (size_t a = 0; a < f.size(); ++a) {
-    for (size_t b = 0; b < f.size(); ++b) kff(a, b) = k(f[a], f[b]);
-    for (size_t b = 0; b < p.size(); ++b) kfp(a, b) = k(f[a], p[b]);
-  }
-  Eigen::VectorXd up(p.size());
-  for (size_t b = 0; b < p.size(); ++b) up(b) = u_fixed(p[b]);
-  const Eigen::VectorXd uf = kff.ldlt().solve(-kfp * up);
-  Eigen::VectorXd u = u_fixed;
-  for (size_t a = 0; a < f.size(); ++a) u(f[a]) = uf(a);
-  return u;
-}
 
 // MacNeal & Harder (1985) patch: rectangle 0.24 x 0.12, four interior nodes.
 struct Patch {
@@ -287,26 +331,26 @@ inline void BendingPatch(const std::vector<std::vector<int>>& elements) {
   }
 }
 
-// eigenvalues of K: exactly six (numerically) zero, the rest clearly positive
-inline void ExpectSixRigidModes(const MatX& K) {
-  ASSERT_LT((K - K.transpose()).norm(), 1e-13 * K.norm());
-  const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<MatX>(K).eigenvalues();
-  const double top = ev.maxCoeff();
-  for (int k = 0; k < 6; ++k) EXPECT_LT(std::abs(ev(k)), 1e-11 * top) << "eigenvalue " << k;
-  EXPECT_GT(ev(6), 1e-9 * top);
-}
-
+// an InputError naming the fixture's element (plate.bdf:12, shell 7) and `what`
 inline void ExpectInputError(const ShellFixture& f, const std::string& what) {
   MatX K, M;
-  try {
-    f.Compute(K, M);
-    ADD_FAILURE() << "no InputError for " << what;
-  } catch (const InputError& e) {
-    const std::string msg = e.what();
-    EXPECT_NE(msg.find("plate.bdf:12"), std::string::npos) << msg;
-    EXPECT_NE(msg.find("shell 7"), std::string::npos) << msg;
-    EXPECT_NE(msg.find(what), std::string::npos) << msg;
-  }
+  ExpectInputErrorWith([&] { f.Compute(K, M); }, {"plate.bdf:12", "shell 7", what});
+}
+
+// a missing material is named with the element: "plate.bdf:12: <type> 7: missing material"
+inline void ExpectMissingMaterialError(const ShellFixture& f) {
+  ElementInput in = f.Input();
+  in.material = nullptr;
+  MatX K, M;
+  ExpectInputErrorWith(
+      [&] {
+        if (f.element.type == ElementType::kQuad4)
+          ShellQuad4Matrices(in, K, M);
+        else
+          ShellTria3Matrices(in, K, M);
+      },
+                       {"plate.bdf:12: " + std::string(TypeName(f.element.type)) +
+                        " 7: missing material"});
 }
 
 }  // namespace flexmb::fe::testing
