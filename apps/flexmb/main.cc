@@ -1,7 +1,8 @@
 /// \file main.cc
 /// The flexmb command line: "run" and "check" over the library's RunModel and
 /// CheckModel (flexmb/io/run.h), the "fe" group ("fe modes", "fe info",
-/// "fe export") over flexmb/io/fe_commands.h.
+/// "fe export") over flexmb/io/fe_commands.h, and "reduce" and "body info"
+/// over flexmb/io/reduce_commands.h.
 
 #include <unistd.h>
 
@@ -14,6 +15,7 @@
 
 #include "flexmb/common/error.h"
 #include "flexmb/io/fe_commands.h"
+#include "flexmb/io/reduce_commands.h"
 #include "flexmb/io/run.h"
 
 namespace {
@@ -112,6 +114,29 @@ int main(int argc, char** argv) {
   fe_export->add_option("--hb", export_opt.hb_dir, "directory to write the exchange set to")->required();
   fe_export->add_option("--fix", export_opt.fix, "nodes to clamp: comma-separated node ids or a node set name");
 
+  flexmb::io::ReduceOptions reduce_opt;
+  CLI::App* reduce = app.add_subcommand("reduce", "Craig-Bampton reduction of an FE model to a flexible body file");
+  reduce->add_option("model", reduce_opt.model_path, "mesh file, FE model file (.yaml) or exchange-set directory")
+      ->required();
+  reduce->add_option("--interface", reduce_opt.interface, "interface nodes: comma-separated node ids or a node set")
+      ->required();
+  reduce->add_option("--modes", reduce_opt.modes, "fixed-interface normal modes (0 = Guyan)");
+  reduce->add_option("--cutoff", reduce_opt.cutoff_hz, "all fixed-interface modes below this frequency [Hz]");
+  reduce->add_option("--keep", reduce_opt.keep, "keep the lowest N flexible modes (default: all)");
+  reduce->add_option("--fix", reduce_opt.fix, "nodes to clamp: comma-separated node ids or a node set name");
+  auto* rayleigh = reduce->add_option("--rayleigh", reduce_opt.rayleigh, "Rayleigh damping ALPHA,BETA");
+  reduce->add_option("--damping-ratio", reduce_opt.damping_ratio, "modal damping ratio Z (or Z1,Z2,...)")
+      ->excludes(rayleigh);
+  reduce->add_option("--output,-o", reduce_opt.output, "body file to write (.h5)")->required();
+  reduce->add_flag("--json", reduce_opt.json, "print one JSON object instead of text");
+
+  CLI::App* body = app.add_subcommand("body", "flexible body files: info");
+  body->require_subcommand(1);
+  flexmb::io::BodyInfoOptions body_info_opt;
+  CLI::App* body_info = body->add_subcommand("info", "counts, mass, frequencies and provenance of a body file");
+  body_info->add_option("file", body_info_opt.body_path, "body file (.h5)")->required();
+  body_info->add_flag("--json", body_info_opt.json, "print one JSON object instead of text");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -126,6 +151,8 @@ int main(int argc, char** argv) {
   if (modes->parsed()) return Guarded([&] { return flexmb::io::FeModes(modes_opt, std::cout); });
   if (info->parsed()) return Guarded([&] { return flexmb::io::FeInfo(info_opt, std::cout); });
   if (fe_export->parsed()) return Guarded([&] { return flexmb::io::FeExport(export_opt, std::cout); });
+  if (reduce->parsed()) return Guarded([&] { return flexmb::io::Reduce(reduce_opt, std::cout); });
+  if (body_info->parsed()) return Guarded([&] { return flexmb::io::BodyInfo(body_info_opt, std::cout); });
   return Guarded([&] {
     flexmb::CheckModel(model, stdout);
     return 0;

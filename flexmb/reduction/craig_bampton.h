@@ -1,0 +1,52 @@
+#pragma once
+/// \file craig_bampton.h
+/// Craig-Bampton reduction of a linear FE model (THEORY section 2): static
+/// modes of the interface DOF by one sparse Cholesky factorization of K_ii
+/// (CHOLMOD), fixed-interface normal modes by shift-invert Lanczos on the
+/// same factor (block Lanczos, fe/block_lanczos.h; Spectra as fallback),
+/// orthonormalization by the reduced eigenproblem, removal of
+/// the rigid-body modes of a free body (detected against the geometric
+/// rigid-body vectors), optional truncation.
+
+#include <string>
+#include <vector>
+
+#include "flexmb/fe/fe_model.h"
+#include "flexmb/reduction/reduced_body.h"
+
+namespace flexmb::reduction {
+
+/// Options of the reduction.
+struct ReductionOptions {
+  /// Node indices; every free DOF their motion depends on is a boundary DOF
+  /// (a node's own DOF; for a node made dependent by a rigid link, the
+  /// independent node's DOF it follows). Listed twice counts once.
+  std::vector<int> interface_nodes;
+  int normal_modes = 10;              ///< fixed-interface normal modes (0 = Guyan)
+  double cutoff_hz = 0.0;             ///< if > 0: all fixed-interface modes below it instead
+  int keep = -1;                      ///< keep the lowest N flexible modes (-1 = all)
+  std::vector<int> fixed_nodes;       ///< nodes clamped in the body (single-point constraints)
+  fe::MassForm mass_form = fe::MassForm::kConsistent;
+  /// Damping: Rayleigh D = alpha M + beta K (reduced), or per-mode ratios
+  /// zeta (the last value repeats for higher modes); ratios win if given.
+  double rayleigh_alpha = 0.0, rayleigh_beta = 0.0;
+  std::vector<double> damping_ratios;
+};
+
+/// Wall time of each step [s]. The static and the normal modes are computed
+/// side by side on two threads when the machine has two cores or more, so
+/// their sum may exceed the time they took together.
+struct ReductionTimings {
+  double assemble = 0, factorize = 0, static_modes = 0, normal_modes = 0, orthonormalize = 0,
+         invariants = 0, stress_modes = 0;
+};
+
+/// Reduces `model` and fills a ReducedBody (modes, frequencies, reduced
+/// matrices, invariants, stress modes, provenance). Throws InputError for
+/// bad options (interface node missing, more modes than interior DOF) and
+/// NumericalError naming the DOF where K_ii is singular (a mechanism inside
+/// the body).
+ReducedBody ReduceCraigBampton(const fe::FeModel& model, const ReductionOptions& options,
+                               ReductionTimings* timings = nullptr);
+
+}  // namespace flexmb::reduction

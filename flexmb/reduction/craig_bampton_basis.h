@@ -1,0 +1,65 @@
+#pragma once
+/// \file craig_bampton_basis.h
+/// Steps 1 to 4 of the Craig-Bampton reduction (THEORY section 2) on an
+/// assembled model: boundary/interior split, one sparse Cholesky
+/// factorization of K_ii, static modes for all boundary DOF in one
+/// multi-right-hand-side solve, fixed-interface normal modes by block
+/// shift-invert Lanczos on the same factor (shift 0: K_ii is positive
+/// definite whenever the static modes exist, and one factor then serves
+/// both), and the reduced matrices M_CB = H^T M H,
+/// K_CB = H^T K H. ReduceCraigBampton (craig_bampton.h) builds on it; tests
+/// use it to look at the basis before orthonormalization.
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "flexmb/fe/assembly.h"
+#include "flexmb/fe/mesh.h"
+#include "flexmb/reduction/craig_bampton.h"
+
+namespace flexmb::reduction {
+
+/// The Craig-Bampton basis H = [[I, 0], [Psi, Phi]] (rows: boundary, then
+/// interior DOF; columns: the reduced coordinates q = (u_b, eta), boundary
+/// displacements first, then the modal amplitudes of the normal modes).
+struct CraigBamptonBasis {
+  std::vector<int> boundary;     ///< free DOF of the boundary, ascending: coordinate k of q is u at boundary[k]
+  std::vector<int> interior;     ///< free DOF of the interior, ascending
+  /// n_i x n_b static (constraint) modes, -K_ii^{-1} K_ib. For a free body
+  /// (K r = 0 for the six geometric rigid-body vectors r) the solve's
+  /// round-off along the rigid directions is removed, Psi r_b = r_i exactly.
+  Eigen::MatrixXd psi;
+  Eigen::MatrixXd phi;           ///< n_i x n_f fixed-interface normal modes, Phi^T M_ii Phi = I
+  Eigen::VectorXd fixed_interface_hz;  ///< their frequencies [Hz], ascending
+  Eigen::MatrixXd mass;          ///< M_CB = H^T M H, m x m, m = n_b + n_f
+  /// K_CB = H^T K H, m x m, the literal product (not the Guyan form
+  /// K_bb + K_bi Psi): the reduced body is then exactly the Galerkin
+  /// projection of the FE model on the basis as computed, so its
+  /// eigenvalues are Rayleigh quotients of the delivered modes.
+  Eigen::MatrixXd stiffness;
+  /// Median over the free DOF of K_kk / M_kk [rad^2/s^2 in SI]: the scale of
+  /// the FE model's eigenvalues, for relative tests.
+  double stiffness_scale = 0.0;
+
+  int static_modes() const { return static_cast<int>(boundary.size()); }
+  int normal_modes() const { return static_cast<int>(phi.cols()); }
+  int size() const { return static_modes() + normal_modes(); }
+  /// H q for a block of reduced coordinates (m x k): n_free x k, free numbering.
+  Eigen::MatrixXd Expand(const Eigen::MatrixXd& q) const;
+};
+
+/// Builds the basis for `model` assembled from `mesh` (node ids and
+/// positions; the mesh's node list must match the DOF map). Uses
+/// options.interface_nodes, normal_modes and cutoff_hz; fills the factorize,
+/// static_modes, normal_modes and orthonormalize (reduced matrices) timings.
+/// The boundary DOF are every free DOF the interface nodes' motion depends
+/// on: a node's own free DOF and, for a node made dependent by a rigid link,
+/// the independent node's DOF it follows (so a dependent node can be an
+/// interface node, and its motion stays exact). Throws InputError for an
+/// interface node that does not exist or has no DOF, or more normal modes
+/// than the interior has; NumericalError naming the node and component where
+/// K_ii is singular (a mechanism with the interface held).
+CraigBamptonBasis BuildCraigBamptonBasis(const fe::Mesh& mesh, const fe::AssembledModel& model,
+                                         const ReductionOptions& options, ReductionTimings* timings = nullptr);
+
+}  // namespace flexmb::reduction

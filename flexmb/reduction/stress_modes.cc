@@ -1,0 +1,185 @@
+#include "flexmb/reduction/stress_modes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "flexmb/common/error.h"
+#include "flexmb/fe/element_matrices.h"
+#include "flexmb/fe/elements/beam2.h"
+#include "flexmb/fe/elements/element_common.h"
+#include "flexmb/fe/elements/shell_quad4.h"
+#include "flexmb/fe/elements/shell_tria3.h"
+#include "flexmb/fe/elements/solid_hex8.h"
+#include "flexmb/fe/elements/solid_tet10.h"
+#include "flexmb/fe/elements/solid_tet4.h"
+#include "flexmb/reduction/parallel_rows.h"
+
+namespace flexmb::reduction {
+namespace {
+
+enum Family { kShell = 0, kBeam = 1, kSolid = 2 };
+
+Family FamilyOf(fe::ElementType type) {
+  switch (type) {
+    case fe::ElementType::kQuad4:
+    case fe::ElementType::kTria3: return kShell;
+    case fe::ElementType::kBeam2: return kBeam;
+    default: return kSolid;
+  }
+}
+
+// the element's nodes, section and material, checked
+fe::ElementInput Resolve(const fe::Mesh& mesh, const fe::Element& e, std::vector<Vec3>& x) {
+  const ErrorContext ctx = fe::ElementContext(e);
+  if (static_cast<int>(e.nodes.size()) != fe::NodeCount(e.type))
+    throw InputError("has " + std::to_string(e.nodes.size()) + " nodes, expected " +
+                         std::to_string(fe::NodeCount(e.type)),
+                     ctx);
+  x.clear();
+  for (int node : e.nodes) {
+    if (node < 0 || node >= static_cast<int>(mesh.nodes.size()))
+      throw InputError("refers to a node that does not exist (index " + std::to_string(node) + ")",
+                       ctx);
+    x.push_back(mesh.nodes[node].x);
+  }
+  fe::ElementInput in;
+  in.element = &e;
+  in.x = x.data();
+  auto section = [&](const auto& list, const char* family) {
+    if (e.property < 0 || e.property >= static_cast<int>(list.size()))
+      throw InputError(std::string("has no ") + family + " section", ctx);
+    return &list[e.property];
+  };
+  int material = -1;
+  switch (FamilyOf(e.type)) {
+    case kShell:
+      in.shell = section(mesh.shell_sections, "shell");
+      material = in.shell->material;
+      break;
+    case kBeam:
+      in.beam = section(mesh.beam_sections, "beam");
+      material = in.beam->material;
+      break;
+    case kSolid: material = section(mesh.solid_sections, "solid")->material; break;
+  }
+  if (material < 0 || material >= static_cast<int>(mesh.materials.size()))
+    throw InputError("its section has no material", ctx);
+  in.material = &mesh.materials[material];
+  return in;
+}
+
+// recovery matrix (element dof -> the table's values of one element) and frame
+void Recovery(const fe::ElementInput& in, MatX& S, Mat3& axes) {
+  axes.setIdentity();
+  switch (in.element->type) {
+    case fe::ElementType::kQuad4: fe::ShellQuad4Stress(in, S, axes); break;
+    case fe::ElementType::kTria3: fe::ShellTria3Stress(in, S, axes); break;
+    case fe::ElementType::kBeam2: fe::Beam2SectionForces(in, S, axes); break;
+    case fe::ElementType::kTet4: fe::SolidTet4Stress(in, S); break;
+    case fe::ElementType::kTet10: fe::SolidTet10Stress(in, S); break;
+    case fe::ElementType::kHex8: fe::SolidHex8Stress(in, S); break;
+  }
+}
+
+StressTable MakeTable(const char* name, std::vector<std::string> components,
+                      std::vector<std::string> locations) {
+  StressTable t;
+  t.name = name;
+  t.components = std::move(components);
+  t.locations = std::move(locations);
+  return t;
+}
+
+}  // namespace
+
+StressModes ComputeStressModes(const fe::Mesh& mesh, const MatX& modes) {
+  const Eigen::Index nn = static_cast<Eigen::Index>(mesh.nodes.size());
+  if (modes.rows() != 6 * nn)
+    throw InputError("stress modes: the mode matrix has " + std::to_string(modes.rows()) +
+                     " rows, expected 6 per node = " + std::to_string(6 * nn));
+  const Eigen::Index n = modes.cols();
+  StressModes out;
+  out.shell = MakeTable("shell", {"sxx", "syy", "sxy"}, {"bottom", "top"});
+  out.beam = MakeTable("beam", {"N", "Vy", "Vz", "T", "My", "Mz"}, {"end_a", "end_b"});
+  out.solid = MakeTable("solid", {"sxx", "syy", "szz", "sxy", "syz", "szx"}, {"centroid"});
+  StressTable* tables[3] = {&out.shell, &out.beam, &out.solid};
+
+  // each element's table and position in it
+  const int ne = static_cast<int>(mesh.elements.size());
+  std::vector<int> position(ne);
+  for (int e = 0; e < ne; ++e) {
+    StressTable& t = *tables[FamilyOf(mesh.elements[e].type)];
+    position[e] = static_cast<int>(t.elements.size());
+    t.elements.push_back(e);
+  }
+  for (StressTable* t : tables) {
+    const int count = static_cast<int>(t->elements.size());
+    t->axes.assign(count, Mat3::Identity());
+    t->modes.resize(t->Row(count, 0, 0), n);
+  }
+
+  // per element: one product of its recovery matrix with its rows of the modes
+  ParallelRows(ne, ParallelRanges(ne, 512), [&](int, Eigen::Index begin, Eigen::Index end) {
+    std::vector<Vec3> x;
+    MatX S, ue;
+    Mat3 axes;
+    for (Eigen::Index e = begin; e < end; ++e) {
+      const fe::Element& el = mesh.elements[e];
+      const fe::ElementInput in = Resolve(mesh, el, x);
+      Recovery(in, S, axes);
+      StressTable& t = *tables[FamilyOf(el.type)];
+      const int k = position[e];
+      t.axes[k] = axes;
+      if (n == 0) continue;  // no modes: blocks of empty matrices are UB in Eigen
+      const int dpn = fe::DofsPerNode(el.type);
+      const int nodes = static_cast<int>(el.nodes.size());
+      ue.resize(dpn * nodes, n);
+      for (int i = 0; i < nodes; ++i)
+        ue.middleRows(dpn * i, dpn) = modes.middleRows(6 * static_cast<Eigen::Index>(el.nodes[i]), dpn);
+      t.modes.middleRows(t.Row(k, 0, 0), S.rows()).noalias() = S * ue;
+    }
+  });
+  return out;
+}
+
+double VonMises(const Eigen::Vector3d& s) {
+  return std::sqrt(std::max(0.0, s(0) * s(0) - s(0) * s(1) + s(1) * s(1) + 3.0 * s(2) * s(2)));
+}
+
+double VonMises(const Eigen::Matrix<double, 6, 1>& s) {
+  const double a = s(0) - s(1), b = s(1) - s(2), c = s(2) - s(0);
+  return std::sqrt(0.5 * (a * a + b * b + c * c) +
+                   3.0 * (s(3) * s(3) + s(4) * s(4) + s(5) * s(5)));
+}
+
+VecX PointVonMises(const StressTable& table, const VecX& v) {
+  const int c = table.Components();
+  if ((c != 3 && c != 6) || table.components.front() != "sxx")
+    throw InputError("von Mises: the " + table.name +
+                     " table does not hold stress vectors (sxx syy sxy or sxx ... szx)");
+  const Eigen::Index points = static_cast<Eigen::Index>(table.elements.size()) * table.Locations();
+  if (v.size() != points * c)
+    throw InputError("von Mises: " + std::to_string(v.size()) + " values for the " + table.name +
+                     " table, expected " + std::to_string(points * c));
+  VecX out(points);
+  for (Eigen::Index p = 0; p < points; ++p)
+    out(p) = c == 3 ? VonMises(Eigen::Vector3d(v.segment<3>(3 * p)))
+                    : VonMises(Eigen::Matrix<double, 6, 1>(v.segment<6>(6 * p)));
+  return out;
+}
+
+double BeamNormalStress(const Eigen::Matrix<double, 6, 1>& f, const fe::BeamSection& section,
+                        double y, double z) {
+  const double det = section.Iy * section.Iz - section.Iyz * section.Iyz;
+  if (!(section.A > 0.0) || !(det > 0.0))
+    throw InputError("beam normal stress: section " + std::to_string(section.id) +
+                     " needs A > 0 and Iy Iz > Iyz^2");
+  // [Iy -Iyz; -Iyz Iz] (a, b) = (My, Mz)
+  const double a = (section.Iz * f(4) + section.Iyz * f(5)) / det;
+  const double b = (section.Iyz * f(4) + section.Iy * f(5)) / det;
+  return f(0) / section.A + z * a - y * b;
+}
+
+}  // namespace flexmb::reduction
