@@ -26,6 +26,7 @@
 #include <string>
 
 #include "bench/ladder_frame.h"
+#include "flexmb/common/process_tuning.h"
 #include "flexmb/fe/assembly.h"
 #include "flexmb/fe/block_lanczos.h"
 #include "flexmb/fe/modal.h"
@@ -47,6 +48,7 @@ double Seconds(Clock::time_point t0) { return std::chrono::duration<double>(Cloc
 }  // namespace
 
 int main(int argc, char** argv) {
+  flexmb::TuneProcess(argv);  // OpenBLAS kernels and malloc settings (docs/design.md)
   namespace fe = flexmb::fe;
   double h = 0.04;
   int count = 20;

@@ -13,6 +13,7 @@
 #include <optional>
 #include <string>
 
+#include "flexmb/common/process_tuning.h"
 #include "flexmb/common/error.h"
 #include "flexmb/io/fe_commands.h"
 #include "flexmb/io/reduce_commands.h"
@@ -70,6 +71,7 @@ int Guarded(F&& command) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  flexmb::TuneProcess(argv);  // OpenBLAS kernels and malloc settings (docs/design.md)
   CLI::App app{"flexmb: flexible multibody dynamics"};
   app.set_version_flag("--version", "flexmb " FLEXMB_VERSION);
   app.require_subcommand(1);
@@ -113,13 +115,16 @@ int main(int argc, char** argv) {
       ->required();
   fe_export->add_option("--hb", export_opt.hb_dir, "directory to write the exchange set to")->required();
   fe_export->add_option("--fix", export_opt.fix, "nodes to clamp: comma-separated node ids or a node set name");
+  fe_export->add_option("--interface", export_opt.interface,
+                        "also write modes.mtx: Craig-Bampton modes for these interface nodes (ids or a node set)");
+  fe_export->add_option("--modes", export_opt.modes, "fixed-interface normal modes in modes.mtx (default 10)");
 
   flexmb::io::ReduceOptions reduce_opt;
   CLI::App* reduce = app.add_subcommand("reduce", "Craig-Bampton reduction of an FE model to a flexible body file");
   reduce->add_option("model", reduce_opt.model_path, "mesh file, FE model file (.yaml) or exchange-set directory")
       ->required();
-  reduce->add_option("--interface", reduce_opt.interface, "interface nodes: comma-separated node ids or a node set")
-      ->required();
+  reduce->add_option("--interface", reduce_opt.interface,
+                     "interface nodes: comma-separated node ids or a node set (required unless --modes-file)");
   reduce->add_option("--modes", reduce_opt.modes, "fixed-interface normal modes (0 = Guyan)");
   reduce->add_option("--cutoff", reduce_opt.cutoff_hz, "all fixed-interface modes below this frequency [Hz]");
   reduce->add_option("--keep", reduce_opt.keep, "keep the lowest N flexible modes (default: all)");
@@ -127,6 +132,9 @@ int main(int argc, char** argv) {
   auto* rayleigh = reduce->add_option("--rayleigh", reduce_opt.rayleigh, "Rayleigh damping ALPHA,BETA");
   reduce->add_option("--damping-ratio", reduce_opt.damping_ratio, "modal damping ratio Z (or Z1,Z2,...)")
       ->excludes(rayleigh);
+  reduce->add_option("--modes-file", reduce_opt.modes_file,
+                     "use the static and normal modes of this modes file (modes.mtx of an exchange set) instead of "
+                     "computing them; the interface is the file's");
   reduce->add_option("--output,-o", reduce_opt.output, "body file to write (.h5)")->required();
   reduce->add_flag("--json", reduce_opt.json, "print one JSON object instead of text");
 

@@ -19,6 +19,8 @@
 #include "flexmb/io/exchange_set.h"
 #include "flexmb/io/fe_model_file.h"
 #include "flexmb/io/json_text.h"
+#include "flexmb/io/modes_file.h"
+#include "flexmb/reduction/craig_bampton_basis.h"
 
 namespace flexmb::io {
 namespace {
@@ -254,6 +256,19 @@ int FeExport(const FeExportOptions& opt, std::ostream& out) {
     throw InputError("the model has no free DOF (all constrained or fixed): nothing to export", {path, 0, ""});
   // the writer's errors name the directory
   InFile(opt.hb_dir, [&] { WriteExchangeSet(mesh, a, opt.hb_dir); });
+  int static_modes = -1, normal_modes = 0;
+  if (!opt.interface.empty()) {
+    if (opt.modes < 0) throw InputError("--modes must be 0 or more, got " + std::to_string(opt.modes));
+    reduction::ReductionOptions ro;
+    ro.interface_nodes = command::NodeListOption(mesh, opt.interface, path);
+    ro.normal_modes = opt.modes;
+    const reduction::CraigBamptonBasis basis =
+        InFile(path, [&] { return reduction::BuildCraigBamptonBasis(mesh, a, ro); });
+    const std::string modes_path = (fs::path(opt.hb_dir) / kModesFileName).string();
+    InFile(modes_path, [&] { WriteModesFile(ModesOfBasis(basis, mesh, a.dofs), modes_path); });
+    static_modes = basis.static_modes();
+    normal_modes = basis.normal_modes();
+  }
 
   const fs::path dir(opt.hb_dir);
   const std::string n = std::to_string(a.dofs.n_free);
@@ -268,6 +283,10 @@ int FeExport(const FeExportOptions& opt, std::ostream& out) {
   s << "  " << (dir / "geometry.vtk").string() << ": " << mesh.nodes.size() << " nodes, " << mesh.elements.size()
     << " elements\n";
   s << "  " << (dir / "dof_map.txt").string() << ": node and component of each of the " << n << " rows\n";
+  if (static_modes >= 0) {
+    s << "  " << (dir / kModesFileName).string() << ": " << static_modes << " static and " << normal_modes
+      << " fixed-interface normal modes\n";
+  }
   out << s.str() << std::flush;
   return 0;
 }

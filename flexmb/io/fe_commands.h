@@ -67,12 +67,17 @@ struct FeExportOptions {
   std::string model_path;  ///< mesh file, FE model file (.yaml) or exchange-set directory
   std::string hb_dir;      ///< output directory of the exchange set (created if missing)
   std::string fix;         ///< as FeModesOptions::fix
+  /// Interface nodes (ids or a node set): if given, the Craig-Bampton modes
+  /// for them are written too (modes.mtx, io/modes_file.h).
+  std::string interface;
+  int modes = 10;          ///< fixed-interface normal modes in modes.mtx (with `interface`)
 };
 
 /// "fe export": assembles the model (consistent mass, the model's
 /// constraints and the --fix nodes removed) and writes the exchange set to
-/// `hb_dir` (io::WriteExchangeSet); prints the files written with matrix
-/// size and non-zeros.
+/// `hb_dir` (io::WriteExchangeSet); with an interface also the static and
+/// fixed-interface normal modes (modes.mtx); prints the files written with
+/// matrix size and non-zeros.
 int FeExport(const FeExportOptions& options, std::ostream& out);
 
 }  // namespace flexmb::io

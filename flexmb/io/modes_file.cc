@@ -365,18 +365,7 @@ reduction::CraigBamptonBasis BasisOfModes(const ExchangeModes& m, const fe::Mesh
   b.stiffness = h.transpose() * kh;
   b.mass = (0.5 * (b.mass + b.mass.transpose())).eval();
   b.stiffness = (0.5 * (b.stiffness + b.stiffness.transpose())).eval();
-  // median of K_kk / M_kk over the free DOF with both positive
-  std::vector<double> ratio;
-  const Eigen::VectorXd kd = a.K.diagonal(), md = a.M.diagonal();
-  for (Eigen::Index i = 0; i < kd.size(); ++i) {
-    if (kd[i] > 0.0 && md[i] > 0.0) ratio.push_back(kd[i] / md[i]);
-  }
-  b.stiffness_scale = 1.0;
-  if (!ratio.empty()) {
-    auto mid = ratio.begin() + static_cast<std::ptrdiff_t>(ratio.size() / 2);
-    std::nth_element(ratio.begin(), mid, ratio.end());
-    b.stiffness_scale = *mid;
-  }
+  b.stiffness_scale = reduction::StiffnessScale(a.K, a.M);
   return b;
 }
 

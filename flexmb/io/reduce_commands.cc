@@ -1,8 +1,10 @@
 #include "flexmb/io/reduce_commands.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <set>
 #include <sstream>
 #include <string_view>
@@ -10,18 +12,23 @@
 #include <vector>
 
 #include "flexmb/common/error.h"
+#include "flexmb/fe/assembly.h"
 #include "flexmb/fe/fe_model.h"
 #include "flexmb/io/command_support.h"
+#include "flexmb/io/dof_map.h"
 #include "flexmb/io/body_file.h"
 #include "flexmb/io/fe_model_file.h"
 #include "flexmb/io/json_text.h"
 #include "flexmb/io/matrix_text.h"
+#include "flexmb/io/modes_file.h"
 #include "flexmb/reduction/craig_bampton.h"
+#include "flexmb/reduction/craig_bampton_basis.h"
 
 namespace flexmb::io {
 namespace {
 
 using namespace command;  // the helpers shared with the other command group
+namespace fs = std::filesystem;
 using reduction::Mat3;
 using reduction::Vec3;
 
@@ -84,8 +91,13 @@ void JsonModesAndMass(std::ostream& s, const reduction::ReducedBody& body, const
 int Reduce(const ReduceOptions& opt, std::ostream& out) {
   const std::string& path = opt.model_path;
   if (opt.output.empty()) throw InputError("-o needs the body file to write (BODY.h5)");
-  if (opt.interface.empty()) throw InputError("--interface needs node ids or a node set name");
-  if (opt.modes < 0 && !(opt.cutoff_hz > 0.0)) {
+  const bool imported_modes = !opt.modes_file.empty();
+  if (imported_modes && (!opt.interface.empty() || opt.modes >= 0 || opt.cutoff_hz != 0.0 || !opt.fix.empty())) {
+    throw InputError("--modes-file brings the interface and the modes: do not give --interface, --modes, --cutoff "
+                     "or --fix with it");
+  }
+  if (!imported_modes && opt.interface.empty()) throw InputError("--interface needs node ids or a node set name");
+  if (!imported_modes && opt.modes < 0 && !(opt.cutoff_hz > 0.0)) {
     throw InputError("give the number of fixed-interface normal modes (--modes K, 0 for Guyan) or a frequency "
                      "cut-off (--cutoff HZ)");
   }
@@ -119,12 +131,41 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
 
   const Clock::time_point t0 = Clock::now();
   const fe::FeModel model = InFile(path, [&] { return LoadFeModel(path); });
-  ro.interface_nodes = command::NodeListOption(model.mesh, opt.interface, path);
-  ro.fixed_nodes = command::NodeListOption(model.mesh, opt.fix, path);
+  ExchangeModes modes;
+  if (imported_modes) {
+    modes = InFile(opt.modes_file, [&] { return ReadModesFile(opt.modes_file); });
+    // a modes file inside the exchange set it belongs to: check it against its DOF map
+    const fs::path map_path = fs::path(opt.modes_file).parent_path() / "dof_map.txt";
+    std::error_code ec;
+    if (fs::is_directory(path, ec) && fs::equivalent(fs::path(path), fs::path(opt.modes_file).parent_path(), ec)) {
+      const MatrixRowMap map = InFile(map_path.string(), [&] { return ReadDofMap(map_path.string()); });
+      CheckModesAgainstDofMap(modes, map, opt.modes_file);
+    }
+    for (const DofMapRow& d : modes.static_dofs) {
+      const int node = model.mesh.NodeIndex(d.node_id);
+      if (node < 0) {
+        throw InputError("static mode of node " + std::to_string(d.node_id) + ": the model has no such node",
+                         {opt.modes_file, d.line, "modes file"});
+      }
+      if (std::find(ro.interface_nodes.begin(), ro.interface_nodes.end(), node) == ro.interface_nodes.end()) {
+        ro.interface_nodes.push_back(node);
+      }
+    }
+  } else {
+    ro.interface_nodes = command::NodeListOption(model.mesh, opt.interface, path);
+    ro.fixed_nodes = command::NodeListOption(model.mesh, opt.fix, path);
+  }
   const Clock::time_point t1 = Clock::now();
 
   reduction::ReductionTimings t;
-  const reduction::ReducedBody body = InFile(path, [&] { return reduction::ReduceCraigBampton(model, ro, &t); });
+  const reduction::ReducedBody body = InFile(path, [&] {
+    if (!imported_modes) return reduction::ReduceCraigBampton(model, ro, &t);
+    const Clock::time_point ta = Clock::now();
+    const fe::AssembledModel a = fe::BuildMatrices(model, fe::AssemblyOptions{});
+    t.assemble = Seconds(ta, Clock::now());
+    const reduction::CraigBamptonBasis basis = BasisOfModes(modes, model.mesh, a, opt.modes_file);
+    return reduction::ReduceBasis(model, a, basis, ro, &t);
+  });
   const Clock::time_point t2 = Clock::now();
   InFile(opt.output, [&] { WriteBody(body, opt.output); });
   const Clock::time_point t3 = Clock::now();

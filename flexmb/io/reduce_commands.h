@@ -31,6 +31,11 @@ struct ReduceOptions {
   /// Modal damping ratios "Z" or "Z1,Z2,..." (the last one repeats for
   /// higher modes); empty: none. Not together with `rayleigh`.
   std::string damping_ratio;
+  /// A modes file (io/modes_file.h) whose static and normal modes replace
+  /// the computed basis; its rows follow the model's free DOF (the exchange
+  /// set it was written with). Then `interface`, `modes`, `cutoff_hz` and
+  /// `fix` must not be given. Empty: compute the basis.
+  std::string modes_file;
   std::string output;      ///< body file to write (.h5), required
   bool json = false;       ///< one JSON object instead of text
 };

@@ -209,7 +209,15 @@ ReducedBody ReduceCraigBampton(const fe::FeModel& model, const ReductionOptions&
   t.assemble = Seconds(t0);
 
   const CraigBamptonBasis basis = BuildCraigBamptonBasis(mesh, a, options, &t);
-  t0 = Clock::now();
+  return ReduceBasis(model, a, basis, options, &t);
+}
+
+ReducedBody ReduceBasis(const fe::FeModel& model, const fe::AssembledModel& a, const CraigBamptonBasis& basis,
+                        const ReductionOptions& options, ReductionTimings* timings) {
+  const fe::Mesh& mesh = model.mesh;
+  ReductionTimings local_timings;
+  ReductionTimings& t = timings != nullptr ? *timings : local_timings;
+  const auto t0 = Clock::now();
   const int nb = basis.static_modes(), m = basis.size();
 
   // rigid motions: the geometric rigid vectors are (u_b, 0) in the basis

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "flexmb/fe/assembly.h"
 #include "flexmb/fe/fe_model.h"
 #include "flexmb/reduction/reduced_body.h"
 
@@ -48,5 +49,17 @@ struct ReductionTimings {
 /// the body).
 ReducedBody ReduceCraigBampton(const fe::FeModel& model, const ReductionOptions& options,
                                ReductionTimings* timings = nullptr);
+
+struct CraigBamptonBasis;
+
+/// The steps of ReduceCraigBampton after the basis, on a basis computed
+/// here (BuildCraigBamptonBasis) or imported (io/modes_file.h BasisOfModes):
+/// orthonormalization, rigid-body removal, truncation (options.keep),
+/// invariants, stress modes, damping and provenance. `assembled` is `model`
+/// assembled as the basis was; options.interface_nodes are recorded as the
+/// body's interface nodes. Fills the orthonormalize, invariants and
+/// stress_modes timings.
+ReducedBody ReduceBasis(const fe::FeModel& model, const fe::AssembledModel& assembled, const CraigBamptonBasis& basis,
+                        const ReductionOptions& options, ReductionTimings* timings = nullptr);
 
 }  // namespace flexmb::reduction

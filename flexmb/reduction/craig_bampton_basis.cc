@@ -6,11 +6,13 @@
 #include <cmath>
 #include <string>
 #include <exception>
+#include <optional>
 #include <thread>
 #include <utility>
 #include <vector>
 
 #include "flexmb/common/error.h"
+#include "flexmb/common/process_tuning.h"
 #include "flexmb/fe/block_lanczos.h"
 #include "flexmb/fe/modal.h"
 #include "flexmb/fe/sparse_cholesky.h"
@@ -75,7 +77,8 @@ Blocks SplitMatrix(const fe::SparseMat& a, const std::vector<int>& local, const 
   return out;
 }
 
-// median over the DOF of K_kk / M_kk (both positive); 1 if there is none
+}  // namespace
+
 double StiffnessScale(const fe::SparseMat& k, const fe::SparseMat& m) {
   std::vector<double> ratio;
   ratio.reserve(static_cast<size_t>(k.rows()));
@@ -88,8 +91,6 @@ double StiffnessScale(const fe::SparseMat& k, const fe::SparseMat& m) {
   std::nth_element(ratio.begin(), mid, ratio.end());
   return *mid;
 }
-
-}  // namespace
 
 Eigen::MatrixXd CraigBamptonBasis::Expand(const Eigen::MatrixXd& q) const {
   const int nb = static_cast<int>(boundary.size()), nf = normal_modes();
@@ -228,7 +229,10 @@ CraigBamptonBasis BuildCraigBamptonBasis(const fe::Mesh& mesh, const fe::Assembl
   };
   std::exception_ptr static_error;
   std::thread static_thread;
+  // two threads of ours, each in CHOLMOD's BLAS: one BLAS thread each
+  std::optional<BlasThreadLimit> one_blas_thread;
   if (count > 0 && nb > 0 && ParallelRanges(2, 1) > 1) {
+    one_blas_thread.emplace(1);
     static_thread = std::thread([&] {
       try {
         static_modes();
@@ -285,6 +289,7 @@ CraigBamptonBasis BuildCraigBamptonBasis(const fe::Mesh& mesh, const fe::Assembl
   const int nf = static_cast<int>(basis.phi.cols());
   t.normal_modes += Seconds(t0);
   if (static_thread.joinable()) static_thread.join();
+  one_blas_thread.reset();
   if (static_error) std::rethrow_exception(static_error);
 
   // 5. reduced matrices, coordinates (u_b, eta)
@@ -297,41 +302,51 @@ CraigBamptonBasis BuildCraigBamptonBasis(const fe::Mesh& mesh, const fe::Assembl
     hi.block(b, 0, e - b, nb) = basis.psi.middleRows(b, e - b);
     hi.block(b, nb, e - b, nf) = basis.phi.middleRows(b, e - b);
   });
-  // H_i^T M_ii H_i and H_i^T K_ii H_i: each range forms its rows of
-  // W = A_ii H_i slab by slab (A_ii symmetric: row r of W gathers column r
-  // of A_ii) and adds the upper triangle of H_i(rows)^T W(rows)
-  std::vector<Eigen::MatrixXd> partial_m(static_cast<size_t>(ranges)), partial_k(static_cast<size_t>(ranges));
+  // H^T M H: each range forms its rows of W = M_ii H_i slab by slab (M_ii
+  // symmetric: row r of W gathers column r of M_ii) and adds the upper
+  // triangle of H_i(rows)^T W(rows)
+  std::vector<Eigen::MatrixXd> partial(static_cast<size_t>(ranges));
   ParallelRows(ni, ranges, [&](int r, Eigen::Index b, Eigen::Index e) {
     constexpr Eigen::Index kSlab = 1024;
-    const Eigen::Index rows = std::min(kSlab, e - b);
-    RowMat w(rows, mm);
-    for (auto [a, sum] : {std::pair{&m.ii, &partial_m[static_cast<size_t>(r)]},
-                          std::pair{&k.ii, &partial_k[static_cast<size_t>(r)]}}) {
-      sum->setZero(mm, mm);
-      for (Eigen::Index s0 = b; s0 < e; s0 += kSlab) {
-        const Eigen::Index len = std::min(kSlab, e - s0);
-        for (Eigen::Index row = s0; row < s0 + len; ++row) {
-          auto wr = w.row(row - s0);
-          wr.setZero();
-          for (fe::SparseMat::InnerIterator it(*a, row); it; ++it) wr.noalias() += it.value() * hi.row(it.row());
-        }
-        sum->triangularView<Eigen::Upper>() += hi.middleRows(s0, len).transpose() * w.topRows(len);
+    RowMat w(std::min(kSlab, e - b), mm);
+    Eigen::MatrixXd& sum = partial[static_cast<size_t>(r)];
+    sum.setZero(mm, mm);
+    for (Eigen::Index s0 = b; s0 < e; s0 += kSlab) {
+      const Eigen::Index len = std::min(kSlab, e - s0);
+      for (Eigen::Index row = s0; row < s0 + len; ++row) {
+        auto wr = w.row(row - s0);
+        wr.setZero();
+        for (fe::SparseMat::InnerIterator it(m.ii, row); it; ++it) wr.noalias() += it.value() * hi.row(it.row());
       }
+      sum.triangularView<Eigen::Upper>() += hi.middleRows(s0, len).transpose() * w.topRows(len);
     }
   });
-  // plus the boundary rows and columns: H = [[I, 0], [H_i]]
-  auto project = [&](const std::vector<Eigen::MatrixXd>& partial, const Blocks& a) {
+  {
+    // plus the boundary rows and columns: H = [[I, 0], [H_i]]
     Eigen::MatrixXd upper = partial[0];
     for (size_t r = 1; r < partial.size(); ++r) upper += partial[r];
     Eigen::MatrixXd out = upper.selfadjointView<Eigen::Upper>();
-    const Eigen::MatrixXd abi_h = Eigen::MatrixXd(a.ib.transpose() * hi);  // A_bi H_i, n_b x m
-    out.topRows(nb) += abi_h;
-    out.leftCols(nb) += abi_h.transpose();
-    out.topLeftCorner(nb, nb) += a.bb;
-    return Eigen::MatrixXd(0.5 * (out + out.transpose()));
-  };
-  basis.mass = project(partial_m, m);
-  basis.stiffness = project(partial_k, k);
+    const Eigen::MatrixXd mbi_h = Eigen::MatrixXd(m.ib.transpose() * hi);  // M_bi H_i, n_b x m
+    out.topRows(nb) += mbi_h;
+    out.leftCols(nb) += mbi_h.transpose();
+    out.topLeftCorner(nb, nb) += m.bb;
+    basis.mass = 0.5 * (out + out.transpose());
+  }
+  // H^T K H needs no product over the interior: K_ii Psi = -K_ib makes the
+  // static block the Schur complement K_bb + K_bi Psi (the two Psi^T terms
+  // cancel) and the coupling K_bi Phi + Psi^T K_ii Phi vanish exactly; the
+  // normal block is Phi^T K_ii Phi (diag(omega^2) to the eigen solver's
+  // residual, formed here to keep that residual's effect second order)
+  {
+    basis.stiffness = Eigen::MatrixXd::Zero(mm, mm);
+    const Eigen::MatrixXd kbi_psi = Eigen::MatrixXd(k.ib.transpose() * basis.psi);
+    basis.stiffness.topLeftCorner(nb, nb) = k.bb + 0.5 * (kbi_psi + kbi_psi.transpose());
+    if (nf > 0) {
+      const Eigen::MatrixXd k_phi = k.ii * basis.phi;
+      const Eigen::MatrixXd kff = basis.phi.transpose() * k_phi;
+      basis.stiffness.bottomRightCorner(nf, nf) = 0.5 * (kff + kff.transpose());
+    }
+  }
   t.orthonormalize += Seconds(t0);
   return basis;
 }

@@ -7,7 +7,7 @@
 /// shift-invert Lanczos on the same factor (shift 0: K_ii is positive
 /// definite whenever the static modes exist, and one factor then serves
 /// both), and the reduced matrices M_CB = H^T M H,
-/// K_CB = H^T K H. ReduceCraigBampton (craig_bampton.h) builds on it; tests
+/// K_CB = H^T K H (see `stiffness`). ReduceCraigBampton (craig_bampton.h) builds on it; tests
 /// use it to look at the basis before orthonormalization.
 
 #include <Eigen/Core>
@@ -32,10 +32,14 @@ struct CraigBamptonBasis {
   Eigen::MatrixXd phi;           ///< n_i x n_f fixed-interface normal modes, Phi^T M_ii Phi = I
   Eigen::VectorXd fixed_interface_hz;  ///< their frequencies [Hz], ascending
   Eigen::MatrixXd mass;          ///< M_CB = H^T M H, m x m, m = n_b + n_f
-  /// K_CB = H^T K H, m x m, the literal product (not the Guyan form
-  /// K_bb + K_bi Psi): the reduced body is then exactly the Galerkin
-  /// projection of the FE model on the basis as computed, so its
-  /// eigenvalues are Rayleigh quotients of the delivered modes.
+  /// K_CB = H^T K H, m x m. BuildCraigBamptonBasis forms it without a
+  /// product over the interior: with K_ii Psi = -K_ib the static block is
+  /// the Schur complement K_bb + K_bi Psi, the static-normal coupling is
+  /// zero and the normal block is Phi^T K_ii Phi; equal to the literal
+  /// product up to the static solve's residual (a relative 1e-13 or so on
+  /// the reduced frequencies, measured in reduction_cb_test). An imported
+  /// basis (io/modes_file.h) gets the literal product, as its static modes
+  /// need not solve our K_ii.
   Eigen::MatrixXd stiffness;
   /// Median over the free DOF of K_kk / M_kk [rad^2/s^2 in SI]: the scale of
   /// the FE model's eigenvalues, for relative tests.
@@ -47,6 +51,10 @@ struct CraigBamptonBasis {
   /// H q for a block of reduced coordinates (m x k): n_free x k, free numbering.
   Eigen::MatrixXd Expand(const Eigen::MatrixXd& q) const;
 };
+
+/// Median over the DOF of K_kk / M_kk (both positive), 1 if there is none:
+/// CraigBamptonBasis::stiffness_scale.
+double StiffnessScale(const fe::SparseMat& k, const fe::SparseMat& m);
 
 /// Builds the basis for `model` assembled from `mesh` (node ids and
 /// positions; the mesh's node list must match the DOF map). Uses

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "flexmb/common/error.h"
+#include "flexmb/fe/assembly.h"
 #include "flexmb/fe/modal.h"
 #include "flexmb/reduction/craig_bampton_basis.h"
 #include "tests/unit/reduction/reduction_test_models.h"
@@ -88,6 +89,23 @@ TEST(CraigBampton, CountsAndShapes) {
   EXPECT_EQ(value("rigid_modes_removed"), "6");
   EXPECT_NE(value("date"), "<missing>");
   EXPECT_NE(value("flexmb_version"), "<missing>");
+}
+
+// The reduced matrices of the basis against their definition H^T A H with
+// H = Expand(I): the mass is that product, the stiffness its Schur-complement
+// form (zero coupling, no product over the interior), equal to round-off.
+TEST(CraigBampton, ReducedMatricesEqualTheProjection) {
+  PlateModel p = Plate();
+  const fe::AssembledModel a = fe::BuildMatrices(p.model, fe::AssemblyOptions{});
+  const CraigBamptonBasis basis = BuildCraigBamptonBasis(p.model.mesh, a, p.options);
+  const Eigen::MatrixXd h = basis.Expand(Eigen::MatrixXd::Identity(basis.size(), basis.size()));
+  const Eigen::MatrixXd m = h.transpose() * (a.M * h), k = h.transpose() * (a.K * h);
+  EXPECT_LT((basis.mass - m).norm(), 1e-13 * m.norm());
+  EXPECT_LT((basis.stiffness - k).norm(), 1e-11 * k.norm()) << (basis.stiffness - k).norm() / k.norm();
+  const int nb = basis.static_modes();
+  EXPECT_EQ(basis.stiffness.topRightCorner(nb, basis.normal_modes()).norm(), 0.0);
+  // and the literal coupling is zero to the solve's round-off
+  EXPECT_LT(k.topRightCorner(nb, basis.normal_modes()).norm(), 1e-11 * k.norm());
 }
 
 TEST(CraigBampton, KeepTruncatesToTheLowestModes) {
