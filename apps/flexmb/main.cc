@@ -18,6 +18,7 @@
 #include "flexmb/io/fe_commands.h"
 #include "flexmb/io/reduce_commands.h"
 #include "flexmb/io/run.h"
+#include "flexmb/vehicle/lane_change_test.h"
 
 namespace {
 
@@ -86,6 +87,21 @@ int main(int argc, char** argv) {
   run->add_option("--dt", dt, "step size [s] (overrides solver.dt)");
   run->add_flag("--animation", animation, "write anim.pvd and frames/ (as output.animation)");
   run->add_flag("--quiet,-q", quiet, "no progress bar, no summary lines");
+  std::optional<double> speed;
+  std::optional<std::string> frame;
+  run->add_option("--speed", speed, "lane-change files only: entry speed [km/h] (default: the file's)");
+  run->add_option("--frame", frame, "lane-change files only: frame model, rigid or elastic (default: the file's)");
+
+  CLI::App* truck = app.add_subcommand("truck", "truck lane-change test tools");
+  truck->require_subcommand(1);
+  std::string truck_file;
+  double v_low = 20, v_high = 90, v_tol = 1;
+  CLI::App* max_speed = truck->add_subcommand("max-speed", "highest entry speed passing the lane change (bisection)");
+  max_speed->add_option("file", truck_file, "lane-change file (YAML)")->required();
+  max_speed->add_option("--low", v_low, "lowest speed tried [km/h] (default 20)");
+  max_speed->add_option("--high", v_high, "highest speed tried [km/h] (default 90)");
+  max_speed->add_option("--tol", v_tol, "bisection tolerance [km/h] (default 1)");
+  max_speed->add_option("--frame", frame, "frame model, rigid or elastic (default: the file's)");
 
   CLI::App* check = app.add_subcommand("check", "validate a model file and report its constraints");
   check->add_option("model", model, "model file (YAML)")->required();
@@ -155,7 +171,25 @@ int main(int argc, char** argv) {
     app.exit(e);
     return 2;
   }
+  if (run->parsed() && flexmb::vehicle::IsLaneChangeFile(model)) {
+    return Guarded([&] {
+      flexmb::vehicle::LaneChangeOptions o{model, out, speed, frame, dt, false, quiet ? nullptr : stdout};
+      const flexmb::vehicle::LaneChangeResult r = flexmb::vehicle::RunLaneChange(o);
+      if (!r.completed && !r.rolled_over) std::fprintf(stderr, "error: lane change did not complete: %s\n", r.message.c_str());
+      return r.completed || r.rolled_over ? 0 : 1;
+    });
+  }
   if (run->parsed()) return Run(model, out, t_end, dt, animation, quiet);
+  if (max_speed->parsed()) {
+    return Guarded([&] {
+      flexmb::vehicle::LaneChangeOptions o{truck_file, "", std::nullopt, frame, std::nullopt, true, nullptr};
+      bool low_ok = false;
+      const double v = flexmb::vehicle::MaxPassSpeed(o, v_low, v_high, v_tol, stderr, &low_ok);
+      std::printf("{\"max_pass_speed_kmh\": %.3f, \"low_passed\": %s, \"tolerance_kmh\": %g}\n", low_ok ? v : 0.0,
+                  low_ok ? "true" : "false", v_tol);
+      return 0;
+    });
+  }
   if (modes->parsed()) return Guarded([&] { return flexmb::io::FeModes(modes_opt, std::cout); });
   if (info->parsed()) return Guarded([&] { return flexmb::io::FeInfo(info_opt, std::cout); });
   if (fe_export->parsed()) return Guarded([&] { return flexmb::io::FeExport(export_opt, std::cout); });

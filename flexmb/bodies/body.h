@@ -49,6 +49,10 @@ class Body {
   virtual void MassMatrix(const double* q, MatX& M) const = 0;
   /// True if the mass matrix does not depend on q (evaluated once).
   virtual bool HasConstantMass() const { return true; }
+  /// True if every marker's twist Jacobian can have rank 6 (all marker
+  /// motions possible). Planar bodies return false, so that the equations of
+  /// a joint holding them are checked for redundancy like those of a loop.
+  virtual bool MarkerJacobianFullRank() const { return true; }
 
   /// Adds the body's own generalized forces (inertial velocity terms, elastic,
   /// gravity g_W [m/s^2]) to Q (nv) and the derivatives dQ/dx (tangent

@@ -13,6 +13,8 @@
 
 #include "flexmb/bodies/rigid_body.h"
 #include "flexmb/common/error.h"
+#include "flexmb/io/ancf_body_parser.h"
+#include "flexmb/io/flexible_body_parser.h"
 #include "flexmb/io/parse_context.h"
 #include "flexmb/joints/cylindrical.h"
 #include "flexmb/joints/distance.h"
@@ -136,6 +138,10 @@ Mat3 ParseInertia(const YAML::Node& body, const ParseContext& ctx) {
 
 void ParseBody(const YAML::Node& node, int k, ParseContext& ctx, Lines& lines) {
   ctx.SetEntity("body #" + std::to_string(k + 1));
+  if (node.IsMap() && node["type"] && node["type"].IsScalar() && IsAncfBodyType(node["type"].Scalar()))
+    return ParseAncfBody(node, ctx, lines);
+  if (node.IsMap() && node["type"] && node["type"].IsScalar() && IsFlexibleBodyType(node["type"].Scalar()))
+    return ParseFlexibleBody(node, ctx, lines);
   ctx.CheckKeys(node, {"name", "type", "mass", "center_of_mass", "inertia", "inertia_frame", "position",
                        "orientation", "velocity", "angular_velocity", "markers", "shape"});
   const std::string name = Name(node, "body", ctx);
@@ -146,7 +152,7 @@ void ParseBody(const YAML::Node& node, int k, ParseContext& ctx, Lines& lines) {
   ctx.SetEntity(entity);
   const std::string type = ctx.String(node, "type", "rigid");
   if (type != "rigid")
-    ctx.Fail(node["type"], "body type " + Quote(type) + " is not supported yet (supported: rigid)");
+    ctx.Fail(node["type"], "body type " + Quote(type) + " is not supported yet (supported: rigid, flexible, ancf_beam)");
 
   RigidBodyData d;
   d.mass = ctx.Positive(node, "mass");

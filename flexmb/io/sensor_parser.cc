@@ -8,12 +8,17 @@
 //   body_energy:         body
 //   body_position:       body
 //   system_energy:       (no further keys)
+//   modal_coordinates:   body (flexible)
+//   node_displacement:   body (flexible), node (FE node id)
+//   strain_energy:       body (flexible)
 
 #include "flexmb/common/error.h"
 
 #include "flexmb/io/parse_context.h"
 #include "flexmb/model/model.h"
+#include "flexmb/bodies/flexible_body.h"
 #include "flexmb/sensors/body_sensors.h"
+#include "flexmb/sensors/flexible_sensors.h"
 #include "flexmb/sensors/joint_sensors.h"
 #include "flexmb/sensors/marker_sensors.h"
 
@@ -38,6 +43,13 @@ int CoordinateIndex(const YAML::Node& node, const flexmb::Joint& joint, ParseCon
 
 int OptionalMarker(const YAML::Node& node, const char* key, ParseContext& ctx) {
   return node[key] ? ctx.Marker(node, key) : -1;
+}
+
+// the flexible body named at node["body"], or an error naming it
+const FlexibleBody& FlexibleAt(const YAML::Node& node, int body, ParseContext& ctx) {
+  const auto* f = dynamic_cast<const FlexibleBody*>(ctx.model().bodies[body].get());
+  if (!f) ctx.Fail(node["body"], "body '" + ctx.model().bodies[body]->name() + "' is not a flexible body");
+  return *f;
 }
 
 }  // namespace
@@ -88,6 +100,24 @@ void ParseSensor(const YAML::Node& node, ParseContext& ctx) {
   } else if (type == "body_position") {
     ctx.CheckKeys(node, {"name", "type", "body"});
     sensor = std::make_unique<BodyPositionSensor>(name, ctx.Body(node, "body"));
+  } else if (type == "modal_coordinates") {
+    ctx.CheckKeys(node, {"name", "type", "body"});
+    const int b = ctx.Body(node, "body");
+    sensor = std::make_unique<ModalCoordinatesSensor>(name, b, FlexibleAt(node, b, ctx));
+  } else if (type == "node_displacement") {
+    ctx.CheckKeys(node, {"name", "type", "body", "node"});
+    const int b = ctx.Body(node, "body");
+    const FlexibleBody& f = FlexibleAt(node, b, ctx);
+    if (!node["node"]) ctx.Fail(node, "missing key 'node' (FE node id)");
+    const int id = ctx.Integer(node, "node", -1);
+    const int k = f.reduced().mesh.NodeIndex(id);
+    if (k < 0) ctx.Fail(node["node"], "node " + std::to_string(id) + " does not exist in body '" + f.name() + "'");
+    sensor = std::make_unique<NodeDisplacementSensor>(name, b, k);
+  } else if (type == "strain_energy") {
+    ctx.CheckKeys(node, {"name", "type", "body"});
+    const int b = ctx.Body(node, "body");
+    FlexibleAt(node, b, ctx);
+    sensor = std::make_unique<StrainEnergySensor>(name, b);
   } else if (type == "system_energy") {
     ctx.CheckKeys(node, {"name", "type"});
     sensor = std::make_unique<SystemEnergySensor>(name);
@@ -96,7 +126,7 @@ void ParseSensor(const YAML::Node& node, ParseContext& ctx) {
              "unknown sensor type '" + type +
                  "' (known: marker_position, marker_velocity, marker_acceleration, "
                  "marker_orientation, joint_coordinate, joint_reaction, body_energy, "
-                 "body_position, system_energy)");
+                 "body_position, system_energy, modal_coordinates, node_displacement, strain_energy)");
   }
   try {
     model.AddSensor(std::move(sensor));

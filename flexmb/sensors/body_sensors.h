@@ -42,7 +42,8 @@ class BodyEnergySensor final : public Sensor {
 };
 
 /// Energies of the whole model [J]: "kinetic" (all bodies), "potential"
-/// (gravity of all bodies plus the force elements' PotentialEnergy) and
+/// (gravity of all bodies, the force elements' PotentialEnergy and the
+/// strain energy of flexible bodies) and
 /// "total" = kinetic + potential.
 class SystemEnergySensor final : public Sensor {
  public:

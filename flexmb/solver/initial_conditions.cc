@@ -75,7 +75,7 @@ std::vector<char> LoopJoints(const Model& model) {
   std::vector<char> alive(nj, 1);
   std::vector<int> leaves;
   for (int b = 1; b < nb; ++b)
-    if (degree[b] == 1) leaves.push_back(b);
+    if (degree[b] == 1 && model.bodies[b]->MarkerJacobianFullRank()) leaves.push_back(b);
   while (!leaves.empty()) {
     const int b = leaves.back();
     leaves.pop_back();
@@ -85,7 +85,7 @@ std::vector<char> LoopJoints(const Model& model) {
       alive[k] = 0;
       for (int mk : {model.joints[k]->marker_i, model.joints[k]->marker_j}) {
         const int o = model.markers[mk].body;
-        if (--degree[o] == 1 && o != 0) leaves.push_back(o);
+        if (--degree[o] == 1 && o != 0 && model.bodies[o]->MarkerJacobianFullRank()) leaves.push_back(o);
       }
       break;
     }

@@ -316,7 +316,7 @@ TEST(ModelFile, BadBodyValues) {
   ExpectError(Replace(25, "    inertia: [[1, 0, 0], [0.1, 1, 0], [0, 0, 1]]"), 25, {"body 'rod'", "not symmetric"});
   // inertia given about the body origin that is too small for the offset centre of mass
   ExpectError(Replace(14, "    inertia_frame: body"), 13, {"body 'crank'", "not positive definite"});
-  ExpectError(Replace(10, "    type: flexible"), 10, {"body 'crank'", "'flexible' is not supported yet"});
+  ExpectError(Replace(10, "    type: elastic"), 10, {"body 'crank'", "'elastic' is not supported yet"});
   ExpectError(Replace(22, "    shape: {type: cone, radius: 1}"), 22, {"unknown shape type 'cone'"});
 }
 

@@ -12,6 +12,7 @@
 #include <new>
 #include <vector>
 
+#include "flexmb/bodies/flexible_body.h"
 #include "flexmb/bodies/rigid_body.h"
 #include "flexmb/forces/spring_damper.h"
 #include "flexmb/joints/revolute.h"
@@ -20,6 +21,7 @@
 #include "flexmb/solver/initial_conditions.h"
 #include "flexmb/solver/simulator.h"
 #include "flexmb/solver/sparse_lu.h"
+#include "tests/unit/bodies/flexible_test_bodies.h"
 
 #if defined(__SANITIZE_ADDRESS__)
 #define FLEXMB_COUNT_ALLOCATIONS 0
@@ -234,6 +236,37 @@ TEST(NoAllocation, SimulatorRunWithoutObserver) {
   EXPECT_EQ(sim.stats().rejected, 0);
   EXPECT_EQ(c.news(), 0) << "operator new calls in Simulator::Run over 200 steps";
   EXPECT_EQ(c.mallocs(), 0) << "malloc/calloc/realloc calls in Simulator::Run over 200 steps";
+}
+
+TEST(NoAllocation, FlexibleBodySteps) {
+  // a floating-frame flexible body (9 modes) hanging from a spherical joint
+  // at a node, a damper on another node: body forces, tangents and markers
+  if (!FLEXMB_COUNT_ALLOCATIONS) GTEST_SKIP() << "allocation counting is off under AddressSanitizer";
+  Model m;
+  FlexibleBodyData d;
+  d.reduced = testing::FreeBentBar(3, 3);
+  d.w_WB = Vec3(0.5, 1.0, 3.0);
+  const int b = m.AddBody(std::make_unique<FlexibleBody>("bar", d));
+  m.AddJoint(std::make_unique<SphericalJoint>("pivot"), m.AddMarker(0, "pivot", Vec3::Zero(), Mat3::Identity()),
+             m.AddMarker(b, "pivot", Vec3::Zero(), Mat3::Identity(), 0));
+  SpringDamperLaw law;
+  law.free_length = 0.5;
+  law.stiffness = 50.0;
+  law.damping = 0.5;
+  m.AddForce(std::make_unique<SpringDamper>("spring", law), m.AddMarker(0, "anchor", Vec3(0.8, 0.5, 1.0), Mat3::Identity()),
+             m.AddMarker(b, "tip", Vec3(0, 0, 0.01), Mat3::Identity(), 6));
+  m.solver.dt = 1e-3;
+  m.Finalize();
+  Simulator sim(m);
+  sim.Initialize();
+  sim.Run(0.005, 0.0, nullptr);
+  const long steps0 = sim.stats().steps;
+  AllocationCount c;
+  sim.Run(0.105, 0.0, Observer());
+  c.stop();
+  EXPECT_EQ(sim.stats().steps - steps0, 100);
+  EXPECT_EQ(c.news(), 0) << "operator new calls in 100 steps with a flexible body";
+  EXPECT_EQ(c.mallocs(), 0) << "malloc/calloc/realloc calls in 100 steps with a flexible body";
 }
 
 }  // namespace

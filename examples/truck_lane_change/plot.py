@@ -1,0 +1,79 @@
+#!/usr/bin/python3
+"""Plots of a truck lane-change run (results.csv of `flexmb run truck.yaml`).
+
+Usage: /usr/bin/python3 plot.py RUN_DIR [RUN_DIR ...] [--out DIR]
+Writes lateral_acceleration.png, steering_wheel_angle.png, roll.png,
+yaw_rate.png, axle_loads.png, tire_loads.png and path.png; several run directories are
+overlaid (e.g. rigid against elastic frame, as the seed's Figs. 9 to 14).
+"""
+import argparse
+import csv
+import json
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def load(run_dir):
+    with open(os.path.join(run_dir, "results.csv")) as f:
+        rows = list(csv.DictReader(f))
+    cols = {k: [float(r[k]) for r in rows] for k in rows[0]}
+    label = os.path.basename(os.path.normpath(run_dir))
+    try:
+        with open(os.path.join(run_dir, "summary.json")) as f:
+            s = json.load(f)
+        label = "%s (%s frame, %.0f km/h, %s)" % (label, s["frame"], s["entry_speed_kmh"],
+                                                  "passed" if s["passed"] else "failed")
+    except (OSError, KeyError, ValueError):
+        pass
+    return label, cols
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("runs", nargs="+")
+    ap.add_argument("--out", default=None, help="directory for the PNGs (default: the first run directory)")
+    a = ap.parse_args()
+    out = a.out or a.runs[0]
+    os.makedirs(out, exist_ok=True)
+    runs = [load(r) for r in a.runs]
+    panels = [
+        ("lateral_acceleration", "lateral acceleration [m/s$^2$]", ["lateral_acceleration"]),
+        ("steering_wheel_angle", "steering-wheel angle [deg]", ["steering_wheel_angle_deg"]),
+        ("roll", "roll angle of the frame [deg]", ["roll_deg"]),
+        ("yaw_rate", "yaw rate [deg/s]", ["yaw_rate_degps"]),
+        ("axle_loads", "axle load [kN]", ["front_axle_load_kN", "rear_axle_load_kN"]),
+        ("tire_loads", "tire vertical load [kN] (rear: twin set)", ["fz_fl_kN", "fz_fr_kN", "fz_rl_kN", "fz_rr_kN"]),
+    ]
+    for name, ylabel, keys in panels:
+        fig, ax = plt.subplots(figsize=(7, 4))
+        for label, c in runs:
+            for k in keys:
+                ax.plot(c["time"], c[k], label=label + ("" if len(keys) == 1 else " " + k.rsplit("_", 1)[0]))
+        ax.set_xlabel("time [s]")
+        ax.set_ylabel(ylabel)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, name + ".png"), dpi=110)
+        plt.close(fig)
+    fig, ax = plt.subplots(figsize=(9, 3))
+    for label, c in runs:
+        ax.plot(c["x"], c["y"], label=label + " front axle")
+    c = runs[0][1]
+    ax.plot(c["x"], c["centre_line_y"], "k--", lw=0.8, label="course centre line")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "path.png"), dpi=110)
+    plt.close(fig)
+    print("plots in %s" % out)
+
+
+if __name__ == "__main__":
+    main()

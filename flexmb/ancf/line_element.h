@@ -1,0 +1,134 @@
+#pragma once
+/// \file line_element.h
+/// Shared kernel of the ANCF line elements (2D planar Euler-Bernoulli beam,
+/// 3D cable): cubic Hermite interpolation of the centre line in reference arc
+/// length s, nodal coordinates e = (r_0, r'_0, r_1, r'_1) in world components
+/// (D = 2 or 3 per vector, 4 D in all). Structural ("line") strain measures:
+///   axial   eps   = |r'| - 1                     (Biot, per reference length)
+///   bending kappa = (r' x r'') / |r'|^2          (rate of turn of the tangent per
+///                                                 reference length; a scalar in 2D,
+///                                                 a vector in 3D)
+/// Strain energy W = 1/2 int (EA eps^2 + EI |kappa - kappa_0|^2) ds, integrated
+/// by Gauss quadrature. Because the strains are those of a line, no Poisson or
+/// shear (thickness) locking arises; membrane locking is avoided by reduced
+/// integration of the axial term with hourglass control (QuadratureOrder);
+/// see docs/design.md "ANCF beams".
+/// Not for direct use: the element classes AncfBeam2d and AncfCable3d derive
+/// from LineElement<2> and LineElement<3>.
+
+#include <Eigen/Core>
+
+namespace flexmb::ancf {
+
+/// Cross section and material of a line element (SI units).
+struct BeamSection {
+  double E = 0.0;        ///< Young's modulus [Pa]
+  double A = 0.0;        ///< cross-section area [m^2]
+  double I = 0.0;        ///< second moment of area for bending [m^4]
+  double rho = 0.0;      ///< density [kg/m^3]
+  double damping = 0.0;  ///< stiffness-proportional damping time beta [s]: stress += beta E * strain rate
+};
+
+/// Quadrature orders of the element integrals (Gauss-Legendre points, 1..6).
+/// The default integrates the axial energy with 2 points (selective reduced
+/// integration): with full integration the cubic element locks in bending
+/// of slender beams (membrane locking; docs/design.md "ANCF beams" shows the
+/// convergence of both).
+/// The 2-point rule alone leaves one axial hourglass mode (r' varying along
+/// the tangent as (xi - g1)(xi - g2), zero at both Gauss points, continuous
+/// across elements). A fraction alpha = min(1, hourglass * I / (A h^2)) of
+/// the axial energy (h the element length) is integrated with
+/// `axial_full_points` to give that mode a stiffness of the order of the
+/// bending stiffness (hourglass control scaled by EI, so that it does not
+/// bring the locking back for slender elements).
+struct QuadratureOrder {
+  int axial = 2;              ///< points for the (reduced) axial energy
+  int bending = 4;            ///< points for the bending energy (the integrand is rational: 4 is near exact)
+  double hourglass = 0.1;     ///< hourglass control factor, >= 0 (0: none)
+  int axial_full_points = 5;  ///< points of the fully integrated fraction
+};
+
+/// Gauss-Legendre points on [0, 1] and their weights (sum 1), n = 1..6.
+/// Throws InputError for other n.
+void GaussPoints01(int n, const double*& xi, const double*& w);
+
+/// ANCF line element in D dimensions (D = 2 or 3). All quantities in world
+/// components; s is the reference arc length [m] from node 0.
+template <int D>
+class LineElement {
+ public:
+  /// Number of nodal coordinates (r, r' at two nodes).
+  static constexpr int kDof = 4 * D;
+  /// Number of bending-strain components (1 in 2D, 3 in 3D).
+  static constexpr int kCurv = D == 2 ? 1 : 3;
+  using VecD = Eigen::Matrix<double, D, 1>;
+  using Vec = Eigen::Matrix<double, kDof, 1>;
+  using Mat = Eigen::Matrix<double, kDof, kDof>;
+  using ShapeMat = Eigen::Matrix<double, D, kDof>;
+  using VecK = Eigen::Matrix<double, kCurv, 1>;
+
+  /// Element of reference length `length` [m] with the given section; throws
+  /// InputError if length, E, A, I or rho is not positive, or damping < 0.
+  LineElement(double length, const BeamSection& section, const QuadratureOrder& order = {});
+
+  /// Reference length [m].
+  double length() const { return length_; }
+  /// Section and material.
+  const BeamSection& section() const { return section_; }
+  /// Constant consistent mass matrix int rho A S^T S ds [kg].
+  const Mat& MassMatrix() const { return mass_; }
+
+  /// Shape matrix S(xi) (D x kDof) at xi = s / L in [0, 1]: r = S e.
+  ShapeMat Shape(double xi) const;
+  /// dS/ds [1/m] at xi: r' = S' e.
+  ShapeMat ShapeSlope(double xi) const;
+  /// d2S/ds2 [1/m^2] at xi: r'' = S'' e.
+  ShapeMat ShapeCurvature(double xi) const;
+
+  /// Position r(xi) [m].
+  VecD Position(const Vec& e, double xi) const { return Shape(xi) * e; }
+  /// Slope r'(xi) (dimensionless).
+  VecD Slope(const Vec& e, double xi) const { return ShapeSlope(xi) * e; }
+
+  /// Axial strain |r'| - 1 at xi.
+  double AxialStrain(const Vec& e, double xi) const;
+  /// Bending strain (r' x r'') / |r'|^2 at xi [1/m].
+  VecK Curvature(const Vec& e, double xi) const;
+
+  /// Strain energy [J] at e.
+  double StrainEnergy(const Vec& e) const;
+
+  /// Adds the elastic and structural damping generalized forces at (e, edot)
+  /// to Q (positive = applied to the coordinates; the elastic part is
+  /// -dW/de) and their derivatives dQ/de and dQ/dedot to dQde, dQdedot.
+  void AddInternalForces(const Vec& e, const Vec& edot, Vec& Q, Mat& dQde, Mat& dQdedot) const;
+
+  /// Generalized force of a constant load per unit reference length f [N/m]
+  /// (gravity: f = rho A g): int S^T f ds (exact).
+  Vec DistributedLoad(const VecD& f) const;
+
+  /// Nodal coordinates of a straight, unstrained element from p0 along the
+  /// unit direction `dir`.
+  Vec StraightCoordinates(const VecD& p0, const VecD& dir) const;
+
+ protected:
+  /// Reference bending strain (initial curvature) kappa_0 [1/m]; zero unless set.
+  VecK kappa0_ = VecK::Zero();
+
+ private:
+  // strains and their first and second derivatives at one point
+  void AxialTerms(const ShapeMat& Sx, const Vec& e, double& eps, Vec& deps, Mat& ddeps) const;
+  void BendingTerms(const ShapeMat& Sx, const ShapeMat& Sxx, const Vec& e, int k, double& kap,
+                    Vec& dkap, Mat& ddkap) const;
+
+  double length_;
+  BeamSection section_;
+  QuadratureOrder order_;
+  double axial_full_ = 0.0;  // fraction of the axial energy integrated fully
+  Mat mass_;
+};
+
+extern template class LineElement<2>;
+extern template class LineElement<3>;
+
+}  // namespace flexmb::ancf

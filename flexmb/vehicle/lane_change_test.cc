@@ -1,0 +1,337 @@
+#include "flexmb/vehicle/lane_change_test.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <chrono>
+#include <ctime>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+
+#include "flexmb/bodies/rigid_body.h"
+#include "flexmb/common/error.h"
+#include "flexmb/io/json_text.h"
+#include "flexmb/io/parse_context.h"
+#include "flexmb/solver/simulator.h"
+#include "flexmb/vehicle/driver.h"
+#include "flexmb/vehicle/lane_change_course.h"
+#include "flexmb/vehicle/truck.h"
+
+namespace flexmb::vehicle {
+namespace {
+
+using io::JsonNumber;
+using io::JsonString;
+constexpr double kDeg = 180.0 / std::numbers::pi;
+
+/// Thrown by the observer to end the run (test distance reached or failure).
+struct EndOfTest {};
+
+/// Everything a lane-change file holds.
+struct LaneChangeFile {
+  double speed_kmh = 55.0;
+  std::string frame = "rigid";
+  double mu = 0.8;
+  LaneChangeCourseData course;
+  DriverData driver;
+  double dt = 0.002, rho_inf = 0.8, output_interval = 0.01, newton_tol = 1e-10;
+  TruckData truck;
+};
+
+LaneChangeFile ReadFile(const std::string& path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw InputError(std::string("cannot read the lane-change file: ") + e.what(), {path, 0, ""});
+  }
+  Model scratch;
+  ParseContext ctx(path, scratch);
+  LaneChangeFile f;
+  ctx.SetEntity("lane-change file");
+  ctx.CheckKeys(root, {"lane_change_test", "truck", "name", "note"});
+  const YAML::Node t = root["lane_change_test"];
+  ctx.SetEntity("lane_change_test");
+  ctx.CheckKeys(t, {"entry_speed_kmh", "frame", "road_mu", "course", "driver", "solver"});
+  f.speed_kmh = ctx.Double(t, "entry_speed_kmh", f.speed_kmh);
+  f.frame = ctx.String(t, "frame", f.frame);
+  f.mu = ctx.Positive(t, "road_mu");
+  if (const YAML::Node c = t["course"]) {
+    ctx.SetEntity("course");
+    ctx.CheckKeys(c, {"section1_length", "section2_length", "section1_width", "section3_width", "offset"});
+    LaneChangeCourseData& cd = f.course;
+    cd.section1_length = ctx.Double(c, "section1_length", cd.section1_length);
+    cd.section2_length = ctx.Double(c, "section2_length", cd.section2_length);
+    cd.section1_width = ctx.Double(c, "section1_width", cd.section1_width);
+    cd.section3_width = ctx.Double(c, "section3_width", cd.section3_width);
+    cd.offset = ctx.Double(c, "offset", cd.offset);
+  }
+  if (const YAML::Node d = t["driver"]) {
+    ctx.SetEntity("driver");
+    ctx.CheckKeys(d, {"preview_time", "min_preview", "max_wheel_angle_deg", "max_wheel_rate_deg", "neutral_in_section3",
+                      "speed_kp", "speed_ki", "max_drive_torque", "hold_speed"});
+    DriverData& dd = f.driver;
+    dd.preview_time = ctx.Double(d, "preview_time", dd.preview_time);
+    dd.min_preview = ctx.Double(d, "min_preview", dd.min_preview);
+    dd.max_wheel_angle = ctx.Double(d, "max_wheel_angle_deg", dd.max_wheel_angle * kDeg) / kDeg;
+    dd.max_wheel_rate = ctx.Double(d, "max_wheel_rate_deg", dd.max_wheel_rate * kDeg) / kDeg;
+    dd.neutral_in_section3 = ctx.Bool(d, "neutral_in_section3", dd.neutral_in_section3);
+    dd.speed_kp = ctx.Double(d, "speed_kp", dd.speed_kp);
+    dd.speed_ki = ctx.Double(d, "speed_ki", dd.speed_ki);
+    dd.max_drive_torque = ctx.Double(d, "max_drive_torque", dd.max_drive_torque);
+    dd.hold_speed = ctx.Bool(d, "hold_speed", dd.hold_speed);
+  }
+  if (const YAML::Node s = t["solver"]) {
+    ctx.SetEntity("solver");
+    ctx.CheckKeys(s, {"dt", "rho_inf", "output_interval", "newton_tol"});
+    f.dt = ctx.Positive(s, "dt");
+    f.rho_inf = ctx.Double(s, "rho_inf", f.rho_inf);
+    f.output_interval = ctx.Double(s, "output_interval", f.output_interval);
+    f.newton_tol = ctx.Positive(s, "newton_tol");
+  }
+  const YAML::Node tr = root["truck"];
+  if (!tr) ctx.Fail(root, "missing the 'truck' map");
+  f.truck = ParseTruck(tr, ctx, std::filesystem::path(path).parent_path().string());
+  f.driver.steering_ratio = f.truck.steering_ratio;
+  return f;
+}
+
+// roll, pitch, yaw (z-y-x) of a rotation matrix [rad]
+Vec3 RollPitchYaw(const Mat3& R) {
+  return Vec3(std::atan2(R(2, 1), R(2, 2)), -std::asin(std::clamp(R(2, 0), -1.0, 1.0)), std::atan2(R(1, 0), R(0, 0)));
+}
+
+}  // namespace
+
+bool IsLaneChangeFile(const std::string& path) {
+  try {
+    const YAML::Node root = YAML::LoadFile(path);
+    return root.IsMap() && root["lane_change_test"];
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+TruckData LoadLaneChangeTruck(const std::string& file) { return ReadFile(file).truck; }
+
+LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
+  LaneChangeFile f = ReadFile(opt.file);
+  if (opt.speed_kmh) f.speed_kmh = *opt.speed_kmh;
+  if (opt.frame) f.frame = *opt.frame;
+  if (opt.dt) f.dt = *opt.dt;
+  if (!std::isfinite(f.speed_kmh) || f.speed_kmh < 0) throw InputError("entry speed must be >= 0 km/h");
+  if (f.frame == "elastic")
+    throw InputError("the elastic frame is not available yet (issue 7, part 2); use --frame rigid");
+  if (f.frame != "rigid") throw InputError("frame must be 'rigid' or 'elastic', got '" + f.frame + "'");
+  if (!(f.dt > 0)) throw InputError("dt must be positive");
+
+  const double v0 = f.speed_kmh / 3.6;
+  const LaneChangeCourse course(f.course);
+  Driver driver(f.driver, course, v0);
+  Model model;
+  model.name = "truck_lane_change";
+  model.solver.dt = f.dt;
+  model.solver.rho_inf = f.rho_inf;
+  model.solver.dt_min = 1e-6 * f.dt;
+  model.solver.newton_tol = f.newton_tol;
+  const TruckHandles h =
+      BuildTruck(f.truck, v0, f.mu, driver.steering_wheel_angle(), driver.drive_torque(), model);
+  model.Finalize();
+
+  LaneChangeResult r;
+  r.entry_speed_kmh = f.speed_kmh;
+  const std::array<double, 2> stat = StaticAxleLoads(f.truck, -model.gravity_W.z());
+  r.static_axle_load[0] = stat[0];
+  r.static_axle_load[1] = stat[1];
+  r.min_axle_load[0] = r.min_axle_load[1] = 1e300;
+  r.min_corridor_margin = 1e300;
+  const double distance = course.TestDistance();
+  const bool by_time = v0 <= 0.1;
+  const double t_limit = by_time ? 10.0 : 1.5 * distance / v0 + 5.0;
+
+  std::FILE* csv = nullptr;
+  if (!opt.out_dir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(opt.out_dir, ec);
+    csv = std::fopen((std::filesystem::path(opt.out_dir) / "results.csv").string().c_str(), "w");
+    if (!csv) throw InputError("cannot write results.csv", {opt.out_dir, 0, ""});
+    std::fprintf(csv,
+                 "time,x,y,centre_line_y,speed_kmh,lateral_acceleration,steering_wheel_angle_deg,road_wheel_angle_deg,"
+                 "roll_deg,pitch_deg,yaw_deg,yaw_rate_degps,front_axle_load_kN,rear_axle_load_kN,fz_fl_kN,fz_fr_kN,"
+                 "fz_rl_kN,fz_rr_kN,liftoff_fl,liftoff_fr,liftoff_rl,liftoff_rr,corridor_margin,drive_torque_kNm,"
+                 "wheel_angle_left_deg,wheel_angle_right_deg\n");
+  }
+
+  Simulator sim(model);
+  const auto wall0 = std::chrono::steady_clock::now();
+  const std::clock_t cpu0 = std::clock();
+  double next_row = 0.0;
+  const double x0 = 0.0;
+  const auto* frame_body = model.bodies[h.frame_body].get();
+  try {
+    sim.Initialize();
+    sim.Run(t_limit, 0.0, [&](const State& st, const Workspace& ws) {
+      const MarkerState& fr = ws.markers[h.frame_ref];
+      const Vec3 rpy = RollPitchYaw(fr.R_WM);
+      const double yaw = rpy.z();
+      const Vec3 ex(std::cos(yaw), std::sin(yaw), 0), ey(-std::sin(yaw), std::cos(yaw), 0);
+      const Vec3 pf = ws.markers[h.front_axle_ref].p_WM, pr = ws.markers[h.rear_axle_ref].p_WM;
+      const double speed = fr.v_WM.dot(ex);
+      const Vec3 acc = ws.vdot.segment<3>(frame_body->v_offset);
+      const double ay = acc.dot(ey);
+      const double yaw_rate = fr.w_WM.z();
+
+      // controllers, held over the next step
+      driver.Update(VehicleView{st.t, pf.x(), pr.x(), pr.y(), yaw, speed, f.truck.wheelbase});
+
+      // tires, axle loads, lift-off
+      double fz[4];
+      int lift[4];
+      for (int k = 0; k < 4; ++k) {
+        const MarkerState& wm = ws.markers[h.wheel_marker[k]];
+        TireContact c;
+        static_cast<const Tire&>(*model.forces[h.tire_force[k]]).Wrench(wm.p_WM, wm.R_WM, wm.v_WM, wm.w_WM, &c);
+        fz[k] = c.fz;
+        lift[k] = c.fz <= 0.0 ? 1 : 0;
+      }
+      const double front = fz[0] + fz[1], rear = fz[2] + fz[3];
+      // corridor margin of the gauge points
+      double margin = 1e300;
+      for (int g : h.gauge) margin = std::min(margin, course.Margin(ws.markers[g].p_WM.x(), ws.markers[g].p_WM.y()));
+
+      // actual road-wheel angles (kingpin joint coordinates)
+      auto KingpinAngle = [&](int k) {
+        const Joint& j = *model.joints[h.kingpin_joint[k]];
+        return j.Coordinate(0, ws.markers[j.marker_i], ws.markers[j.marker_j], nullptr);
+      };
+      // the settling of the first instant is not part of the test
+      const bool record = st.t > 0.0;
+      if (record) {
+        r.min_corridor_margin = std::min(r.min_corridor_margin, margin);
+        r.max_lateral_acceleration = std::max(r.max_lateral_acceleration, std::abs(ay));
+        r.max_roll_deg = std::max(r.max_roll_deg, std::abs(rpy.x()) * kDeg);
+        r.max_steering_wheel_deg = std::max(r.max_steering_wheel_deg, std::abs(*driver.steering_wheel_angle()) * kDeg);
+        r.max_yaw_rate_deg = std::max(r.max_yaw_rate_deg, std::abs(yaw_rate) * kDeg);
+        r.min_axle_load[0] = std::min(r.min_axle_load[0], front);
+        r.min_axle_load[1] = std::min(r.min_axle_load[1], rear);
+        if (margin < 0 && r.corridor_exit_time < 0) r.corridor_exit_time = st.t;
+        if ((lift[0] || lift[1] || lift[2] || lift[3]) && r.lift_off_time < 0) r.lift_off_time = st.t;
+      }
+      r.t_end = st.t;
+      r.distance = pf.x() - x0;
+      const bool done = by_time ? st.t >= 10.0 - 1e-9 : r.distance >= distance;
+      if (csv && (st.t >= next_row - 1e-9 || done)) {
+        next_row = st.t + f.output_interval;
+        std::fprintf(csv,
+                     "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%d,%d,%d,"
+                     "%d,%.6g,%.6g,%.6g,%.6g\n",
+                     st.t, pf.x(), pf.y(), course.CentreLine(pf.x()), speed * 3.6, ay,
+                     *driver.steering_wheel_angle() * kDeg, driver.road_wheel_angle() * kDeg, rpy.x() * kDeg,
+                     rpy.y() * kDeg, yaw * kDeg, yaw_rate * kDeg, front / 1e3, rear / 1e3, fz[0] / 1e3, fz[1] / 1e3,
+                     fz[2] / 1e3, fz[3] / 1e3, lift[0], lift[1], lift[2], lift[3], margin,
+                     *driver.drive_torque() / 1e3, KingpinAngle(0) * kDeg, KingpinAngle(1) * kDeg);
+      }
+      if (done) throw EndOfTest{};
+      // a truck rolled past 45 degrees is over: end the run as failed
+      if (record && std::abs(rpy.x()) > std::numbers::pi / 4) {
+        r.rolled_over = true;
+        throw EndOfTest{};
+      }
+      if (opt.stop_on_failure && (r.corridor_exit_time >= 0 || r.lift_off_time >= 0)) throw EndOfTest{};
+    });
+    r.message = "the time limit was reached before the test distance";
+  } catch (const EndOfTest&) {
+    r.completed = !r.rolled_over && (by_time ? r.t_end >= 10.0 - 1e-9 : r.distance >= distance);
+    if (r.rolled_over) r.message = "the truck rolled over (|roll| > 45 deg)";
+  } catch (const NumericalError& e) {
+    r.message = e.what();
+  }
+  if (csv) std::fclose(csv);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  r.steps = sim.stats().steps;
+  r.newton_iterations = sim.stats().newton_iterations;
+  r.cpu_time_s = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
+  r.wall_time_s = wall;
+  r.real_time_factor = wall > 0 ? r.t_end / wall : 0.0;
+  r.passed = r.completed && r.corridor_exit_time < 0 && r.lift_off_time < 0;
+  if (r.min_corridor_margin > 1e299) r.min_corridor_margin = 0;
+  if (!opt.out_dir.empty()) {
+    std::ofstream js(std::filesystem::path(opt.out_dir) / "summary.json");
+    js << LaneChangeJson(r);
+  }
+  if (opt.info)
+    std::fprintf(opt.info,
+                 "lane change at %.1f km/h (rigid frame): %s; %s after %.1f m, t = %.2f s; max |a_y| %.2f m/s^2, "
+                 "max |roll| %.2f deg, min corridor margin %.3f m; %.2f s wall time (real-time factor %.1f; %.1f on CPU time)\n",
+                 r.entry_speed_kmh, r.passed ? "passed" : "failed", r.completed ? "completed" : "stopped", r.distance,
+                 r.t_end, r.max_lateral_acceleration, r.max_roll_deg, r.min_corridor_margin, r.wall_time_s,
+                 r.real_time_factor, r.cpu_time_s > 0 ? r.t_end / r.cpu_time_s : 0.0);
+  return r;
+}
+
+double MaxPassSpeed(const LaneChangeOptions& base, double low, double high, double tol, std::FILE* log,
+                    bool* low_passed) {
+  if (!(low > 0) || !(high > low) || !(tol > 0)) throw InputError("max-speed: need 0 < low < high and tol > 0");
+  auto passes = [&](double v) {
+    LaneChangeOptions o = base;
+    o.speed_kmh = v;
+    o.out_dir.clear();
+    o.stop_on_failure = true;
+    o.info = nullptr;
+    const LaneChangeResult r = RunLaneChange(o);
+    if (log)
+      std::fprintf(log, "  %.2f km/h: %s (corridor margin %.3f m%s%s)\n", v, r.passed ? "passed" : "failed",
+                   r.min_corridor_margin, r.lift_off_time >= 0 ? ", wheel lift-off" : "",
+                   r.rolled_over ? ", rolled over" : "");
+    return r.passed;
+  };
+  *low_passed = passes(low);
+  if (!*low_passed) return low;
+  if (passes(high)) return high;
+  while (high - low > tol) {
+    const double mid = 0.5 * (low + high);
+    (passes(mid) ? low : high) = mid;
+  }
+  return low;
+}
+
+std::string LaneChangeJson(const LaneChangeResult& r) {
+  std::string j = "{\n";
+  auto add = [&](const char* key, const std::string& value, bool last = false) {
+    j += "  " + JsonString(key) + ": " + value + (last ? "\n" : ",\n");
+  };
+  auto b = [](bool v) { return std::string(v ? "true" : "false"); };
+  add("status", JsonString(r.completed ? "ok" : "failed"));
+  add("message", JsonString(r.message));
+  add("frame", JsonString("rigid"));
+  add("passed", b(r.passed));
+  add("completed", b(r.completed));
+  add("entry_speed_kmh", JsonNumber(r.entry_speed_kmh));
+  add("distance", JsonNumber(r.distance));
+  add("t_end", JsonNumber(r.t_end));
+  add("corridor_exit", b(r.corridor_exit_time >= 0));
+  add("corridor_exit_time", JsonNumber(r.corridor_exit_time));
+  add("rolled_over", b(r.rolled_over));
+  add("lift_off", b(r.lift_off_time >= 0));
+  add("lift_off_time", JsonNumber(r.lift_off_time));
+  add("min_corridor_margin", JsonNumber(r.min_corridor_margin));
+  add("max_lateral_acceleration", JsonNumber(r.max_lateral_acceleration));
+  add("max_roll_deg", JsonNumber(r.max_roll_deg));
+  add("max_steering_wheel_deg", JsonNumber(r.max_steering_wheel_deg));
+  add("max_yaw_rate_degps", JsonNumber(r.max_yaw_rate_deg));
+  add("min_front_axle_load", JsonNumber(r.min_axle_load[0]));
+  add("min_rear_axle_load", JsonNumber(r.min_axle_load[1]));
+  add("static_front_axle_load", JsonNumber(r.static_axle_load[0]));
+  add("static_rear_axle_load", JsonNumber(r.static_axle_load[1]));
+  add("steps", std::to_string(r.steps));
+  add("newton_iterations", std::to_string(r.newton_iterations));
+  add("wall_time_s", JsonNumber(r.wall_time_s));
+  add("cpu_time_s", JsonNumber(r.cpu_time_s));
+  add("real_time_factor_cpu", JsonNumber(r.cpu_time_s > 0 ? r.t_end / r.cpu_time_s : 0.0));
+  add("real_time_factor", JsonNumber(r.real_time_factor), true);
+  return j + "}\n";
+}
+
+}  // namespace flexmb::vehicle

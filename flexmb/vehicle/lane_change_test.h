@@ -1,0 +1,75 @@
+#pragma once
+/// \file lane_change_test.h
+/// The lane-change test ("perestavka") of a truck: reads a lane-change file
+/// (examples/truck_lane_change/truck.yaml), builds the truck, drives it
+/// through the course with the closed-loop driver, watches the corridor and
+/// wheel lift-off, and writes results.csv and summary.json.
+
+#include <cstdio>
+#include <optional>
+#include <string>
+
+#include "flexmb/vehicle/truck.h"
+
+namespace flexmb::vehicle {
+
+/// What a lane-change run should do.
+struct LaneChangeOptions {
+  std::string file;                   ///< lane-change YAML file
+  std::string out_dir;                ///< output directory; empty: write nothing
+  std::optional<double> speed_kmh;    ///< entry speed [km/h], overrides the file
+  std::optional<std::string> frame;   ///< "rigid" or "elastic", overrides the file
+  std::optional<double> dt;           ///< step size [s], overrides the file
+  bool stop_on_failure = false;       ///< end the run at the first corridor exit or lift-off
+  std::FILE* info = nullptr;          ///< one-line report (nullptr: silent)
+};
+
+/// Outcome of a lane-change run (also written as summary.json).
+struct LaneChangeResult {
+  bool completed = false;             ///< reached the end of the test distance (or 10 s)
+  bool passed = false;                ///< completed, no corridor exit, no lift-off
+  bool rolled_over = false;           ///< the run ended because |roll| exceeded 45 deg
+  std::string message;                ///< error message if the simulation failed
+  double entry_speed_kmh = 0.0;       ///< [km/h]
+  double distance = 0.0;              ///< front-axle travel reached [m]
+  double t_end = 0.0;                 ///< simulated time [s]
+  double corridor_exit_time = -1.0;   ///< first time a gauge point left the corridor [s], -1: never
+  double lift_off_time = -1.0;        ///< first time a tire lost contact [s], -1: never
+  double min_corridor_margin = 0.0;   ///< smallest margin of any gauge point [m] (negative: outside)
+  double max_lateral_acceleration = 0.0;  ///< max |a_y| of the frame's centre of mass [m/s^2]
+  double max_roll_deg = 0.0;          ///< max |roll| of the frame [deg]
+  double max_steering_wheel_deg = 0.0;  ///< max |steering-wheel angle| [deg]
+  double max_yaw_rate_deg = 0.0;      ///< max |yaw rate| [deg/s]
+  double min_axle_load[2] = {0, 0};   ///< smallest front, rear axle load [N]
+  double static_axle_load[2] = {0, 0};  ///< lever-rule static axle loads [N]
+  long steps = 0;                     ///< accepted steps
+  long newton_iterations = 0;         ///< Newton iterations of all step attempts
+  double cpu_time_s = 0.0;            ///< CPU time of the integration (process clock) [s]
+  double wall_time_s = 0.0;           ///< wall time of the integration [s]
+  double real_time_factor = 0.0;      ///< simulated time / wall time
+};
+
+/// True if the YAML file at `path` is a lane-change file (top-level key
+/// `lane_change_test`). False for unreadable files (the normal loader then
+/// reports the fault).
+bool IsLaneChangeFile(const std::string& path);
+
+/// Runs the test. Throws InputError for a bad file or option; a numerical
+/// failure of the simulation or a rollover (|roll| > 45 deg) ends the run
+/// with completed = false and the message set (results up to then are kept).
+LaneChangeResult RunLaneChange(const LaneChangeOptions& options);
+
+/// Highest entry speed [km/h] in [low, high] at which the test is passed,
+/// by bisection to `tol` [km/h] (each trial stops at the first failure).
+/// Returns low - 0 if even `low` fails (passed flag in `*at_low`).
+double MaxPassSpeed(const LaneChangeOptions& base, double low, double high, double tol, std::FILE* log,
+                    bool* low_passed);
+
+/// The truck's parameters of a lane-change file (tire files resolved
+/// relative to it); throws InputError like RunLaneChange.
+TruckData LoadLaneChangeTruck(const std::string& file);
+
+/// The result as a JSON object.
+std::string LaneChangeJson(const LaneChangeResult& r);
+
+}  // namespace flexmb::vehicle

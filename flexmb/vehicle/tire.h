@@ -1,0 +1,102 @@
+#pragma once
+/// \file tire.h
+/// Tire force element on a flat road: a Magic Formula-type (Pacejka 2002
+/// simplified) longitudinal and lateral force with combined slip and load
+/// sensitivity, a vertical spring-damper with lift-off, an effective rolling
+/// radius, a pneumatic-trail aligning moment and rolling resistance.
+
+#include <string>
+
+#include "flexmb/forces/force_element.h"
+
+namespace flexmb::vehicle {
+
+/// Coefficients of one tire (or of each tire of an identical twin set),
+/// following the naming of Pacejka, "Tire and Vehicle Dynamics", 3rd ed.,
+/// ch. 4.3.2 (MF 2002), with lambda scale factors 1 and without camber,
+/// turn slip and the shift terms.
+struct TireData {
+  int count = 1;                 ///< tires in the set (2: twin tires sharing the load equally)
+  double unloaded_radius = 0.5;  ///< R0 [m], > 0
+  double vertical_stiffness = 8e5;  ///< per tire [N/m], > 0
+  double vertical_damping = 1e3;    ///< per tire [N s/m], >= 0
+  double rolling_radius_factor = 1.0 / 3.0;  ///< Re = R0 - f * deflection, in [0, 1]
+  double nominal_load = 25e3;    ///< Fz0 per tire [N], > 0
+  double pcx1 = 1.65;            ///< longitudinal shape factor C_x
+  double pdx1 = 0.8;             ///< longitudinal peak friction at Fz0 (times the road mu)
+  double pdx2 = -0.1;            ///< load dependence of the longitudinal peak friction
+  double pex1 = 0.0;             ///< longitudinal curvature factor E_x, <= 1
+  double pkx1 = 15.0;            ///< longitudinal slip stiffness K_x / Fz [-]
+  double pcy1 = 1.3;             ///< lateral shape factor C_y
+  double pdy1 = 0.8;             ///< lateral peak friction at Fz0 (times the road mu)
+  double pdy2 = -0.1;            ///< load dependence of the lateral peak friction
+  double pey1 = -0.5;            ///< lateral curvature factor E_y, <= 1
+  double pky1 = 8.0;             ///< max cornering stiffness / Fz0 [1/rad]
+  double pky2 = 2.0;             ///< load (in Fz0) at which the cornering stiffness peaks, /2
+  double rbx1 = 12.0;            ///< combined slip: Fx reduction by slip angle, Gxa = cos(atan(rbx1 alpha))
+  double rby1 = 10.0;            ///< combined slip: Fy reduction by slip ratio, Gyk = cos(atan(rby1 kappa))
+  double trail = 0.04;           ///< pneumatic trail at zero slip angle [m]
+  double trail_decay = 8.0;      ///< trail t = trail * cos(atan(trail_decay alpha)) [1/rad]
+  double rolling_resistance = 0.007;  ///< rolling resistance coefficient f_r [-]
+  double low_speed = 1.0;        ///< v_low in the slip denominator sqrt(Vx^2 + v_low^2) [m/s], > 0
+};
+
+/// Contact quantities of one evaluation of a Tire (for sensors and tests).
+struct TireContact {
+  double deflection = 0.0;  ///< R0 minus the centre height along the wheel plane [m]
+  double fz = 0.0;          ///< vertical force of the set [N] (0 when lifted off)
+  double fx = 0.0;          ///< longitudinal force of the set [N]
+  double fy = 0.0;          ///< lateral force of the set [N]
+  double kappa = 0.0;       ///< longitudinal slip ratio [-]
+  double alpha = 0.0;       ///< slip angle [rad]
+  Vec3 contact_W = Vec3::Zero();  ///< contact point on the road [m]
+};
+
+/// Tire on the road plane z = 0 (normal +z of the world), acting on one marker
+/// (marker_j = -1) at the wheel centre whose z axis is the spin axis (the
+/// axis of the wheel's revolute joint; its sign is free, the road frame
+/// follows it). Road frame: x_t = normalize(a x n) (forward for a wheel whose
+/// a points to the vehicle's left), y_t = n x x_t. With p the centre,
+/// gamma the inclination of the wheel plane, the loaded radius
+/// rho = p_z / cos(gamma) and contact point c = p - rho r (r the unit
+/// upward direction in the wheel plane):
+///   deflection d = R0 - rho, Fz = max(0, n (k d - c p'_z / cos(gamma))) (no pull),
+///   Vx = v . x_t, slip velocity Vsx = Vx - Re Omega (Omega = w . a signed
+///   so that forward rolling is positive, Re = R0 - f d), Vsy = v_c . y_t
+///   with v_c the velocity of the wheel material at c,
+///   kappa = -Vsx / V, alpha = atan(Vsy / V), V = sqrt(Vx^2 + v_low^2).
+/// Per tire (Fz1 = Fz / n, dfz = (Fz1 - Fz0)/Fz0):
+///   Fx0 = Dx sin(Cx atan(Bx k - Ex (Bx k - atan(Bx k)))), Dx = mu pdx1 (1 + pdx2 dfz) Fz1,
+///   Kx = pkx1 Fz1, Bx = Kx / (Cx Dx); Fy0 likewise in alpha with
+///   Ky = pky1 Fz0 sin(2 atan(Fz1 / (pky2 Fz0))), and Fy0 opposes Vsy;
+///   combined: Fx = Fx0 cos(atan(rbx1 alpha)), Fy = Fy0 cos(atan(rby1 kappa)).
+/// The set's force n (Fx x_t + Fy y_t) - f_r Fz tanh(Vx / 0.5 m/s) x_t +
+/// Fz n acts at c; the aligning moment -t n Fy s (s = tanh(Vx / 0.5 m/s),
+/// the trail lies behind the contact in the direction of travel) with
+/// t = trail cos(atan(trail_decay alpha)). Wrench about the wheel centre.
+/// Relaxation length is not modelled (no element states in the engine; see
+/// docs/design.md "Vehicle: tire tangent").
+/// K and C are central finite differences of the wrench (the element's
+/// documented choice, docs/design.md "Vehicle: tire tangent").
+class Tire final : public ForceElement {
+ public:
+  /// Throws InputError naming the element for a coefficient out of range
+  /// or a friction coefficient mu <= 0.
+  Tire(std::string name, const TireData& data, double mu);
+  const char* type() const override { return "tire"; }
+  void Evaluate(const MarkerState& mi, const MarkerState& mj, double t, ForceEval& e) const override;
+  /// Wrench (f, m) about the centre [N, N m] and the contact quantities for
+  /// a wheel centre at p with spin axis a = R.col(2), velocity v and
+  /// angular velocity w (world).
+  Vec6 Wrench(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, TireContact* contact) const;
+  /// The tire's coefficients.
+  const TireData& data() const { return data_; }
+  /// Road friction coefficient [-].
+  double mu() const { return mu_; }
+
+ private:
+  TireData data_;
+  double mu_;
+};
+
+}  // namespace flexmb::vehicle

@@ -1,0 +1,327 @@
+#include "flexmb/vehicle/truck.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include "flexmb/bodies/rigid_body.h"
+#include "flexmb/common/error.h"
+#include "flexmb/forces/joint_motor.h"
+#include "flexmb/forces/rotational_spring_damper.h"
+#include "flexmb/forces/spring_damper.h"
+#include "flexmb/io/parse_context.h"
+#include "flexmb/joints/distance.h"
+#include "flexmb/joints/fixed.h"
+#include "flexmb/joints/revolute.h"
+#include "flexmb/vehicle/command_signal.h"
+
+namespace flexmb::vehicle {
+namespace {
+
+// marker orientations: z axis along world y (wheel spin, arm pivot) and x (axle roll)
+Mat3 AxisY() {
+  Mat3 R;
+  R << 1, 0, 0, 0, 0, 1, 0, -1, 0;
+  return R;
+}
+Mat3 AxisX() {
+  Mat3 R;
+  R << 0, 0, 1, 1, 0, 0, 0, 1, 0;
+  return R;
+}
+
+// mass of the parts moving with an axle (axle, wheels, knuckles) and of its arm
+double UnsprungMass(const TruckData& d, bool front) {
+  return front ? d.front_axle.mass + 2 * (d.front_wheel.mass + d.knuckle.mass)
+               : d.rear_axle.mass + 2 * d.rear_wheel.mass;
+}
+
+int AddPart(Model& m, const std::string& name, const PartData& p, const Vec3& cg, double speed, const Vec3& w) {
+  RigidBodyData b;
+  b.mass = p.mass;
+  b.inertia_C = p.inertia.asDiagonal();
+  b.c_B = cg;
+  // the body frame is the vehicle frame: its origin's velocity gives the
+  // centre of mass the forward speed
+  b.v_WB = Vec3(speed, 0, 0) - w.cross(cg);
+  b.w_WB = w;
+  return m.AddBody(std::make_unique<RigidBody>(name, b));
+}
+
+void ReadPart(const YAML::Node& n, ParseContext& ctx, const char* key, PartData& p) {
+  const YAML::Node& node = n[key];
+  ctx.SetEntity(std::string("truck part '") + key + "'");
+  if (!node) ctx.Fail(n, std::string("missing part '") + key + "'");
+  ctx.CheckKeys(node, {"mass", "cg", "inertia", "note"});
+  p.mass = ctx.Positive(node, "mass");
+  p.cg = ctx.Vector3(node, "cg", Vec3::Zero());
+  p.inertia = ctx.Vector3(node, "inertia");
+  if (p.inertia.minCoeff() <= 0) ctx.Fail(node["inertia"], "principal inertias must be positive");
+}
+
+void ReadSuspension(const YAML::Node& n, ParseContext& ctx, const char* key, SuspensionData& s) {
+  const YAML::Node& node = n[key];
+  ctx.SetEntity(std::string("suspension '") + key + "'");
+  if (!node) ctx.Fail(n, std::string("missing suspension '") + key + "'");
+  ctx.CheckKeys(node, {"spring_stiffness", "spring_damping", "spring_half_spacing", "spring_length", "arm_length",
+                       "stabilizer_stiffness", "stabilizer_damping"});
+  s.spring_stiffness = ctx.Positive(node, "spring_stiffness");
+  s.spring_damping = ctx.Double(node, "spring_damping", s.spring_damping);
+  s.spring_half_spacing = ctx.Positive(node, "spring_half_spacing");
+  s.spring_length = ctx.Positive(node, "spring_length");
+  s.arm_length = ctx.Positive(node, "arm_length");
+  s.stabilizer_stiffness = ctx.Double(node, "stabilizer_stiffness", 0.0);
+  s.stabilizer_damping = ctx.Double(node, "stabilizer_damping", 0.0);
+}
+
+}  // namespace
+
+std::array<double, 2> StaticAxleLoads(const TruckData& d, double g) {
+  const double L = d.wheelbase;
+  double w = 0, moment = 0;  // total weight and its moment about the rear axle
+  auto add = [&](double mass, double x) {
+    w += mass * g;
+    moment += mass * g * (x + L);
+  };
+  for (const PartData* p : {&d.frame, &d.cab, &d.powertrain, &d.cargo}) add(p->mass, p->cg.x());
+  add(UnsprungMass(d, true), 0.0);
+  add(UnsprungMass(d, false), -L);
+  add(d.arm.mass, 0.5 * d.front.arm_length);
+  add(d.arm.mass, -L + 0.5 * d.rear.arm_length);
+  if (d.steering_linkage) add(d.pitman_arm_mass, d.drag_link_length);
+  const double front = moment / L;
+  return {front, w - front};
+}
+
+TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared_ptr<const double> steering_wheel,
+                        std::shared_ptr<const double> drive_torque, Model& m) {
+  const double g = -m.gravity_W.z();
+  const std::array<double, 2> loads = StaticAxleLoads(d, g);
+  TruckHandles h;
+  // static wheel-centre heights from the tire deflections
+  const double zf = d.front_tire.unloaded_radius - 0.5 * loads[0] / (d.front_tire.count * d.front_tire.vertical_stiffness);
+  const double zr = d.rear_tire.unloaded_radius - 0.5 * loads[1] / (d.rear_tire.count * d.rear_tire.vertical_stiffness);
+  h.wheel_centre_z = {zf, zr};
+  const double xr = -d.wheelbase;
+  const Vec3 zero = Vec3::Zero();
+  const Mat3 I = Mat3::Identity();
+
+  // sprung parts
+  const int frame = AddPart(m, "frame", d.frame, d.frame.cg, speed, zero);
+  h.frame_body = frame;
+  h.frame_ref = m.AddMarker(frame, "ref", d.frame.cg, I);
+  h.front_axle_ref = m.AddMarker(frame, "front_axle_ref", Vec3(0, 0, 0), I);
+  h.rear_axle_ref = m.AddMarker(frame, "rear_axle_ref", Vec3(xr, 0, 0), I);
+  const double hb = 0.5 * d.gauge_width;
+  h.gauge = {m.AddMarker(frame, "gauge_fl", Vec3(0, hb, zf), I), m.AddMarker(frame, "gauge_fr", Vec3(0, -hb, zf), I),
+             m.AddMarker(frame, "gauge_rl", Vec3(xr, hb, zr), I), m.AddMarker(frame, "gauge_rr", Vec3(xr, -hb, zr), I)};
+  for (const auto& [name, part] : {std::pair<const char*, const PartData*>{"cab", &d.cab},
+                                   {"powertrain", &d.powertrain},
+                                   {"cargo", &d.cargo}}) {
+    const int b = AddPart(m, name, *part, part->cg, speed, zero);
+    m.AddJoint(std::make_unique<FixedJoint>(std::string(name) + "_mount"),
+               m.AddMarker(frame, std::string(name) + "_mount", part->cg, I), m.AddMarker(b, "mount", part->cg, I));
+  }
+
+  // one axle: arm, axle, suspension springs, stabilizer; returns the axle body
+  auto axle = [&](bool front) {
+    const std::string side = front ? "front" : "rear";
+    const SuspensionData& s = front ? d.front : d.rear;
+    const double x = front ? 0.0 : xr, z = front ? zf : zr;
+    const PartData& ap = front ? d.front_axle : d.rear_axle;
+    const int arm = AddPart(m, side + "_arm", d.arm, Vec3(x + 0.5 * s.arm_length, 0, z), speed, zero);
+    const int ax = AddPart(m, side + "_axle", ap, Vec3(x, 0, z), speed, zero);
+    const Vec3 pivot(x + s.arm_length, 0, z), centre(x, 0, z);
+    m.AddJoint(std::make_unique<RevoluteJoint>(side + "_arm_pivot"), m.AddMarker(frame, side + "_arm_pivot", pivot, AxisY()),
+               m.AddMarker(arm, "pivot", pivot, AxisY()));
+    const int ri = m.AddMarker(arm, "roll", centre, AxisX()), rj = m.AddMarker(ax, "roll", centre, AxisX());
+    m.AddJoint(std::make_unique<RevoluteJoint>(side + "_axle_roll"), ri, rj);
+    RotationalSpringDamperLaw stab;
+    stab.stiffness = s.stabilizer_stiffness;
+    stab.damping = s.stabilizer_damping;
+    m.AddForce(std::make_unique<RotationalSpringDamper>(side + "_stabilizer", stab), ri, rj);
+    const double unsprung = UnsprungMass(d, front);
+    const double spring_load = 0.5 * (loads[front ? 0 : 1] - (unsprung + 0.5 * d.arm.mass) * g);
+    for (int k = 0; k < 2; ++k) {
+      const double y = k == 0 ? s.spring_half_spacing : -s.spring_half_spacing;
+      const std::string lr = k == 0 ? "left" : "right";
+      SpringDamperLaw law;
+      law.free_length = s.spring_length;
+      law.stiffness = s.spring_stiffness;
+      law.damping = s.spring_damping;
+      law.preload = -spring_load;
+      m.AddForce(std::make_unique<SpringDamper>(side + "_spring_" + lr, law),
+                 m.AddMarker(frame, side + "_spring_" + lr, Vec3(x, y, z + s.spring_length), I),
+                 m.AddMarker(ax, "spring_" + lr, Vec3(x, y, z), I));
+    }
+    return ax;
+  };
+
+  // wheel with its tire on carrier body `carrier`; returns the wheel joint
+  auto wheel = [&](const std::string& name, int carrier, const PartData& wp, const TireData& td, const Vec3& c, int k) {
+    const double re = td.unloaded_radius - td.rolling_radius_factor * (td.unloaded_radius - c.z());
+    const int wb = AddPart(m, name, wp, c, speed, Vec3(0, speed / re, 0));
+    const int jm = m.AddJoint(std::make_unique<RevoluteJoint>(name + "_bearing"),
+                              m.AddMarker(carrier, name + "_bearing", c, AxisY()), m.AddMarker(wb, "bearing", c, AxisY()));
+    const int wm = m.AddMarker(wb, "centre", c, AxisY());
+    h.wheel_marker[k] = wm;
+    h.tire_force[k] = m.AddForce(std::make_unique<Tire>(name + "_tire", td, mu), wm, -1);
+    return jm;
+  };
+
+  const int fa = axle(true);
+  const int ra = axle(false);
+  // steered knuckles on kingpin revolutes
+  std::array<int, 2> knuckle{};
+  std::array<Vec3, 2> kingpin{};
+  for (int k = 0; k < 2; ++k) {
+    const double sgn = k == 0 ? 1.0 : -1.0;
+    const std::string name = k == 0 ? "knuckle_left" : "knuckle_right";
+    kingpin[k] = Vec3(0, sgn * (0.5 * d.front_track - d.kingpin_offset), zf);
+    const Vec3 wc(0, sgn * 0.5 * d.front_track, zf);
+    knuckle[k] = AddPart(m, name, d.knuckle, Vec3(0, sgn * (0.5 * d.front_track - 0.5 * d.kingpin_offset), zf),
+                         speed, zero);
+    h.kingpin_joint[k] = m.AddJoint(std::make_unique<RevoluteJoint>(name + "_kingpin"),
+                                    m.AddMarker(fa, name + "_kingpin", kingpin[k], I),
+                                    m.AddMarker(knuckle[k], "kingpin", kingpin[k], I));
+    wheel(k == 0 ? "wheel_fl" : "wheel_fr", knuckle[k], d.front_wheel, d.front_tire, wc, k);
+  }
+  auto servo = [&](const std::string& name, int joint, double gain) {
+    auto target = std::make_shared<CommandSignal>(steering_wheel, gain);
+    m.AddForce(std::make_unique<JointMotor>(name, m.joints[joint].get(), 0, nullptr,
+                                            JointMotorPd{target, d.steering_stiffness, d.steering_damping}),
+               m.joints[joint]->marker_i, m.joints[joint]->marker_j);
+  };
+  if (!d.steering_linkage) {
+    for (int k = 0; k < 2; ++k)
+      servo(k == 0 ? "knuckle_left_servo" : "knuckle_right_servo", h.kingpin_joint[k], 1.0 / d.steering_ratio);
+  } else {
+    // pitman arm on the frame (axis y) hanging down, ahead of the left kingpin;
+    // its ball and the end of the left knuckle's inboard steering arm are
+    // joined by the drag link; a pitman rotation theta turns the knuckle by
+    // -theta (equal lever lengths)
+    const double a = d.pitman_arm_length, hz = 0.15;
+    const Vec3 arm_end = kingpin[0] + Vec3(0, -a, hz);
+    const Vec3 ball = arm_end + Vec3(d.drag_link_length, 0, 0);
+    const Vec3 pivot = ball + Vec3(0, 0, a);
+    PartData pitman;
+    pitman.mass = d.pitman_arm_mass;
+    pitman.inertia = Vec3(0.03, 0.03, 0.01);
+    const int pb = AddPart(m, "pitman_arm", pitman, 0.5 * (ball + pivot), speed, zero);
+    const int pj = m.AddJoint(std::make_unique<RevoluteJoint>("steering_gear"),
+                              m.AddMarker(frame, "steering_gear", pivot, AxisY()), m.AddMarker(pb, "gear", pivot, AxisY()));
+    m.AddJoint(std::make_unique<DistanceJoint>("drag_link", (ball - arm_end).norm()), m.AddMarker(pb, "ball", ball, I),
+               m.AddMarker(knuckle[0], "steering_arm", arm_end, I));
+    // one-piece tie rod between trapezoid arms aimed at the rear-axle centre
+    std::array<Vec3, 2> tr{};
+    for (int k = 0; k < 2; ++k) {
+      const Vec3 dir = (Vec3(xr, 0, zf) - kingpin[k]).normalized();
+      tr[k] = kingpin[k] + d.tie_rod_arm_length * dir;
+    }
+    m.AddJoint(std::make_unique<DistanceJoint>("tie_rod", (tr[0] - tr[1]).norm()),
+               m.AddMarker(knuckle[0], "tie_rod_arm", tr[0], I), m.AddMarker(knuckle[1], "tie_rod_arm", tr[1], I));
+    // the servo (column and gear) turns the pitman arm to -road-wheel angle
+    servo("steering_servo", pj, -1.0 / d.steering_ratio);
+  }
+  // rear wheels with the drive torque, half to each side
+  auto drive = std::make_shared<CommandSignal>(drive_torque, 0.5);
+  for (int k = 0; k < 2; ++k) {
+    const double sgn = k == 0 ? 1.0 : -1.0;
+    const std::string name = k == 0 ? "wheel_rl" : "wheel_rr";
+    const int jm = wheel(name, ra, d.rear_wheel, d.rear_tire, Vec3(xr, sgn * 0.5 * d.rear_track, zr), 2 + k);
+    m.AddForce(std::make_unique<JointMotor>(name + "_drive", m.joints[jm].get(), 0, drive),
+               m.joints[jm]->marker_i, m.joints[jm]->marker_j);
+  }
+  return h;
+}
+
+TireData LoadTireFile(const std::string& path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw InputError(std::string("cannot read the tire file: ") + e.what(), {path, 0, ""});
+  }
+  Model scratch;
+  ParseContext ctx(path, scratch);
+  ctx.SetEntity("tire data");
+  const YAML::Node t = root["tire"];
+  if (!t) ctx.Fail(root, "expected a top-level 'tire' map");
+  ctx.CheckKeys(t, {"name", "note", "count", "unloaded_radius", "vertical_stiffness", "vertical_damping",
+                    "rolling_radius_factor", "nominal_load", "pcx1", "pdx1", "pdx2", "pex1", "pkx1", "pcy1", "pdy1",
+                    "pdy2", "pey1", "pky1", "pky2", "rbx1", "rby1", "trail", "trail_decay", "rolling_resistance",
+                    "low_speed"});
+  TireData d;
+  d.count = ctx.Integer(t, "count", d.count);
+  d.unloaded_radius = ctx.Positive(t, "unloaded_radius");
+  d.vertical_stiffness = ctx.Positive(t, "vertical_stiffness");
+  d.vertical_damping = ctx.Double(t, "vertical_damping", d.vertical_damping);
+  d.rolling_radius_factor = ctx.Double(t, "rolling_radius_factor", d.rolling_radius_factor);
+  d.nominal_load = ctx.Positive(t, "nominal_load");
+  d.pcx1 = ctx.Double(t, "pcx1", d.pcx1);
+  d.pdx1 = ctx.Double(t, "pdx1", d.pdx1);
+  d.pdx2 = ctx.Double(t, "pdx2", d.pdx2);
+  d.pex1 = ctx.Double(t, "pex1", d.pex1);
+  d.pkx1 = ctx.Double(t, "pkx1", d.pkx1);
+  d.pcy1 = ctx.Double(t, "pcy1", d.pcy1);
+  d.pdy1 = ctx.Double(t, "pdy1", d.pdy1);
+  d.pdy2 = ctx.Double(t, "pdy2", d.pdy2);
+  d.pey1 = ctx.Double(t, "pey1", d.pey1);
+  d.pky1 = ctx.Double(t, "pky1", d.pky1);
+  d.pky2 = ctx.Double(t, "pky2", d.pky2);
+  d.rbx1 = ctx.Double(t, "rbx1", d.rbx1);
+  d.rby1 = ctx.Double(t, "rby1", d.rby1);
+  d.trail = ctx.Double(t, "trail", d.trail);
+  d.trail_decay = ctx.Double(t, "trail_decay", d.trail_decay);
+  d.rolling_resistance = ctx.Double(t, "rolling_resistance", d.rolling_resistance);
+  d.low_speed = ctx.Double(t, "low_speed", d.low_speed);
+  // validate now, naming the file
+  ctx.Guard(t, [&] { Tire("check", d, 1.0); });
+  return d;
+}
+
+TruckData ParseTruck(const YAML::Node& n, ParseContext& ctx, const std::string& dir) {
+  TruckData d;
+  ctx.SetEntity("truck");
+  ctx.CheckKeys(n, {"wheelbase", "front_track", "rear_track", "kingpin_offset", "frame", "cab", "powertrain", "cargo",
+                    "front_axle", "rear_axle", "knuckle", "front_wheel", "rear_wheel", "arm", "front_suspension",
+                    "rear_suspension", "steering", "tires", "gauge_width"});
+  d.wheelbase = ctx.Positive(n, "wheelbase");
+  d.front_track = ctx.Positive(n, "front_track");
+  d.rear_track = ctx.Positive(n, "rear_track");
+  d.kingpin_offset = ctx.Double(n, "kingpin_offset", d.kingpin_offset);
+  d.gauge_width = ctx.Positive(n, "gauge_width");
+  ReadPart(n, ctx, "frame", d.frame);
+  ReadPart(n, ctx, "cab", d.cab);
+  ReadPart(n, ctx, "powertrain", d.powertrain);
+  ReadPart(n, ctx, "cargo", d.cargo);
+  ReadPart(n, ctx, "front_axle", d.front_axle);
+  ReadPart(n, ctx, "rear_axle", d.rear_axle);
+  ReadPart(n, ctx, "knuckle", d.knuckle);
+  ReadPart(n, ctx, "front_wheel", d.front_wheel);
+  ReadPart(n, ctx, "rear_wheel", d.rear_wheel);
+  ReadPart(n, ctx, "arm", d.arm);
+  ReadSuspension(n, ctx, "front_suspension", d.front);
+  ReadSuspension(n, ctx, "rear_suspension", d.rear);
+  ctx.SetEntity("steering");
+  const YAML::Node st = n["steering"];
+  if (!st) ctx.Fail(n, "missing 'steering'");
+  ctx.CheckKeys(st, {"ratio", "stiffness", "damping", "linkage", "pitman_arm_length", "tie_rod_arm_length"});
+  d.steering_ratio = ctx.Positive(st, "ratio");
+  d.steering_stiffness = ctx.Positive(st, "stiffness");
+  d.steering_damping = ctx.Double(st, "damping", d.steering_damping);
+  d.steering_linkage = ctx.Bool(st, "linkage", d.steering_linkage);
+  d.pitman_arm_length = ctx.Double(st, "pitman_arm_length", d.pitman_arm_length);
+  d.tie_rod_arm_length = ctx.Double(st, "tie_rod_arm_length", d.tie_rod_arm_length);
+  if (!(d.pitman_arm_length > 0) || !(d.tie_rod_arm_length > 0))
+    ctx.Fail(st, "pitman_arm_length and tie_rod_arm_length must be positive");
+  ctx.SetEntity("tires");
+  const YAML::Node tires = n["tires"];
+  if (!tires) ctx.Fail(n, "missing 'tires'");
+  ctx.CheckKeys(tires, {"front", "rear"});
+  const std::filesystem::path base(dir);
+  d.front_tire = LoadTireFile((base / ctx.String(tires, "front")).string());
+  d.rear_tire = LoadTireFile((base / ctx.String(tires, "rear")).string());
+  return d;
+}
+
+}  // namespace flexmb::vehicle

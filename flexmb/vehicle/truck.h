@@ -1,0 +1,102 @@
+#pragma once
+/// \file truck.h
+/// The two-axle (4x2) truck template: a rigid ladder frame with cab,
+/// powertrain and cargo fixed to it, rigid front and rear axles on
+/// leaf-spring suspensions (vertical spring-dampers, a longitudinal arm,
+/// a stabilizer as a roll spring), steered front knuckles, wheels on
+/// revolute joints with tires, and a drive torque on the rear wheels.
+/// Coordinates: the vehicle frame, x forward from the front-axle centre,
+/// y to the left, z up from the road; at t = 0 it coincides with the world.
+
+#include <array>
+#include <memory>
+#include <string>
+
+#include <yaml-cpp/yaml.h>
+
+#include "flexmb/model/model.h"
+#include "flexmb/vehicle/tire.h"
+
+namespace flexmb {
+class ParseContext;
+}
+
+namespace flexmb::vehicle {
+
+/// Mass properties of one rigid part.
+struct PartData {
+  double mass = 1.0;              ///< [kg]
+  Vec3 cg = Vec3::Zero();         ///< centre of mass, vehicle frame [m] (wheels, axles: only x used for axles)
+  Vec3 inertia = Vec3::Ones();    ///< principal moments about the centre of mass, vehicle axes [kg m^2]
+};
+
+/// One leaf-spring axle suspension.
+struct SuspensionData {
+  double spring_stiffness = 2e5;   ///< vertical rate per side [N/m]
+  double spring_damping = 1e4;     ///< damper per side [N s/m]
+  double spring_half_spacing = 0.45;  ///< lateral distance of each spring from the centre plane [m]
+  double spring_length = 0.3;      ///< height of the spring's frame mount above the axle [m]
+  double arm_length = 0.7;         ///< longitudinal arm: pivot on the frame ahead of the axle [m]
+  double stabilizer_stiffness = 1e5;  ///< roll stiffness of the stabilizer [N m/rad]
+  double stabilizer_damping = 0.0;    ///< roll damping [N m s/rad]
+};
+
+/// All parameters of the truck (examples/truck_lane_change/README.md gives
+/// the values and their sources).
+struct TruckData {
+  double wheelbase = 4.2;          ///< [m]; the rear axle is at x = -wheelbase
+  double front_track = 2.0;        ///< [m]
+  double rear_track = 1.85;        ///< centre of the twin tires [m]
+  double kingpin_offset = 0.15;    ///< kingpin lateral distance inboard of the wheel centre [m]
+  PartData frame, cab, powertrain, cargo;       ///< sprung parts (cab, powertrain, cargo fixed to the frame)
+  PartData front_axle, rear_axle, knuckle, front_wheel, rear_wheel, arm;  ///< unsprung parts
+  SuspensionData front, rear;      ///< suspensions
+  double steering_stiffness = 4e5;  ///< knuckle servo stiffness about the kingpin [N m/rad]
+  double steering_damping = 4e3;    ///< knuckle servo damping [N m s/rad]
+  double steering_ratio = 20.0;    ///< steering-wheel / road-wheel angle [-]
+  /// Steering linkage (seed Fig. 4): the servo turns a pitman arm on the
+  /// frame, a drag link (distance rod) turns the left knuckle by an inboard
+  /// steering arm, a one-piece tie rod (distance rod) between Ackermann
+  /// trapezoid arms turns the right knuckle. False: each knuckle has its own
+  /// servo to the commanded angle (kinematic parallel steer).
+  bool steering_linkage = true;
+  double pitman_arm_length = 0.25;  ///< pitman arm and steering arm length [m] (1:1 lever)
+  double tie_rod_arm_length = 0.3;  ///< trapezoid arm length [m], pointing at the rear-axle centre
+  double drag_link_length = 0.65;   ///< drag link length; the pitman arm is this far ahead of the front axle [m]
+  double pitman_arm_mass = 5.0;     ///< [kg], centre of mass at x = drag_link_length
+  TireData front_tire, rear_tire;  ///< tires (rear: a twin set per side)
+  double gauge_width = 2.5;        ///< overall width of the vehicle for the gauge points [m]
+};
+
+/// Static axle loads [N] (front, rear) by the lever rule over all parts'
+/// weights: the independent hand computation used to preload the springs
+/// and by the static check.
+std::array<double, 2> StaticAxleLoads(const TruckData& d, double g);
+
+/// Indices of the entities of a built truck.
+struct TruckHandles {
+  int frame_body = -1;                 ///< the frame
+  int frame_ref = -1;                  ///< frame marker at the frame's centre of mass, vehicle axes
+  int front_axle_ref = -1, rear_axle_ref = -1;  ///< frame markers above the axle centres at road level
+  std::array<int, 4> gauge{};          ///< frame gauge markers: front-left, front-right, rear-left, rear-right
+  std::array<int, 4> tire_force{};     ///< tire force elements: FL, FR, RL, RR
+  std::array<int, 4> wheel_marker{};   ///< wheel-centre markers: FL, FR, RL, RR
+  std::array<double, 2> wheel_centre_z{};  ///< static wheel-centre heights front, rear [m]
+  std::array<int, 2> kingpin_joint{};  ///< kingpin revolutes: left, right
+};
+
+/// Builds the truck into `model` (not finalized) moving forward at `speed`
+/// [m/s] on a road with friction `mu`. The steering-wheel angle [rad] and
+/// the drive torque on the rear axle [N m] are read from the shared values
+/// (zero-order hold, CommandSignal). Throws InputError for bad data.
+TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared_ptr<const double> steering_wheel,
+                        std::shared_ptr<const double> drive_torque, Model& model);
+
+/// Reads the truck's parameters from the "truck" map of a lane-change file;
+/// tire data come from the YAML files named there, relative to `dir`.
+TruckData ParseTruck(const YAML::Node& node, ParseContext& ctx, const std::string& dir);
+
+/// Reads a tire data file (keys as the TireData members).
+TireData LoadTireFile(const std::string& path);
+
+}  // namespace flexmb::vehicle

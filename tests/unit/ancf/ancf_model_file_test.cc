@@ -1,0 +1,109 @@
+// Unit tests of the model-file entry `type: ancf_beam`: a valid beam with
+// node markers, and bad input (non-positive length, element count, section,
+// material; a marker on a node that does not exist) as InputError naming
+// file, line and entity.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "flexmb/ancf/ancf_beam2d_body.h"
+#include "flexmb/common/error.h"
+#include "flexmb/io/model_file.h"
+
+namespace flexmb::ancf {
+namespace {
+
+const char* kModel =
+    "name: rope\n"                                            // 1
+    "ground:\n"                                               // 2
+    "  markers:\n"                                            // 3
+    "    - {name: hook, position: [0, 0, 0]}\n"               // 4
+    "bodies:\n"                                               // 5
+    "  - name: beam\n"                                        // 6
+    "    type: ancf_beam\n"                                   // 7
+    "    length: 2.0\n"                                       // 8
+    "    elements: 4\n"                                       // 9
+    "    section: {diameter: 0.01}\n"                         // 10
+    "    material: {E: 2.0e11, rho: 7850}\n"                  // 11
+    "    start: [0, 0, 0]\n"                                  // 12
+    "    direction: [0, 0, -1]\n"                             // 13
+    "    normal: [0, 1, 0]\n"                                 // 14
+    "    damping: 0.001\n"                                    // 15
+    "    markers:\n"                                          // 16
+    "      - {name: top, end: start}\n"                       // 17
+    "      - {name: mid, node: 2}\n"                          // 18
+    "      - {name: bottom, end: end}\n"                      // 19
+    "joints:\n"                                               // 20
+    "  - {name: pin, type: revolute, i: ground.hook, j: beam.top}\n";
+
+std::string Replace(std::string text, const std::string& from, const std::string& to) {
+  text.replace(text.find(from), from.size(), to);
+  return text;
+}
+
+TEST(AncfModelFile, BeamWithNodeMarkers) {
+  auto model = LoadModelString(kModel, "rope.yaml");
+  const int b = model->FindBody("beam");
+  ASSERT_GT(b, 0);
+  const auto& beam = dynamic_cast<const AncfBeam2dBody&>(*model->bodies[b]);
+  EXPECT_EQ(beam.elements(), 4);
+  EXPECT_NEAR(beam.element().section().A, 3.14159265358979 * 0.01 * 0.01 / 4.0, 1e-15);
+  EXPECT_NEAR(beam.element().section().I, 3.14159265358979 * 1e-8 / 64.0, 1e-20);
+  EXPECT_DOUBLE_EQ(beam.element().section().damping, 0.001);
+  const int mid = model->FindMarker("beam.mid");
+  const int bottom = model->FindMarker("beam.bottom");
+  EXPECT_EQ(model->markers[mid].node, 2);
+  EXPECT_EQ(model->markers[bottom].node, 4);
+  // the beam hangs down along -z: the bottom marker is 2 m below the hook
+  VecX q(beam.nq()), v(beam.nv());
+  beam.InitialCoordinates(q.data(), v.data());
+  MarkerState ms;
+  beam.EvaluateMarker(q.data(), v.data(), model->markers[bottom], ms);
+  EXPECT_LT((ms.p_WM - Vec3(0, 0, -2.0)).norm(), 1e-14);
+  EXPECT_LT((ms.R_WM.col(0) - Vec3(0, 0, -1)).norm(), 1e-14);
+}
+
+// loads `text` and returns the error message ("" if none)
+std::string ErrorOf(const std::string& text) {
+  try {
+    LoadModelString(text, "rope.yaml");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(AncfModelFile, BadInputNamesFileLineAndEntity) {
+  struct Case {
+    const char* from;
+    const char* to;
+    const char* where;
+    const char* entity;
+  };
+  const Case cases[] = {
+      {"{name: mid, node: 2}", "{name: mid, node: 5}", "rope.yaml:18", "marker 'beam.mid'"},
+      {"{name: mid, node: 2}", "{name: mid, node: -1}", "rope.yaml:18", "marker 'beam.mid'"},
+      {"length: 2.0", "length: 0", "rope.yaml:8", "body 'beam'"},
+      {"length: 2.0", "length: -2.0", "rope.yaml:8", "body 'beam'"},
+      {"elements: 4", "elements: 0", "rope.yaml:9", "body 'beam'"},
+      {"elements: 4", "elements: 2.5", "rope.yaml:9", "body 'beam'"},
+      {"{diameter: 0.01}", "{diameter: -0.01}", "rope.yaml:10", "body 'beam'"},
+      {"{diameter: 0.01}", "{area: 1.0e-4, inertia: 0}", "rope.yaml:10", "body 'beam'"},
+      {"{E: 2.0e11, rho: 7850}", "{E: 2.0e11, rho: 0}", "rope.yaml:11", "body 'beam'"},
+      {"damping: 0.001", "damping: -1", "rope.yaml:15", "body 'beam'"},
+      {"direction: [0, 0, -1]", "direction: [0, 1, 0]", "rope.yaml:", "body 'beam'"},
+      {"{name: bottom, end: end}", "{name: bottom, end: middle}", "rope.yaml:19", "marker 'beam.bottom'"},
+      {"{name: bottom, end: end}", "{name: bottom}", "rope.yaml:19", "marker 'beam.bottom'"},
+  };
+  for (const Case& c : cases) {
+    const std::string what = ErrorOf(Replace(kModel, c.from, c.to));
+    EXPECT_NE(what.find(c.where), std::string::npos) << c.to << ": " << what;
+    EXPECT_NE(what.find(c.entity), std::string::npos) << c.to << ": " << what;
+  }
+  EXPECT_NE(ErrorOf(Replace(kModel, "{name: mid, node: 2}", "{name: mid, node: 5}"))
+                .find("node 5 does not exist"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace flexmb::ancf

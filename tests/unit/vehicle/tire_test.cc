@@ -1,0 +1,148 @@
+// Tire force element: analytic pure-slip and vertical values, lift-off,
+// and the tangents K, C against independent finite differences.
+#include "flexmb/vehicle/tire.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "flexmb/common/error.h"
+
+namespace flexmb::vehicle {
+namespace {
+
+TireData Truck() {
+  TireData d;
+  d.count = 2;
+  d.unloaded_radius = 0.527;
+  d.vertical_stiffness = 9e5;
+  d.vertical_damping = 1.5e3;
+  d.nominal_load = 25e3;
+  d.pky1 = 8.5;
+  d.pky2 = 2.0;
+  d.pdy1 = 1.0;
+  d.pdy2 = -0.1;
+  d.pey1 = -0.2;
+  return d;
+}
+
+// wheel centre marker: spin axis (z of the marker) along world +y
+MarkerState Wheel(double z, const Vec3& v, double omega) {
+  MarkerState m;
+  m.p_WM = Vec3(1.0, 2.0, z);
+  m.R_WM << 1, 0, 0, 0, 0, 1, 0, -1, 0;
+  m.v_WM = v;
+  m.w_WM = Vec3(0, omega, 0);
+  return m;
+}
+
+TEST(Tire, VerticalSpringDamperAndLiftOff) {
+  const TireData d = Truck();
+  const Tire tire("t", d, 0.8);
+  TireContact c;
+  const MarkerState m = Wheel(0.517, Vec3(0, 0, -0.1), 0.0);
+  const Vec6 w = tire.Wrench(m.p_WM, m.R_WM, m.v_WM, m.w_WM, &c);
+  // Fz = n (k d - c vz), d = 10 mm
+  EXPECT_NEAR(c.deflection, 0.010, 1e-12);
+  EXPECT_NEAR(w[2], 2 * (9e5 * 0.010 + 1.5e3 * 0.1), 1e-6);
+  // lifted: centre above R0, no force at all
+  const MarkerState up = Wheel(0.53, Vec3(3, 0, 0), 5.0);
+  EXPECT_EQ(tire.Wrench(up.p_WM, up.R_WM, up.v_WM, up.w_WM, nullptr).norm(), 0.0);
+  // in contact but separating fast: damper would pull, force clamped to zero
+  const MarkerState fast = Wheel(0.526, Vec3(0, 0, 5.0), 0.0);
+  EXPECT_EQ(tire.Wrench(fast.p_WM, fast.R_WM, fast.v_WM, fast.w_WM, nullptr)[2], 0.0);
+}
+
+TEST(Tire, PureLateralSlipFollowsMagicFormula) {
+  TireData d = Truck();
+  d.rolling_resistance = 0.0;
+  d.trail = 0.0;
+  const double mu = 0.8, V = 15.0, alpha = 2.0 * M_PI / 180;
+  const Tire tire("t", d, mu);
+  const double z = 0.527 - 0.011;
+  const double re = d.unloaded_radius - d.rolling_radius_factor * 0.011;
+  // free rolling with the centre sliding to +y: alpha = atan(vy / sqrt(V^2 + vlow^2))
+  const double vref = std::sqrt(V * V + 1.0);
+  const MarkerState m = Wheel(z, Vec3(V, vref * std::tan(alpha), 0), V / re);
+  TireContact c;
+  tire.Wrench(m.p_WM, m.R_WM, m.v_WM, m.w_WM, &c);
+  // hand computation of MF 2002 (no shifts, lambda = 1)
+  const double fz1 = 9e5 * 0.011, dfz = (fz1 - 25e3) / 25e3;
+  const double D = mu * 1.0 * (1 - 0.1 * dfz) * fz1;
+  const double Ky = 8.5 * 25e3 * std::sin(2 * std::atan(fz1 / (2.0 * 25e3)));
+  const double B = Ky / (1.3 * D), E = -0.2;
+  const double fy1 = -D * std::sin(1.3 * std::atan(B * alpha - E * (B * alpha - std::atan(B * alpha))));
+  EXPECT_NEAR(c.alpha, alpha, 1e-12);
+  EXPECT_NEAR(c.kappa, 0.0, 1e-12);
+  EXPECT_NEAR(c.fy, 2 * fy1, 1e-6 * std::abs(fy1));
+  EXPECT_NEAR(c.fx, 0.0, 1e-9);
+}
+
+TEST(Tire, CombinedSlipReducesLateralForce) {
+  const Tire tire("t", Truck(), 0.8);
+  const double z = 0.516, V = 15.0, re = 0.527 - 0.011 / 3.0;
+  TireContact pure, combined;
+  MarkerState m = Wheel(z, Vec3(V, 0.5, 0), V / re);
+  tire.Wrench(m.p_WM, m.R_WM, m.v_WM, m.w_WM, &pure);
+  m.w_WM.y() = 1.1 * V / re;  // driving slip ~ 0.1
+  tire.Wrench(m.p_WM, m.R_WM, m.v_WM, m.w_WM, &combined);
+  EXPECT_GT(combined.kappa, 0.05);
+  EXPECT_GT(combined.fx, 0.0);
+  EXPECT_LT(std::abs(combined.fy), 0.9 * std::abs(pure.fy));
+}
+
+// independent finite differences of the wrench, forward-backward with a
+// different step and the rotation applied as a quaternion product
+TEST(Tire, TangentsMatchFiniteDifferences) {
+  const Tire tire("t", Truck(), 0.8);
+  const double re = 0.527 - 0.012 / 3.0;
+  MarkerState m = Wheel(0.515, Vec3(14.0, 0.8, -0.05), 1.05 * 14.0 / re);
+  // a steered and slightly cambered wheel
+  m.R_WM = (Eigen::AngleAxisd(0.1, Vec3::UnitZ()) * Eigen::AngleAxisd(0.02, Vec3::UnitX())).toRotationMatrix() * m.R_WM;
+  m.w_WM = m.R_WM.col(2) * 1.05 * 14.0 / re + Vec3(0.01, 0.0, 0.2);
+  ForceEval e;
+  tire.Evaluate(m, MarkerState{}, 0.0, e);
+  const double h = 1e-5;
+  Eigen::Matrix<double, 6, 6> K, C;
+  for (int k = 0; k < 6; ++k) {
+    MarkerState p = m, q = m;
+    if (k < 3) {
+      p.p_WM[k] += h;
+      q.p_WM[k] -= h;
+    } else {
+      Vec3 th = Vec3::Zero();
+      th[k - 3] = h;
+      p.R_WM = (Eigen::Quaterniond(Eigen::AngleAxisd(h, th.normalized())) * Eigen::Quaterniond(m.R_WM)).toRotationMatrix();
+      q.R_WM = (Eigen::Quaterniond(Eigen::AngleAxisd(-h, th.normalized())) * Eigen::Quaterniond(m.R_WM)).toRotationMatrix();
+    }
+    K.col(k) = (tire.Wrench(p.p_WM, p.R_WM, p.v_WM, p.w_WM, nullptr) - tire.Wrench(q.p_WM, q.R_WM, q.v_WM, q.w_WM, nullptr)) / (2 * h);
+    MarkerState a = m, b = m;
+    if (k < 3) {
+      a.v_WM[k] += 1e-4;
+      b.v_WM[k] -= 1e-4;
+    } else {
+      a.w_WM[k - 3] += 1e-4;
+      b.w_WM[k - 3] -= 1e-4;
+    }
+    C.col(k) = (tire.Wrench(a.p_WM, a.R_WM, a.v_WM, a.w_WM, nullptr) - tire.Wrench(b.p_WM, b.R_WM, b.v_WM, b.w_WM, nullptr)) / 2e-4;
+  }
+  const Eigen::Matrix<double, 6, 6> Ke = e.K.topLeftCorner<6, 6>(), Ce = e.C.topLeftCorner<6, 6>();
+  EXPECT_LT((Ke - K).norm(), 1e-5 * K.norm()) << "K\n" << Ke << "\nFD\n" << K;
+  EXPECT_LT((Ce - C).norm(), 1e-5 * C.norm()) << "C\n" << Ce << "\nFD\n" << C;
+  // j blocks of a single-marker element stay zero
+  EXPECT_EQ(e.K.rightCols<6>().norm() + e.K.bottomRows<6>().norm(), 0.0);
+  // analytic vertical entries: dFz/dz = -n k / cos(gamma) (rho = z / cos), dFz/dvz = -n c / cos
+  const double cg = std::sqrt(1 - std::pow(m.R_WM.col(2).z(), 2));
+  EXPECT_NEAR(Ke(2, 2), -2 * 9e5 / cg, 1e-3 * 2 * 9e5);
+  EXPECT_NEAR(Ce(2, 2), -2 * 1.5e3 / cg, 1e-3 * 2 * 1.5e3);
+}
+
+TEST(Tire, RejectsBadData) {
+  TireData d = Truck();
+  d.pky1 = -1;
+  EXPECT_THROW(Tire("t", d, 0.8), InputError);
+  EXPECT_THROW(Tire("t", Truck(), 0.0), InputError);
+}
+
+}  // namespace
+}  // namespace flexmb::vehicle

@@ -1,0 +1,45 @@
+// Truck at rest: the axle loads after settling equal the lever-rule
+// distribution of the parts' weights, computed here by hand from the masses
+// and positions of examples/truck_lane_change/truck.yaml.
+#include <gtest/gtest.h>
+
+#include "truck_harness.h"
+
+namespace flexmb::vehicle::testing {
+namespace {
+
+TEST(TruckValidation, StaticAxleLoadsEqualMassDistribution) {
+  const TruckData d = LoadLaneChangeTruck(TruckFile());
+  const double g = 9.81, L = d.wheelbase;
+  // every part's weight on the axles by the lever rule about the rear axle
+  struct Part {
+    double m, x;
+  };
+  const Part parts[] = {{d.frame.mass, d.frame.cg.x()},
+                        {d.cab.mass, d.cab.cg.x()},
+                        {d.powertrain.mass, d.powertrain.cg.x()},
+                        {d.cargo.mass, d.cargo.cg.x()},
+                        {d.front_axle.mass + 2 * d.knuckle.mass + 2 * d.front_wheel.mass, 0.0},
+                        {d.rear_axle.mass + 2 * d.rear_wheel.mass, -L},
+                        {d.arm.mass, 0.5 * d.front.arm_length},
+                        {d.arm.mass, -L + 0.5 * d.rear.arm_length},
+                        {d.steering_linkage ? d.pitman_arm_mass : 0.0, d.drag_link_length}};
+  double W = 0, M = 0;
+  for (const Part& p : parts) {
+    W += p.m * g;
+    M += p.m * g * (p.x + L);
+  }
+  const double front = M / L, rear = W - front;
+  TruckSample last;
+  RunTruck(d, 0.0, 0.0, 2.0, false, [&](const TruckSample& s) { last = s; });
+  EXPECT_NEAR(last.axle_load[0] + last.axle_load[1], W, 1e-3 * W);
+  EXPECT_NEAR(last.axle_load[0], front, 2e-3 * front);
+  EXPECT_NEAR(last.axle_load[1], rear, 2e-3 * rear);
+  // about 12 t gross, front axle share 30-40 % (4x2 truck)
+  EXPECT_NEAR(W / g, 11900.0, 300.0);
+  EXPECT_GT(front / W, 0.30);
+  EXPECT_LT(front / W, 0.40);
+}
+
+}  // namespace
+}  // namespace flexmb::vehicle::testing
