@@ -32,6 +32,11 @@ struct ReductionOptions {
   /// zeta (the last value repeats for higher modes); ratios win if given.
   double rayleigh_alpha = 0.0, rayleigh_beta = 0.0;
   std::vector<double> damping_ratios;
+  /// Eigen solver of the fixed-interface modes on the K_ii factor: block
+  /// shift-invert Lanczos (default; fe/block_lanczos.h, Spectra as its
+  /// fallback) or Spectra alone (the baseline of bench/reduce.cc).
+  enum class EigenSolver { kBlockLanczos, kSpectra };
+  EigenSolver eigen_solver = EigenSolver::kBlockLanczos;
 };
 
 /// Wall time of each step [s]. The static and the normal modes are computed

@@ -263,6 +263,9 @@ CraigBamptonBasis BuildCraigBamptonBasis(const fe::Mesh& mesh, const fe::Assembl
     // the reduction, accurate to 1e-6 over the relative gap: their effect on
     // the reduced frequencies is again quadratic, below 1e-11.
     auto solve = [&](int c) {
+      if (options.eigen_solver == ReductionOptions::EigenSolver::kSpectra) {
+        return fe::SolveModesFactorized(k.ii, m.ii, factor, 0.0, c, 1e-10, "fixed-interface modes");
+      }
       fe::BlockLanczosOptions lanczos;
       lanczos.count = c;
       lanczos.tolerance = 1e-6;

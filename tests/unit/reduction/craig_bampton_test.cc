@@ -108,6 +108,19 @@ TEST(CraigBampton, ReducedMatricesEqualTheProjection) {
   EXPECT_LT(k.topRightCorner(nb, basis.normal_modes()).norm(), 1e-11 * k.norm());
 }
 
+// Spectra alone (the bench's baseline) and block Lanczos find the same
+// fixed-interface modes, hence the same body.
+TEST(CraigBampton, SpectraAndBlockLanczosGiveTheSameBody) {
+  PlateModel p = Plate();
+  const ReducedBody block = ReduceCraigBampton(p.model, p.options);
+  p.options.eigen_solver = ReductionOptions::EigenSolver::kSpectra;
+  const ReducedBody spectra = ReduceCraigBampton(p.model, p.options);
+  ASSERT_EQ(block.frequencies_hz.size(), spectra.frequencies_hz.size());
+  for (Eigen::Index j = 0; j < block.frequencies_hz.size(); ++j) {
+    EXPECT_NEAR(spectra.frequencies_hz[j], block.frequencies_hz[j], 1e-9 * block.frequencies_hz[j]) << j;
+  }
+}
+
 TEST(CraigBampton, KeepTruncatesToTheLowestModes) {
   PlateModel p = Plate();
   const ReducedBody all = ReduceCraigBampton(p.model, p.options);
