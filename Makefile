@@ -34,6 +34,7 @@ fuzz: deps
 	bash scripts/run-fuzz.sh build/asan/bin $(FUZZ_SECONDS)
 
 bench: build
+	cmake --build --preset release -j $(JOBS) --target bench/all
 	$(BUILD)/bin/flexmb_bench
 
 clean:

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs every libFuzzer target in BIN_DIR (default build/asan/bin) for SECONDS
-# each (default 20), starting from its seed corpus fuzz/corpus/<reader>/.
+# each (default 20), starting from its seed corpus fuzz/corpus/<reader>/
+# (inputs made for fuzzing) and the reader's test data in tests/data/fe/.
 # New corpus entries go to a scratch directory, so the repository stays as
 # it is. Exits non-zero on the first crash, leak or sanitizer report; the
 # reproducer is left in build/asan/fuzz-artifacts/.
@@ -21,6 +22,13 @@ for t in "${targets[@]}"; do
   scratch=$(mktemp -d)
   seeds=()
   if [ -d "fuzz/corpus/$name" ]; then seeds=("fuzz/corpus/$name"); fi
+  case "$name" in
+    harwell_boeing) data=hb ;;
+    matrix_market) data=mtx ;;
+    matrix_files) data=calculix ;;
+    *) data=$name ;;
+  esac
+  if [ -d "tests/data/fe/$data" ]; then seeds+=("tests/data/fe/$data"); fi
   echo "run-fuzz: $name for ${seconds} s"
   set +e
   "$t" "$scratch" "${seeds[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 \

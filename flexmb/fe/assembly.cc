@@ -15,8 +15,6 @@ namespace flexmb::fe {
 
 namespace {
 
-const char* const kComponentName[6] = {"ux", "uy", "uz", "rx", "ry", "rz"};
-
 std::string Where(const Origin& o) {
   if (o.file.empty()) return "";
   return " (" + o.file + (o.line > 0 ? ":" + std::to_string(o.line) : std::string()) + ")";
@@ -253,7 +251,7 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
             Fail(link.origin, "rigid link " + std::to_string(link.id), "lists dependent node " + node_id(d) + " twice");
           }
           Fail(link.origin, "rigid link " + std::to_string(link.id),
-               "node " + node_id(d) + " component " + kComponentName[c] +
+               "node " + node_id(d) + " component " + kDofComponentNames[c] +
                    " is already dependent in rigid link " + std::to_string(other.id) + Where(other.origin));
         }
         owner[d][c] = static_cast<int>(l);
@@ -308,7 +306,7 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
         std::string by = fixed_origin[n] != nullptr && fixed_origin[n]->file.size() ? "a constraint" + Where(*fixed_origin[n])
                                                                                    : "a constraint";
         Fail(link.origin, "rigid link " + std::to_string(link.id),
-             "dependent node " + node_id(n) + " component " + kComponentName[c] + " is also fixed by " + by);
+             "dependent node " + node_id(n) + " component " + kDofComponentNames[c] + " is also fixed by " + by);
       }
     }
   }

@@ -8,8 +8,6 @@
 namespace flexmb::fe {
 namespace {
 
-const char* const kComponentName[6] = {"ux", "uy", "uz", "rx", "ry", "rz"};
-
 // removes the free DOF selected by mask[node] (bit c = component c) from K,
 // M, the columns of T and the free numbering; kept DOF keep their order
 AssembledModel RemoveDofs(const AssembledModel& model, const std::vector<uint8_t>& mask) {
@@ -103,7 +101,7 @@ AssembledModel FixNodes(const AssembledModel& model, const std::vector<int>& nod
       }
       if (t_row_count[dm.full[n][c]] > 0)
         throw InputError(std::string("cannot fix node index ") + std::to_string(n) + ": its component " +
-                         kComponentName[c] + " is dependent on a rigid link");
+                         kDofComponentNames[c] + " is dependent on a rigid link");
     }
   }
   return RemoveDofs(model, mask);

@@ -15,6 +15,14 @@
 
 namespace flexmb::fe {
 
+/// Names of the six DOF components of a node, in DOF order (translations
+/// then rotations), for messages and file headers.
+inline constexpr const char* kDofComponentNames[6] = {"ux", "uy", "uz", "rx", "ry", "rz"};
+
+/// Corner nodes (local 0..3) at the ends of the edges that carry the
+/// mid-edge nodes 4..9 of a 10-node tetrahedron, in that order.
+inline constexpr int kTet10EdgeCorners[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 

@@ -14,8 +14,6 @@ namespace flexmb::fe {
 
 namespace {
 
-const char* const kComponentName[6] = {"ux", "uy", "uz", "rx", "ry", "rz"};
-
 // names a free DOF by its node id and component
 std::string DescribeFreeDof(const DofMap& dofs, int f) {
   for (size_t n = 0; n < dofs.free.size(); ++n) {
@@ -23,7 +21,7 @@ std::string DescribeFreeDof(const DofMap& dofs, int f) {
       if (dofs.free[n][c] == f) {
         const std::string node = n < dofs.node_ids.size() ? "node " + std::to_string(dofs.node_ids[n])
                                                           : "node #" + std::to_string(n + 1) + " in file order";
-        return "free DOF " + std::to_string(f) + " (" + node + ", " + kComponentName[c] + ")";
+        return "free DOF " + std::to_string(f) + " (" + node + ", " + kDofComponentNames[c] + ")";
       }
     }
   }

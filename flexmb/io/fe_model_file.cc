@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "flexmb/common/error.h"
+#include "flexmb/common/text.h"
 #include "flexmb/io/abaqus_reader.h"
 #include "flexmb/io/exchange_set.h"
 #include "flexmb/io/gmsh_reader.h"
@@ -30,20 +31,13 @@ namespace {
 namespace fs = std::filesystem;
 using fe::ElementType;
 
-std::string Lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
-std::string Extension(const std::string& path) { return Lower(fs::path(path).extension().string()); }
-
 bool IsNastran(const std::string& ext) {
   return ext == ".bdf" || ext == ".nas" || ext == ".dat" || ext == ".blk" || ext == ".bulk";
 }
 
 // a mesh file of any supported format (not an FE model file or directory)
 bool ReadMeshFile(const std::string& path, fe::Mesh& mesh) {
-  const std::string ext = Extension(path);
+  const std::string ext = LowerExtension(path);
   if (IsNastran(ext)) mesh = ReadNastran(path);
   else if (ext == ".inp") mesh = ReadAbaqus(path);
   else if (ext == ".msh") mesh = ReadGmsh(path);
@@ -568,7 +562,7 @@ fe::FeModel LoadFeModelFile(const std::string& path) {
 fe::FeModel LoadFeModel(const std::string& path) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) return ReadExchangeSet(path);
-  const std::string ext = Extension(path);
+  const std::string ext = LowerExtension(path);
   if (ext == ".yaml" || ext == ".yml") return LoadFeModelFile(path);
   fe::FeModel model;
   if (!ReadMeshFile(path, model.mesh))

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "flexmb/common/error.h"
+#include "flexmb/common/text.h"
 #include "flexmb/io/abaqus_reader.h"
 #include "flexmb/io/calculix_matrices.h"
 #include "flexmb/io/dof_map.h"
@@ -23,21 +24,13 @@ namespace flexmb::io {
 
 namespace {
 
-const char* const kComponent[6] = {"ux", "uy", "uz", "rx", "ry", "rz"};
-
-std::string Extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
 bool IsHarwellBoeing(const std::string& ext) {
   return ext == ".hb" || ext == ".rb" || ext == ".rsa" || ext == ".rua" || ext == ".psa" || ext == ".hbf";
 }
 
 // reads one matrix by its extension; `n` is the DOF count for CalculiX files
 fe::SparseMat ReadMatrix(const std::string& path, const std::string& what, int n) {
-  const std::string ext = Extension(path);
+  const std::string ext = LowerExtension(path);
   if (IsHarwellBoeing(ext)) return ReadHarwellBoeing(path).A;
   if (ext == ".mtx") return ReadMatrixMarket(path).A;
   if (ext == ".sti" || ext == ".mas") {
@@ -51,7 +44,7 @@ fe::SparseMat ReadMatrix(const std::string& path, const std::string& what, int n
 
 fe::Mesh ReadGeometry(const std::string& path) {
   if (path.empty()) throw InputError("imported matrices need a geometry file (node coordinates)");
-  const std::string ext = Extension(path);
+  const std::string ext = LowerExtension(path);
   if (ext == ".vtk") return ReadVtk(path);
   if (ext == ".inp") return ReadAbaqus(path);
   if (ext == ".msh") return ReadGmsh(path);
@@ -62,7 +55,7 @@ fe::Mesh ReadGeometry(const std::string& path) {
 
 std::string RowName(const MatrixRowMap& map, int r) {
   const DofMapRow& d = map.rows[static_cast<size_t>(r)];
-  return "row " + std::to_string(r + 1) + " = node " + std::to_string(d.node_id) + " " + kComponent[d.component - 1];
+  return "row " + std::to_string(r + 1) + " = node " + std::to_string(d.node_id) + " " + fe::kDofComponentNames[d.component - 1];
 }
 
 // square, finite, symmetric to 1e-10 of the largest entry; returns the
@@ -92,8 +85,8 @@ fe::SparseMat CheckMatrix(const fe::SparseMat& A, const std::string& path, const
                          std::to_string(a.col + 1) + "," + std::to_string(a.row + 1) + ") = " + FormatExact(aji) +
                          ", difference more than 1e-10 of the largest |entry| " + FormatExact(a.max_abs) +
                          " (row " + std::to_string(a.row + 1) + " = node " + std::to_string(r.node_id) + " " +
-                         kComponent[r.component - 1] + ", column " + std::to_string(a.col + 1) + " = node " +
-                         std::to_string(c.node_id) + " " + kComponent[c.component - 1] + ")",
+                         fe::kDofComponentNames[r.component - 1] + ", column " + std::to_string(a.col + 1) + " = node " +
+                         std::to_string(c.node_id) + " " + fe::kDofComponentNames[c.component - 1] + ")",
                      {path, 0, what});
   }
   if (a.worst == 0.0) return A;
@@ -113,13 +106,13 @@ fe::FeModel ReadImportedMatrices(const ImportedMatricesSpec& spec) {
   // DOF map: flexmb's format, or a CalculiX job.dof (given, or next to job.sti)
   std::string dof_path = spec.dof_map;
   if (dof_path.empty()) {
-    if (Extension(spec.stiffness) != ".sti") {
+    if (LowerExtension(spec.stiffness) != ".sti") {
       throw InputError("a DOF map file is needed for " + spec.stiffness + " (only CalculiX .sti has its job.dof)",
                        {spec.stiffness, 0, "stiffness"});
     }
     dof_path = std::filesystem::path(spec.stiffness).replace_extension(".dof").string();
   }
-  const MatrixRowMap map = Extension(dof_path) == ".dof" ? ReadCalculixDofs(dof_path) : ReadDofMap(dof_path);
+  const MatrixRowMap map = LowerExtension(dof_path) == ".dof" ? ReadCalculixDofs(dof_path) : ReadDofMap(dof_path);
   const int n_map = static_cast<int>(map.rows.size());
 
   fe::SparseMat K = ReadMatrix(spec.stiffness, "K", n_map);
@@ -155,7 +148,7 @@ fe::FeModel ReadImportedMatrices(const ImportedMatricesSpec& spec) {
       const DofMapRow& d = map.rows[static_cast<size_t>(r)];
       const auto [it, inserted] = seen.emplace(std::make_pair(d.node_id, d.component), r);
       if (!inserted) {
-        throw InputError("node " + std::to_string(d.node_id) + " " + kComponent[d.component - 1] +
+        throw InputError("node " + std::to_string(d.node_id) + " " + fe::kDofComponentNames[d.component - 1] +
                              " is mapped twice (rows " + std::to_string(it->second + 1) + " and " +
                              std::to_string(r + 1) + ")",
                          {dof_path, d.line, "row " + std::to_string(r + 1)});

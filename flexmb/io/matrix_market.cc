@@ -7,17 +7,12 @@
 #include <vector>
 
 #include "flexmb/common/error.h"
+#include "flexmb/common/text.h"
 #include "flexmb/io/matrix_text.h"
 
 namespace flexmb::io {
 
 namespace {
-
-std::string Lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
 
 bool IsBlankOrComment(std::string_view line) {
   const size_t p = line.find_first_not_of(" \t\r");
@@ -39,7 +34,7 @@ MatrixMarketMatrix ReadMatrixMarket(const std::string& path) {
   // banner
   if (lines.empty()) throw InputError(std::string("empty file, expected the banner '") + kBanner + "'", {path, 1, "banner"});
   const std::vector<std::string_view> banner = SplitFields(lines[0]);
-  if (banner.empty() || Lower(banner[0]) != "%%matrixmarket") {
+  if (banner.empty() || AsciiLower(banner[0]) != "%%matrixmarket") {
     throw InputError(std::string("not a Matrix Market file: the first line must be a banner like '") + kBanner + "'",
                      {path, 1, "banner"});
   }
@@ -48,8 +43,8 @@ MatrixMarketMatrix ReadMatrixMarket(const std::string& path) {
                          std::to_string(banner.size() - 1),
                      {path, 1, "banner"});
   }
-  const std::string object = Lower(banner[1]), format = Lower(banner[2]), field = Lower(banner[3]),
-                    symmetry = Lower(banner[4]);
+  const std::string object = AsciiLower(banner[1]), format = AsciiLower(banner[2]), field = AsciiLower(banner[3]),
+                    symmetry = AsciiLower(banner[4]);
   if (object != "matrix") throw InputError("object " + QuoteToken(banner[1]) + " is not supported, expected 'matrix'", {path, 1, "banner"});
   if (format == "array") {
     throw InputError("array (dense) format is not supported, expected 'coordinate'", {path, 1, "banner"});

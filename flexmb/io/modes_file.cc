@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "flexmb/common/error.h"
+#include "flexmb/common/text.h"
 #include "flexmb/io/matrix_text.h"
 
 namespace flexmb::io {
@@ -17,20 +18,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kBanner = "%%MatrixMarket matrix array real general";
+constexpr const char* kArrayBanner = "%%MatrixMarket matrix array real general";
 constexpr int kModesVersion = 1;
-constexpr const char* kComponentNames[] = {"ux", "uy", "uz", "rx", "ry", "rz"};
-
 std::string DofName(const DofMapRow& r) {
   return "node " + std::to_string(r.node_id) + " " +
-         (r.component >= 1 && r.component <= 6 ? kComponentNames[r.component - 1] : "?");
-}
-
-// lower-case copy, for the banner
-std::string Lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-  return out;
+         (r.component >= 1 && r.component <= 6 ? fe::kDofComponentNames[r.component - 1] : "?");
 }
 
 // whole-token integer in [lo, hi]
@@ -64,7 +56,7 @@ void WriteModesFile(const ExchangeModes& m, const std::string& path) {
   }
   std::string out;
   out.reserve(static_cast<size_t>(m.modes.size()) * 24 + 64 * static_cast<size_t>(ns + nf) + 512);
-  out += kBanner;
+  out += kArrayBanner;
   out += "\n% flexmb modes version " + std::to_string(kModesVersion) + "\n";
   out += "% Craig-Bampton basis: rows = the DOF of dof_map.txt, in order; columns = static modes, then normal modes\n";
   out += "% static " + std::to_string(ns) + "\n";
@@ -114,13 +106,13 @@ ExchangeModes ReadModesFile(const std::string& path) {
   };
 
   std::string_view l;
-  if (!next_line(l)) fail("empty file: expected the banner '" + std::string(kBanner) + "'", 0);
+  if (!next_line(l)) fail("empty file: expected the banner '" + std::string(kArrayBanner) + "'", 0);
   {
     const std::vector<std::string_view> f = SplitFields(l);
     std::string banner;
-    for (std::string_view x : f) banner += (banner.empty() ? "" : " ") + Lower(x);
-    if (banner != Lower(kBanner)) {
-      fail("expected the banner '" + std::string(kBanner) + "' (a dense Matrix Market array), found " +
+    for (std::string_view x : f) banner += (banner.empty() ? "" : " ") + AsciiLower(x);
+    if (banner != AsciiLower(kArrayBanner)) {
+      fail("expected the banner '" + std::string(kArrayBanner) + "' (a dense Matrix Market array), found " +
                QuoteToken(l),
            line);
     }

@@ -74,7 +74,7 @@ BodyMass MassOf(const reduction::InertiaInvariants& v) {
   return b;
 }
 
-// the JSON lines static_modes to center_of_mass_m shared by "reduce" and
+// the JSON lines static_modes to inertia_kg_m2 shared by "reduce" and
 // "body info"
 void JsonModesAndMass(std::ostream& s, const reduction::ReducedBody& body, const BodyMass& mp) {
   s << "  \"static_modes\": " << body.static_modes << ",\n";
@@ -84,6 +84,7 @@ void JsonModesAndMass(std::ostream& s, const reduction::ReducedBody& body, const
   s << "  \"frequencies_hz\": " << JsonArray(body.frequencies_hz) << ",\n";
   s << "  \"mass_kg\": " << JsonNumber(mp.mass) << ",\n";
   s << "  \"center_of_mass_m\": " << (mp.mass > 0.0 ? JsonVector(mp.center) : "null") << ",\n";
+  s << "  \"inertia_kg_m2\": " << (mp.mass > 0.0 ? JsonMatrix(mp.inertia) : "null") << ",\n";
 }
 
 }  // namespace
@@ -230,7 +231,6 @@ int BodyInfo(const BodyInfoOptions& opt, std::ostream& out) {
     }
     s << "],\n";
     JsonModesAndMass(s, body, mp);
-    s << "  \"inertia_kg_m2\": " << (mp.mass > 0.0 ? JsonMatrix(mp.inertia) : "null") << ",\n";
     s << "  \"stress\": {";
     for (size_t k = 0; k < 3; ++k) {
       const reduction::StressTable& t = *tables[k].second;

@@ -26,8 +26,6 @@ namespace {
 using RowMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 using Clock = std::chrono::steady_clock;
 
-const char* const kComponentName[6] = {"ux", "uy", "uz", "rx", "ry", "rz"};
-
 double Seconds(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // the interior and boundary blocks of a symmetric free x free matrix
@@ -180,7 +178,7 @@ CraigBamptonBasis BuildCraigBamptonBasis(const fe::Mesh& mesh, const fe::Assembl
     const fe::Origin& o = mesh.nodes[node].origin;
     const std::string where =
         o.file.empty() ? std::string() : " (" + o.file + (o.line > 0 ? ":" + std::to_string(o.line) : "") + ")";
-    return node_name(node) + where + " component " + kComponentName[c];
+    return node_name(node) + where + " component " + fe::kDofComponentNames[c];
   };
   fe::SparseCholesky factor;
   try {

@@ -168,7 +168,7 @@ Mesh TetCantilever(int nx, int ny, int nz) {
             c[a + 1] = c[0] + corner.cwiseProduct(h);
           }
           if ((c[1] - c[0]).cross(c[2] - c[0]).dot(c[3] - c[0]) < 0.0) std::swap(c[1], c[2]);
-          const int edges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+          const auto& edges = flexmb::fe::kTet10EdgeCorners;
           std::vector<int> nodes;
           for (const Vec3& x : c) nodes.push_back(node(x));
           for (const auto& e : edges) nodes.push_back(node(0.5 * (c[e[0]] + c[e[1]])));
@@ -340,7 +340,7 @@ MatX Tet10FourPointMass(const Vec3* x, double rho) {
     l[g] = b;
     Eigen::Matrix<double, 10, 1> n;
     for (int i = 0; i < 4; ++i) n(i) = l[i] * (2.0 * l[i] - 1.0);
-    const int edges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+    const auto& edges = flexmb::fe::kTet10EdgeCorners;
     for (int e = 0; e < 6; ++e) n(4 + e) = 4.0 * l[edges[e][0]] * l[edges[e][1]];
     for (int i = 0; i < 10; ++i)
       for (int j = 0; j < 10; ++j)
@@ -361,7 +361,7 @@ TEST(FeCalculix, Tet10MatchesC3D10) {
     one.solid_sections.push_back({1, 0, {}});
     const Vec3 c[4] = {{0.0, 0.0, 0.0}, {0.4, 0.05, 0.02}, {0.1, 0.3, -0.03}, {0.05, 0.08, 0.25}};
     for (const Vec3& p : c) AddNode(one, p);
-    const int edges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+    const auto& edges = flexmb::fe::kTet10EdgeCorners;
     for (const auto& e : edges) AddNode(one, 0.5 * (c[e[0]] + c[e[1]]));
     AddElement(one, ElementType::kTet10, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9});
     one.IndexNodes();

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "cli_runner.h"
+#include "cli_strip.h"
 #include "json_reader.h"
 
 namespace {
@@ -25,12 +26,12 @@ namespace {
 namespace fs = std::filesystem;
 constexpr double kPi = 3.14159265358979323846;
 
-const std::string kStrip = FLEXMB_SOURCE_DIR "/tests/data/fe/nastran/cli_strip.bdf";
-const std::string kHinge = FLEXMB_SOURCE_DIR "/tests/data/fe/nastran/cli_hinge.bdf";
 const std::string kMass = FLEXMB_SOURCE_DIR "/tests/data/fe/nastran/mass.bdf";
 
-// the strip: steel, nu = 0
-constexpr double kE = 2.1e11, kRho = 7850.0, kL = 1.0, kB = 0.05, kT = 0.005;
+using flexmb::testing::kHinge;
+using flexmb::testing::kStrip;
+constexpr double kE = flexmb::testing::kStripE, kRho = flexmb::testing::kStripRho, kL = flexmb::testing::kStripL,
+                 kB = flexmb::testing::kStripB, kT = flexmb::testing::kStripT;
 
 using flexmb::testing::CliResult;
 using flexmb::testing::Json;
@@ -71,27 +72,8 @@ TEST_F(FeCli, CantileverStripFirstBendingAgainstEulerBernoulli) {
   EXPECT_EQ(j["fixed_nodes"].number, 3.0);
   EXPECT_EQ(j["mass_form"].string, "consistent");
 
-  // mass properties of the whole (unconstrained) plate L x b x t
-  const double m = kRho * kL * kB * kT;
-  EXPECT_NEAR(j["mass_kg"].number, m, 1e-12 * m);
-  const std::vector<double> c = j["center_of_mass_m"].Numbers();
-  ASSERT_EQ(c.size(), 3u);
-  EXPECT_NEAR(c[0], 0.5 * kL, 1e-12);
-  EXPECT_NEAR(c[1], 0.5 * kB, 1e-12);
-  EXPECT_NEAR(c[2], 0.0, 1e-12);
-  const Json& I = j["inertia_kg_m2"];
-  ASSERT_EQ(I.array.size(), 3u);
-  for (const Json& row : I.array) ASSERT_EQ(row.array.size(), 3u);
-  // a box L x b x t: the consistent shell mass carries the rotary inertia
-  // of the thickness, so the t^2 terms (1 % of Ixx) are there too
-  const double ixx = m * (kB * kB + kT * kT) / 12.0, iyy = m * (kL * kL + kT * kT) / 12.0,
-               izz = m * (kL * kL + kB * kB) / 12.0;
-  EXPECT_NEAR(I.array[0].array[0].number, ixx, 1e-9 * ixx);
-  EXPECT_NEAR(I.array[1].array[1].number, iyy, 1e-9 * iyy);
-  EXPECT_NEAR(I.array[2].array[2].number, izz, 1e-9 * izz);
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b)
-      if (a != b) EXPECT_NEAR(I.array[a].array[b].number, 0.0, 1e-12 * izz) << a << b;
+  // mass properties of the whole (unconstrained) strip
+  flexmb::testing::ExpectStripMassProperties(j);
 
   const Json& t = j["timings_s"];
   for (const char* key : {"read", "assemble", "solve"}) {

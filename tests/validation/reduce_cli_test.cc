@@ -23,6 +23,7 @@
 
 #include "cli_runner.h"
 #include "flexmb/io/body_file.h"
+#include "cli_strip.h"
 #include "json_reader.h"
 
 namespace {
@@ -34,10 +35,8 @@ using flexmb::testing::ParseJsonObject;
 using flexmb::testing::RunCli;
 
 constexpr double kPi = 3.14159265358979323846;
-const std::string kStrip = FLEXMB_SOURCE_DIR "/tests/data/fe/nastran/cli_strip.bdf";
-const std::string kHinge = FLEXMB_SOURCE_DIR "/tests/data/fe/nastran/cli_hinge.bdf";
-// the strip: steel, nu = 0
-constexpr double kRho = 7850.0, kL = 1.0, kB = 0.05, kT = 0.005;
+using flexmb::testing::kHinge;
+using flexmb::testing::kStrip;
 // both ends of the strip (x = 0 and x = 1 m)
 const std::string kEnds = "1,22,43,21,42,63";
 
@@ -149,30 +148,9 @@ TEST_F(ReduceCli, BodyInfoGivesBackFrequenciesMassAndProvenance) {
   // 17 significant digits: the same doubles
   EXPECT_EQ(j["frequencies_hz"].Numbers(), r["frequencies_hz"].Numbers());
 
-  // mass properties of the plate L x b x t (the consistent shell mass carries
-  // the rotary inertia of the thickness)
-  const double m = kRho * kL * kB * kT;
-  EXPECT_NEAR(j["mass_kg"].number, m, 1e-12 * m);
-  EXPECT_NEAR(r["mass_kg"].number, m, 1e-12 * m);
-  const std::vector<double> c = j["center_of_mass_m"].Numbers();
-  ASSERT_EQ(c.size(), 3u);
-  EXPECT_NEAR(c[0], 0.5 * kL, 1e-12);
-  EXPECT_NEAR(c[1], 0.5 * kB, 1e-12);
-  EXPECT_NEAR(c[2], 0.0, 1e-12);
-  const Json& I = j["inertia_kg_m2"];
-  ASSERT_EQ(I.array.size(), 3u);
-  const double ixx = m * (kB * kB + kT * kT) / 12.0, iyy = m * (kL * kL + kT * kT) / 12.0,
-               izz = m * (kL * kL + kB * kB) / 12.0;
-  EXPECT_NEAR(I.array[0].array[0].number, ixx, 1e-9 * ixx);
-  EXPECT_NEAR(I.array[1].array[1].number, iyy, 1e-9 * iyy);
-  EXPECT_NEAR(I.array[2].array[2].number, izz, 1e-9 * izz);
-  for (int a = 0; a < 3; ++a) {
-    for (int b = 0; b < 3; ++b) {
-      if (a != b) {
-        EXPECT_NEAR(I.array[a].array[b].number, 0.0, 1e-12 * izz) << a << b;
-      }
-    }
-  }
+  // mass properties of the strip, in the body file's report and the mesh's
+  flexmb::testing::ExpectStripMassProperties(j);
+  flexmb::testing::ExpectStripMassProperties(r);
 
   EXPECT_EQ(j["stress"]["shell"]["elements"].number, 40.0);
   EXPECT_EQ(j["stress"]["beam"]["elements"].number, 0.0);

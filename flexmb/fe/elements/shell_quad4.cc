@@ -11,15 +11,15 @@ namespace {
 using Mat24 = Eigen::Matrix<double, 24, 24>;
 using Mat2x4 = Eigen::Matrix<double, 2, 4>;
 
-constexpr double kXi[4] = {-1.0, 1.0, 1.0, -1.0};
-constexpr double kEta[4] = {-1.0, -1.0, 1.0, 1.0};
+constexpr double kQuadXi[4] = {-1.0, 1.0, 1.0, -1.0};
+constexpr double kQuadEta[4] = {-1.0, -1.0, 1.0, 1.0};
 
 // bilinear shape functions and their natural derivatives (rows d/dxi, d/deta)
 void Shape(double xi, double eta, Eigen::Vector4d& n, Mat2x4& dn) {
   for (int i = 0; i < 4; ++i) {
-    n(i) = 0.25 * (1.0 + xi * kXi[i]) * (1.0 + eta * kEta[i]);
-    dn(0, i) = 0.25 * kXi[i] * (1.0 + eta * kEta[i]);
-    dn(1, i) = 0.25 * kEta[i] * (1.0 + xi * kXi[i]);
+    n(i) = 0.25 * (1.0 + xi * kQuadXi[i]) * (1.0 + eta * kQuadEta[i]);
+    dn(0, i) = 0.25 * kQuadXi[i] * (1.0 + eta * kQuadEta[i]);
+    dn(1, i) = 0.25 * kQuadEta[i] * (1.0 + xi * kQuadXi[i]);
   }
 }
 
@@ -95,7 +95,7 @@ void ShellQuad4Matrices(const ElementInput& in, MatX& K, MatX& M) {
   Mat24 ml = Mat24::Zero();
   const double g = 1.0 / std::sqrt(3.0);
   for (int gp = 0; gp < 4; ++gp) {
-    const double xi = kXi[gp] * g, eta = kEta[gp] * g;
+    const double xi = kQuadXi[gp] * g, eta = kQuadEta[gp] * g;
     Shape(xi, eta, n, dn);
     const Eigen::Matrix2d j = dn * xy;
     const double det = j.determinant();
@@ -155,7 +155,7 @@ void ShellQuad4Matrices(const ElementInput& in, MatX& K, MatX& M) {
     // area shares int N_i dA; translations and all rotations diagonal
     Eigen::Vector4d share = Eigen::Vector4d::Zero();
     for (int gp = 0; gp < 4; ++gp) {
-      Shape(kXi[gp] * g, kEta[gp] * g, n, dn);
+      Shape(kQuadXi[gp] * g, kQuadEta[gp] * g, n, dn);
       share += n * (dn * xy).determinant();
     }
     ml = shell::LumpedMass<4>(share, m0, m2);

@@ -10,19 +10,19 @@ namespace {
 
 using Mat24 = Eigen::Matrix<double, 24, 24>;
 
-constexpr double kXi[8] = {-1.0, 1.0, 1.0, -1.0, -1.0, 1.0, 1.0, -1.0};
-constexpr double kEta[8] = {-1.0, -1.0, 1.0, 1.0, -1.0, -1.0, 1.0, 1.0};
-constexpr double kZeta[8] = {-1.0, -1.0, -1.0, -1.0, 1.0, 1.0, 1.0, 1.0};
+constexpr double kHexXi[8] = {-1.0, 1.0, 1.0, -1.0, -1.0, 1.0, 1.0, -1.0};
+constexpr double kHexEta[8] = {-1.0, -1.0, 1.0, 1.0, -1.0, -1.0, 1.0, 1.0};
+constexpr double kHexZeta[8] = {-1.0, -1.0, -1.0, -1.0, 1.0, 1.0, 1.0, 1.0};
 
 // trilinear shape functions and their natural derivatives
-void Shape(const solid::QuadPoint& p, Eigen::Matrix<double, 8, 1>& n,
+void Hex8Shape(const solid::QuadPoint& p, Eigen::Matrix<double, 8, 1>& n,
            Eigen::Matrix<double, 3, 8>& dn) {
   for (int i = 0; i < 8; ++i) {
-    const double a = 1.0 + p.xi * kXi[i], b = 1.0 + p.eta * kEta[i], c = 1.0 + p.zeta * kZeta[i];
+    const double a = 1.0 + p.xi * kHexXi[i], b = 1.0 + p.eta * kHexEta[i], c = 1.0 + p.zeta * kHexZeta[i];
     n(i) = 0.125 * a * b * c;
-    dn(0, i) = 0.125 * kXi[i] * b * c;
-    dn(1, i) = 0.125 * kEta[i] * a * c;
-    dn(2, i) = 0.125 * kZeta[i] * a * b;
+    dn(0, i) = 0.125 * kHexXi[i] * b * c;
+    dn(1, i) = 0.125 * kHexEta[i] * a * c;
+    dn(2, i) = 0.125 * kHexZeta[i] * a * b;
   }
 }
 
@@ -54,10 +54,10 @@ void SolidHex8Matrices(const ElementInput& in, MatX& K, MatX& M, Hex8Formulation
 
   Mat24 k = Mat24::Zero();
   if (formulation == Hex8Formulation::kFullIntegration) {
-    solid::AddStiffness<8>(g2, 8, Shape, in.x, s, e, k);
+    solid::AddStiffness<8>(g2, 8, Hex8Shape, in.x, s, e, k);
   } else {
     // centre Jacobian for Taylor's correction
-    Shape({0.0, 0.0, 0.0, 0.0}, n, dn);
+    Hex8Shape({0.0, 0.0, 0.0, 0.0}, n, dn);
     Eigen::Matrix3d j0 = Eigen::Matrix3d::Zero();
     for (int i = 0; i < 8; ++i) j0 += dn.col(i) * in.x[i].transpose();
     const double det0 = j0.determinant();
@@ -66,7 +66,7 @@ void SolidHex8Matrices(const ElementInput& in, MatX& K, MatX& M, Hex8Formulation
     Eigen::Matrix<double, 24, 9> kci = Eigen::Matrix<double, 24, 9>::Zero();
     Eigen::Matrix<double, 9, 9> kii = Eigen::Matrix<double, 9, 9>::Zero();
     for (const solid::QuadPoint& p : g2) {
-      Shape(p, n, dn);
+      Hex8Shape(p, n, dn);
       const double det = solid::CartesianDerivatives<8>(dn, in.x, s, e, dx);
       const Eigen::Matrix<double, 6, 24> b = solid::StrainMatrix<8>(dx);
       // modes 1 - xi^2, 1 - eta^2, 1 - zeta^2: natural derivatives, then cartesian
@@ -82,13 +82,13 @@ void SolidHex8Matrices(const ElementInput& in, MatX& K, MatX& M, Hex8Formulation
   }
 
   Mat24 m = Mat24::Zero();
-  solid::AddConsistentMass<8>(g3, 27, Shape, in.x, s, e, m);
+  solid::AddConsistentMass<8>(g3, 27, Hex8Shape, in.x, s, e, m);
   solid::Finish<24>(k, m, in.mass_form, solid::Lumping::kRowSum, K, M);
 }
 
 void SolidHex8Stress(const ElementInput& in, MatX& S) {
   const solid::SolidData s = solid::CheckSolidInput(in, 8, 8);
-  S = solid::PointStress<8>({0.0, 0.0, 0.0, 0.0}, Shape, in.x, s, *in.element);
+  S = solid::PointStress<8>({0.0, 0.0, 0.0, 0.0}, Hex8Shape, in.x, s, *in.element);
 }
 
 }  // namespace flexmb::fe

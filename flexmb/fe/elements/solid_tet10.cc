@@ -7,11 +7,10 @@ namespace {
 
 using Mat30 = Eigen::Matrix<double, 30, 30>;
 
-// mid-edge node k (5..10) between corners kEdge[k - 5]
-constexpr int kEdge[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+// mid-edge node k (5..10) between corners kTet10EdgeCorners[k - 5]
 
 // quadratic shape functions from the volume coordinates L = (1 - xi - eta - zeta, xi, eta, zeta)
-void Shape(const solid::QuadPoint& p, Eigen::Matrix<double, 10, 1>& n,
+void Tet10Shape(const solid::QuadPoint& p, Eigen::Matrix<double, 10, 1>& n,
            Eigen::Matrix<double, 3, 10>& dn) {
   const double l[4] = {1.0 - p.xi - p.eta - p.zeta, p.xi, p.eta, p.zeta};
   // dL_i / d(xi, eta, zeta)
@@ -21,7 +20,7 @@ void Shape(const solid::QuadPoint& p, Eigen::Matrix<double, 10, 1>& n,
     for (int d = 0; d < 3; ++d) dn(d, i) = (4.0 * l[i] - 1.0) * dl[i][d];
   }
   for (int k = 0; k < 6; ++k) {
-    const int a = kEdge[k][0], b = kEdge[k][1];
+    const int a = kTet10EdgeCorners[k][0], b = kTet10EdgeCorners[k][1];
     n(4 + k) = 4.0 * l[a] * l[b];
     for (int d = 0; d < 3; ++d) dn(d, 4 + k) = 4.0 * (dl[a][d] * l[b] + l[a] * dl[b][d]);
   }
@@ -52,19 +51,19 @@ void SolidTet10Matrices(const ElementInput& in, MatX& K, MatX& M) {
   Eigen::Matrix<double, 10, 1> n;
   Eigen::Matrix<double, 3, 10> dn, dx;
   for (const solid::QuadPoint& c : kCorners) {
-    Shape(c, n, dn);
+    Tet10Shape(c, n, dn);
     solid::CartesianDerivatives<10>(dn, in.x, s, e, dx);
   }
   Mat30 k = Mat30::Zero();
   Mat30 m = Mat30::Zero();
-  solid::AddStiffness<10>(solid::kTetFourPoint, 4, Shape, in.x, s, e, k);
-  solid::AddConsistentMass<10>(kFourteenPoint, 14, Shape, in.x, s, e, m);
+  solid::AddStiffness<10>(solid::kTetFourPoint, 4, Tet10Shape, in.x, s, e, k);
+  solid::AddConsistentMass<10>(kFourteenPoint, 14, Tet10Shape, in.x, s, e, m);
   solid::Finish<30>(k, m, in.mass_form, solid::Lumping::kHrz, K, M);
 }
 
 void SolidTet10Stress(const ElementInput& in, MatX& S) {
   const solid::SolidData s = solid::CheckSolidInput(in, 10, 4);
-  S = solid::PointStress<10>({0.25, 0.25, 0.25, 0.0}, Shape, in.x, s, *in.element);
+  S = solid::PointStress<10>({0.25, 0.25, 0.25, 0.0}, Tet10Shape, in.x, s, *in.element);
 }
 
 }  // namespace flexmb::fe

@@ -8,7 +8,7 @@ namespace {
 using Mat12 = Eigen::Matrix<double, 12, 12>;
 
 // linear shape functions N = (1 - xi - eta - zeta, xi, eta, zeta)
-void Shape(const solid::QuadPoint& p, Eigen::Matrix<double, 4, 1>& n,
+void Tet4Shape(const solid::QuadPoint& p, Eigen::Matrix<double, 4, 1>& n,
            Eigen::Matrix<double, 3, 4>& dn) {
   n << 1.0 - p.xi - p.eta - p.zeta, p.xi, p.eta, p.zeta;
   dn << -1.0, 1.0, 0.0, 0.0, -1.0, 0.0, 1.0, 0.0, -1.0, 0.0, 0.0, 1.0;
@@ -24,14 +24,14 @@ void SolidTet4Matrices(const ElementInput& in, MatX& K, MatX& M) {
   const Element& e = *in.element;
   Mat12 k = Mat12::Zero();
   Mat12 m = Mat12::Zero();
-  solid::AddStiffness<4>(kOnePoint, 1, Shape, in.x, s, e, k);
-  solid::AddConsistentMass<4>(solid::kTetFourPoint, 4, Shape, in.x, s, e, m);
+  solid::AddStiffness<4>(kOnePoint, 1, Tet4Shape, in.x, s, e, k);
+  solid::AddConsistentMass<4>(solid::kTetFourPoint, 4, Tet4Shape, in.x, s, e, m);
   solid::Finish<12>(k, m, in.mass_form, solid::Lumping::kHrz, K, M);
 }
 
 void SolidTet4Stress(const ElementInput& in, MatX& S) {
   const solid::SolidData s = solid::CheckSolidInput(in, 4, 4);
-  S = solid::PointStress<4>(kOnePoint[0], Shape, in.x, s, *in.element);
+  S = solid::PointStress<4>(kOnePoint[0], Tet4Shape, in.x, s, *in.element);
 }
 
 }  // namespace flexmb::fe

@@ -95,7 +95,6 @@ Mat6 TetsRigidMass(const std::vector<std::array<Vec3, 4>>& tets, double rho) {
 
 const std::vector<Vec3> kTet = {
     {0.0, 0.0, 0.0}, {1.2, 0.1, -0.1}, {0.2, 0.9, 0.1}, {0.1, 0.2, 1.1}};
-constexpr int kTetEdge[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
 
 std::vector<Vec3> Place(const std::vector<Vec3>& p, const Eigen::Matrix3d& R, const Vec3& c) {
   std::vector<Vec3> out;
@@ -106,7 +105,7 @@ std::vector<Vec3> Place(const std::vector<Vec3>& p, const Eigen::Matrix3d& R, co
 std::vector<Vec3> Tet10(const std::vector<Vec3>& c, double bow = 0.0) {
   std::vector<Vec3> x = c;
   for (int k = 0; k < 6; ++k)
-    x.push_back(0.5 * (c[kTetEdge[k][0]] + c[kTetEdge[k][1]]) +
+    x.push_back(0.5 * (c[kTet10EdgeCorners[k][0]] + c[kTet10EdgeCorners[k][1]]) +
                 bow * Vec3(0.3 * k - 0.7, 0.5 - 0.2 * k, 0.1 * k * k - 0.4));
   return x;
 }
@@ -206,7 +205,7 @@ TEST(SolidElements, Tet10ConsistentMassIsTheClosedForm) {
   s.Compute(K, M);
   const double v = (kTet[1] - kTet[0]).cross(kTet[2] - kTet[0]).dot(kTet[3] - kTet[0]) / 6.0;
   auto on_edge = [](int corner, int edge) {
-    return kTetEdge[edge][0] == corner || kTetEdge[edge][1] == corner;
+    return kTet10EdgeCorners[edge][0] == corner || kTet10EdgeCorners[edge][1] == corner;
   };
   MatX ref = MatX::Zero(30, 30);
   for (int i = 0; i < 10; ++i)
@@ -221,7 +220,7 @@ TEST(SolidElements, Tet10ConsistentMassIsTheClosedForm) {
         c = 32.0;
       } else {
         const int a = i - 4, b = j - 4;
-        const bool share = on_edge(kTetEdge[a][0], b) || on_edge(kTetEdge[a][1], b);
+        const bool share = on_edge(kTet10EdgeCorners[a][0], b) || on_edge(kTet10EdgeCorners[a][1], b);
         c = share ? 16.0 : 8.0;
       }
       for (int d = 0; d < 3; ++d) ref(3 * i + d, 3 * j + d) = 2.5 * v / 420.0 * c;
@@ -347,7 +346,7 @@ TEST(SolidElements, TetPatchTestsOnDistortedCube) {
   std::vector<std::vector<int>> tet10;
   for (const auto& t : tets) {
     std::vector<int> e = t;
-    for (const auto& edge : kTetEdge) {
+    for (const auto& edge : kTet10EdgeCorners) {
       const int a = t[edge[0]], b = t[edge[1]];
       const std::pair<int, int> key(std::min(a, b), std::max(a, b));
       if (!mid.count(key)) {

@@ -260,7 +260,6 @@ struct SolidFixture {
   }
 };
 
-constexpr int kTetEdge[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
 
 std::vector<Vec3> SolidNodes(ElementType type, unsigned seed) {
   const Mat3 R = RandomRotation(seed);
@@ -278,7 +277,7 @@ std::vector<Vec3> SolidNodes(ElementType type, unsigned seed) {
       {0.0, 0.0, 0.0}, {1.2, 0.1, -0.1}, {0.2, 0.9, 0.1}, {0.1, 0.2, 1.1}};
   for (const Vec3& p : corners) x.push_back(c + R * p);
   if (type == ElementType::kTet10)
-    for (const auto& e : kTetEdge) x.push_back(0.5 * (x[e[0]] + x[e[1]]));
+    for (const auto& e : kTet10EdgeCorners) x.push_back(0.5 * (x[e[0]] + x[e[1]]));
   return x;
 }
 

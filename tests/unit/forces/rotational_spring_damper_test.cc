@@ -15,7 +15,7 @@ namespace {
 
 using namespace flexmb::testing;
 
-RotationalSpringDamperLaw Linear(double k, double c, double a0, double t0) {
+RotationalSpringDamperLaw LinearRotational(double k, double c, double a0, double t0) {
   RotationalSpringDamperLaw law;
   law.stiffness = k;
   law.damping = c;
@@ -26,8 +26,8 @@ RotationalSpringDamperLaw Linear(double k, double c, double a0, double t0) {
 
 TEST(RotationalSpringDamper, TangentsMatchFiniteDifferences) {
   std::mt19937 rng(3);
-  const RotationalSpringDamper linear("r", Linear(250.0, 12.0, 0.4, -7.0));
-  RotationalSpringDamperLaw law = Linear(0.0, 5.0, -0.2, 1.0);
+  const RotationalSpringDamper linear("r", LinearRotational(250.0, 12.0, 0.4, -7.0));
+  RotationalSpringDamperLaw law = LinearRotational(0.0, 5.0, -0.2, 1.0);
   law.torque_angle = std::make_shared<TableFunction>(
       std::vector<double>{-4, -1, 0, 1, 4}, std::vector<double>{-900, -90, 0, 110, 700},
       TableFunction::Interpolation::kCubicSpline, true);
@@ -48,7 +48,7 @@ TEST(RotationalSpringDamper, TangentsMatchFiniteDifferences) {
 TEST(RotationalSpringDamper, KnownTorqueAndEnergy) {
   // j turned by 0.5 rad about z_i = world y, turning at 2 rad/s relative to i
   const double k = 40.0, c = 3.0, a0 = 0.1, t0 = 2.0;
-  const RotationalSpringDamper r("r", Linear(k, c, a0, t0));
+  const RotationalSpringDamper r("r", LinearRotational(k, c, a0, t0));
   MarkerState mi, mj;
   mi.R_WM = ExpSO3(Vec3(-M_PI / 2, 0, 0));  // z_i = +y
   mj.R_WM = ExpSO3(Vec3(0, 0.5, 0)) * mi.R_WM;
@@ -70,7 +70,7 @@ TEST(RotationalSpringDamper, KnownTorqueAndEnergy) {
 }
 
 TEST(RotationalSpringDamper, UndefinedAngleThrows) {
-  const RotationalSpringDamper r("r", Linear(1.0, 0.0, 0.0, 0.0));
+  const RotationalSpringDamper r("r", LinearRotational(1.0, 0.0, 0.0, 0.0));
   MarkerState mi, mj;
   mj.R_WM = ExpSO3(Vec3(0, -M_PI / 2, 0));  // x_j = +z = z_i
   EXPECT_THROW(Wrench(r, mi, mj, 0.0), NumericalError);
@@ -91,7 +91,7 @@ TEST(RotationalSpringDamper, TorsionPendulumMatchesAnalyticSolution) {
   const int g = model.AddMarker(0, "pin", Vec3::Zero(), Mat3::Identity());
   const int p = model.AddMarker(b, "pin", Vec3::Zero(), Mat3::Identity());
   model.AddJoint(std::make_unique<RevoluteJoint>("pin"), g, p);
-  model.AddForce(std::make_unique<RotationalSpringDamper>("spring", Linear(k, 0.0, 0.0, 0.0)), g, p);
+  model.AddForce(std::make_unique<RotationalSpringDamper>("spring", LinearRotational(k, 0.0, 0.0, 0.0)), g, p);
   model.solver.dt = 1e-3;
   model.solver.rho_inf = 1.0;
   model.Finalize();

@@ -241,7 +241,7 @@ Mesh FeatureMesh() {
   std::vector<int> tet10;
   const Vec3 c[4] = {{4, 0, 0}, {5, 0, 0}, {4, 1, 0}, {4, 0, 1}};
   for (const Vec3& p : c) tet10.push_back(node(p.x(), p.y(), p.z()));
-  const int edges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+  const auto& edges = flexmb::fe::kTet10EdgeCorners;
   for (const auto& e : edges) {
     const Vec3 p = 0.5 * (c[e[0]] + c[e[1]]);
     tet10.push_back(node(p.x(), p.y(), p.z()));

@@ -88,7 +88,7 @@ TEST(GmshReader, Tet10MidEdgeNodesFollowFlexmbOrder) {
     const Mesh m = ReadGmsh(Gmsh(f));
     ASSERT_EQ(Count(m, ElementType::kTet10), 110) << f;
     // flexmb (Nastran) order: 5 on 1-2, 6 on 2-3, 7 on 3-1, 8 on 1-4, 9 on 2-4, 10 on 3-4
-    const int edge[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+    const auto& edge = flexmb::fe::kTet10EdgeCorners;
     double volume = 0.0;
     for (const fe::Element& e : m.elements) {
       if (e.type != ElementType::kTet10) continue;

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <random>
 
 #include "matrix_test_util.h"
 
@@ -31,34 +30,10 @@ std::string Head(const std::string& text, int n) {
 // random sparse symmetric matrix with values of every magnitude and full
 // 17-digit mantissas, plus values that need exactly 17 significant digits
 fe::SparseMat RandomSymmetric(int n, unsigned seed, bool with_specials = true) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  std::uniform_int_distribution<int> e(-30, 30);
-  std::vector<Eigen::Triplet<double, int>> t;
-  for (int i = 0; i < n; ++i) {
-    t.emplace_back(i, i, 1.0 + std::fabs(u(rng)) * std::pow(10.0, e(rng)));
-    for (int j = 0; j < i; ++j) {
-      if (u(rng) > 0.8) {
-        const double v = u(rng) * std::pow(10.0, e(rng));
-        t.emplace_back(i, j, v);
-        t.emplace_back(j, i, v);
-      }
-    }
-  }
-  const double specials[] = {0.1 + 0.2, 1.0 / 3.0, std::nextafter(1.0, 2.0), 2.0 / 3.0 * 1e-300, 1.7976931348623157e308,
-                             4.9406564584124654e-324, -0.0, 123456789.12345678};
-  int k = 0;
-  for (double v : specials) {
-    if (!with_specials) break;
-    const int i = n - 1 - k, j = k;
-    ++k;
-    t.emplace_back(i, j, v);
-    t.emplace_back(j, i, v);
-  }
-  fe::SparseMat A(n, n);
-  A.setFromTriplets(t.begin(), t.end(), [](double, double b) { return b; });
-  A.makeCompressed();
-  return A;
+  if (!with_specials) return testing::RandomRoundTripMatrix(n, seed, true, 30, 0.1, {});
+  return testing::RandomRoundTripMatrix(n, seed, true, 30, 0.1,
+                                        {0.1 + 0.2, 1.0 / 3.0, std::nextafter(1.0, 2.0), 2.0 / 3.0 * 1e-300,
+                                         1.7976931348623157e308, 4.9406564584124654e-324, -0.0, 123456789.12345678});
 }
 
 TEST(HarwellBoeing, ReadsClassicHeaderWithRightHandSide) {

@@ -4,7 +4,6 @@
 
 #include <Eigen/Dense>
 #include <cmath>
-#include <random>
 
 #include "matrix_test_util.h"
 
@@ -18,32 +17,12 @@ using testing::InputErrorOf;
 using testing::ReadText;
 using testing::Replace;
 
+// random sparse matrix with values of every magnitude and extremes
 fe::SparseMat RandomMatrix(int n, unsigned seed, bool symmetric, bool specials = true) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  std::uniform_int_distribution<int> e(-300, 300);
-  std::vector<Eigen::Triplet<double, int>> t;
-  for (int i = 0; i < n; ++i) {
-    t.emplace_back(i, i, 2.0 + u(rng));
-    for (int j = 0; j < i; ++j) {
-      if (u(rng) > 0.7) {
-        const double v = u(rng) * std::pow(10.0, e(rng));
-        t.emplace_back(i, j, v);
-        t.emplace_back(j, i, symmetric ? v : u(rng));
-      }
-    }
-  }
-  for (double v : {0.1 + 0.2, 1.0 / 3.0, std::nextafter(1.0, 0.0), 4.9406564584124654e-324, -0.0,
-                   1.7976931348623157e308}) {
-    if (!specials) break;
-    const int i = static_cast<int>(t.size() % n), j = (i * 7 + 3) % n;
-    t.emplace_back(i, j, v);
-    if (i != j) t.emplace_back(j, i, v);
-  }
-  fe::SparseMat A(n, n);
-  A.setFromTriplets(t.begin(), t.end(), [](double, double b) { return b; });
-  A.makeCompressed();
-  return A;
+  if (!specials) return testing::RandomRoundTripMatrix(n, seed, symmetric, 300, 0.15, {});
+  return testing::RandomRoundTripMatrix(n, seed, symmetric, 300, 0.15,
+                                        {0.1 + 0.2, 1.0 / 3.0, std::nextafter(1.0, 0.0), 4.9406564584124654e-324,
+                                         -0.0, 1.7976931348623157e308});
 }
 
 TEST(MatrixMarket, ReadsGeneralWithCommentsCaseInsensitiveBannerAndSumsDuplicates) {

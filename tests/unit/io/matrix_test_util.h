@@ -8,7 +8,11 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cmath>
 #include <cstring>
+#include <initializer_list>
+#include <random>
+#include <vector>
 
 #include "flexmb/fe/assembly.h"
 #include "mesh_io_test_util.h"
@@ -29,6 +33,42 @@ inline Eigen::Matrix3d IntegerTestMatrix() {
   Eigen::Matrix3d a;
   a << 2000, -1000, 0, -1000, 2000, 0, 0, 0, 1000;
   return a;
+}
+
+/// A random sparse n x n matrix for the round-trip tests of the matrix
+/// writers: diagonal `diagonal` + U(-1, 1) (scaled by 10^U(exponents) when
+/// `scaled_diagonal`), each lower entry present with probability `density`
+/// and of magnitude U(-1, 1) 10^U(+-max_exponent), mirrored (symmetric) or
+/// with an independent upper entry; then the `specials` (values that need
+/// all 17 significant digits, extremes, subnormals, -0) at pseudo-random
+/// symmetric positions, overwriting what is there.
+inline fe::SparseMat RandomRoundTripMatrix(int n, unsigned seed, bool symmetric, int max_exponent, double density,
+                                           std::initializer_list<double> specials) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::uniform_int_distribution<int> e(-max_exponent, max_exponent);
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (int i = 0; i < n; ++i) {
+    t.emplace_back(i, i, 2.0 + u(rng));
+    for (int j = 0; j < i; ++j) {
+      if (u(rng) > 1.0 - 2.0 * density) {
+        const double v = u(rng) * std::pow(10.0, e(rng));
+        t.emplace_back(i, j, v);
+        t.emplace_back(j, i, symmetric ? v : u(rng));
+      }
+    }
+  }
+  int k = 0;
+  for (double v : specials) {
+    const int i = (k * 7 + 3) % n, j = n - 1 - k % n;
+    ++k;
+    t.emplace_back(i, j, v);
+    if (i != j) t.emplace_back(j, i, v);
+  }
+  fe::SparseMat A(n, n);
+  A.setFromTriplets(t.begin(), t.end(), [](double, double b) { return b; });
+  A.makeCompressed();
+  return A;
 }
 
 /// Same compressed storage: column pointers, row indices and bit-identical values.

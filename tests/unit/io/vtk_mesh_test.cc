@@ -72,7 +72,7 @@ TEST(VtkMesh, QuadraticTetraNodeOrder) {
   // gmsh's VTK export of 10-node tetrahedra: VTK order = flexmb order
   const Mesh m = ReadVtk(FeData("vtk/tet10.vtk"));
   ASSERT_EQ(m.elements.size(), 110u);
-  const int edge[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+  const auto& edge = flexmb::fe::kTet10EdgeCorners;
   double volume = 0.0;
   for (const fe::Element& e : m.elements) {
     ASSERT_EQ(e.type, ElementType::kTet10);

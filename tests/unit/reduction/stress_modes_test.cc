@@ -134,6 +134,25 @@ Mat3 Tensor(const StressTable& s, size_t k, int side) {
   return s.axes[k] * local * s.axes[k].transpose();
 }
 
+// constrains node (i, j) of the (nx + 1) x (ny + 1) grid of a strip of width
+// b with mask(i, j) (bits: DOF 1..6) and loads the nodes of column i with
+// the edge load per unit width edge(i) (force, moment) as consistent nodal
+// loads (half on the two corner nodes); returns the nodal loads
+template <typename Mask, typename Edge>
+std::map<int, Vec6> HoldAndLoadStrip(fe::Mesh& mesh, const std::vector<int>& grid, int nx, int ny, double b,
+                                     Mask&& mask, Edge&& edge) {
+  std::map<int, Vec6> loads;
+  for (int j = 0; j <= ny; ++j) {
+    for (int i = 0; i <= nx; ++i) {
+      const int n = grid[j * (nx + 1) + i];
+      AddConstraint(mesh, n, mask(i, j));
+      const Vec6 per_width = edge(i);
+      if (!per_width.isZero()) loads[n] = per_width * (b / ny) * (j == 0 || j == ny ? 0.5 : 1.0);
+    }
+  }
+  return loads;
+}
+
 // 1.2 x 0.4 m strip, t = 10 mm, steel; x = 0 edge held in x, one corner in
 // y, out-of-plane DOF fixed; traction s0 on the x = a edge as consistent
 // nodal forces. Exact: sxx = s0 = E u(a) / a, syy = sxy = 0 on both surfaces.
@@ -144,21 +163,12 @@ TEST(StressModes, PlateStripInUniformTension) {
     const double a = 1.2, b = 0.4, t = 0.01, s0 = 5.0e7;
     const std::vector<int> grid = AddPlate(mesh, nx, ny, a, b, t);
     if (trias) SplitQuads(mesh);
-    std::map<int, Vec6> loads;
-    for (int j = 0; j <= ny; ++j) {
-      for (int i = 0; i <= nx; ++i) {
-        const int n = grid[j * (nx + 1) + i];
-        int mask = 0b011100;
-        if (i == 0) mask |= 0b000001;
-        if (i == 0 && j == 0) mask |= 0b000010;
-        AddConstraint(mesh, n, mask);
-        if (i == nx) {
-          Vec6 f = Vec6::Zero();
-          f(0) = s0 * t * b / ny * (j == 0 || j == ny ? 0.5 : 1.0);
-          loads[n] = f;
-        }
-      }
-    }
+    Vec6 traction = Vec6::Zero();
+    traction(0) = s0 * t;
+    const std::map<int, Vec6> loads = HoldAndLoadStrip(
+        mesh, grid, nx, ny, b,
+        [](int i, int j) { return 0b011100 | (i == 0 ? 0b000001 : 0) | (i == 0 && j == 0 ? 0b000010 : 0); },
+        [&](int i) { return i == nx ? traction : Vec6::Zero(); });
     const VecX u = StaticMode(mesh, loads);
     const double eps = u(6 * grid[nx]) / a;
     const double E = 2.1e11;
@@ -187,20 +197,17 @@ TEST(StressModes, PlateInPureBending) {
     const double a = 1.2, b = 0.4, t = 0.01, m = 300.0;
     const std::vector<int> grid = AddPlate(mesh, nx, ny, a, b, t);
     if (trias) SplitQuads(mesh);
-    std::map<int, Vec6> loads;
-    for (int j = 0; j <= ny; ++j) {
-      for (int i = 0; i <= nx; ++i) {
-        const int n = grid[j * (nx + 1) + i];
-        int mask = 0b100011;
-        if ((i == 0 && j == 0) || (i == nx && j == 0) || (i == 0 && j == ny)) mask |= 0b000100;
-        AddConstraint(mesh, n, mask);
-        if (i == 0 || i == nx) {
+    const std::map<int, Vec6> loads = HoldAndLoadStrip(
+        mesh, grid, nx, ny, b,
+        [&](int i, int j) {
+          const bool corner = (i == 0 && j == 0) || (i == nx && j == 0) || (i == 0 && j == ny);
+          return 0b100011 | (corner ? 0b000100 : 0);
+        },
+        [&](int i) {
           Vec6 f = Vec6::Zero();
-          f(4) = (i == nx ? m : -m) * b / ny * (j == 0 || j == ny ? 0.5 : 1.0);
-          loads[n] = f;
-        }
-      }
-    }
+          if (i == 0 || i == nx) f(4) = i == nx ? m : -m;
+          return f;
+        });
     const StressModes sm = ComputeStressModes(mesh, StaticMode(mesh, loads));
     const StressTable& s = sm.shell;
     const double ref = 6.0 * m / (t * t);
@@ -298,7 +305,7 @@ void TetBox(fe::Mesh& mesh, bool quadratic) {
       if ((mesh.nodes[tet[1]].x - x0).cross(mesh.nodes[tet[2]].x - x0).dot(mesh.nodes[tet[3]].x - x0) < 0)
         std::swap(tet[1], tet[2]);
       if (quadratic) {
-        const int e[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+        const auto& e = flexmb::fe::kTet10EdgeCorners;
         const std::vector<int> corners = tet;
         for (const auto& edge : e) tet.push_back(midpoint(corners[edge[0]], corners[edge[1]]));
       }
@@ -372,7 +379,7 @@ fe::Mesh MixedMesh() {
   AddElement(mesh, fe::ElementType::kTet4, solid,
              add({1.0, 2.0, -1.0}, {{0.0, 0.0, 0.0}, {1.2, 0.1, -0.1}, {0.2, 0.9, 0.1}, {0.1, 0.2, 1.1}}));
   std::vector<fe::Vec3> c = {{0.0, 0.0, 0.0}, {1.0, 0.1, 0.0}, {0.1, 0.9, 0.1}, {0.0, 0.1, 1.0}};
-  const int edges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+  const auto& edges = flexmb::fe::kTet10EdgeCorners;
   for (const auto& ed : edges) c.push_back(0.5 * (c[ed[0]] + c[ed[1]]) + fe::Vec3(0.02, -0.01, 0.015));
   AddElement(mesh, fe::ElementType::kTet10, solid, add({-2.0, 1.0, 1.0}, c));
   return mesh;
