@@ -151,6 +151,8 @@ int main(int argc, char** argv) {
   reduce->add_option("--modes-file", reduce_opt.modes_file,
                      "use the static and normal modes of this modes file (modes.mtx of an exchange set) instead of "
                      "computing them; the interface is the file's");
+  reduce->add_flag("--geometric-stiffening", reduce_opt.geometric_stiffening,
+                   "also store the centrifugal geometric stiffness (beam models only)");
   reduce->add_option("--output,-o", reduce_opt.output, "body file to write (.h5)")->required();
   reduce->add_flag("--json", reduce_opt.json, "print one JSON object instead of text");
 

@@ -4,7 +4,12 @@
 Usage: /usr/bin/python3 plot.py RUN_DIR [RUN_DIR ...] [--out DIR]
 Writes lateral_acceleration.png, steering_wheel_angle.png, roll.png,
 yaw_rate.png, axle_loads.png, tire_loads.png and path.png; several run directories are
-overlaid (e.g. rigid against elastic frame, as the seed's Figs. 9 to 14).
+overlaid (e.g. rigid against elastic frame, as the seed's Figs. 9 to 14:
+`plot.py RIGID_DIR ELASTIC_DIR --out PNGDIR`). Runs with the elastic frame
+add frame_deflection.png (largest elastic displacement of a frame node
+relative to the floating frame, and the x of that node) and frame_stress.png
+(largest von Mises stress of the shell stress modes, and the x of that
+element) over time.
 """
 import argparse
 import csv
@@ -56,6 +61,27 @@ def main():
         ax.set_xlabel("time [s]")
         ax.set_ylabel(ylabel)
         ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, name + ".png"), dpi=110)
+        plt.close(fig)
+    elastic = [(label, c) for label, c in runs if "frame_max_displacement_mm" in c]
+    for name, key, pos, ylabel in [
+        ("frame_deflection", "frame_max_displacement_mm", "frame_max_displacement_x",
+         "max elastic displacement of the frame [mm]"),
+        ("frame_stress", "frame_max_stress_MPa", "frame_max_stress_x", "max von Mises stress in the frame [MPa]"),
+    ]:
+        if not elastic:
+            break
+        fig, (ax, ax2) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+        for label, c in elastic:
+            ax.plot(c["time"], c[key], label=label)
+            ax2.plot(c["time"], c[pos], ".", ms=2, label=label)
+        ax.set_ylabel(ylabel)
+        ax2.set_ylabel("x of the maximum [m]")
+        ax2.set_xlabel("time [s]")
+        for a_ in (ax, ax2):
+            a_.grid(True, alpha=0.3)
         ax.legend(fontsize=7)
         fig.tight_layout()
         fig.savefig(os.path.join(out, name + ".png"), dpi=110)

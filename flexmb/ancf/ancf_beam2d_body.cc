@@ -11,8 +11,8 @@ namespace {
 
 using Vec2 = Eigen::Vector2d;
 using Mat2 = Eigen::Matrix2d;
-using ElVec = AncfBeam2d::Vec;
-using ElMat = AncfBeam2d::Mat;
+using BeamElVec = AncfBeam2d::Vec;
+using BeamElMat = AncfBeam2d::Mat;
 
 AncfBeam2d MakeElement(const std::string& name, const AncfBeam2dData& d) {
   const ErrorContext ctx{"", 0, "body '" + name + "'"};
@@ -80,11 +80,11 @@ void AncfBeam2dBody::AddForces(const double* q, const double* v, const Vec3& g_W
   const BeamSection& sec = element_.section();
   const Vec3 f_W = sec.rho * sec.A * g_W + data_.load_per_length_W;
   const Vec2 f(R_WP_.col(0).dot(f_W), R_WP_.col(1).dot(f_W));
-  const ElVec Qf = element_.DistributedLoad(f);
+  const BeamElVec Qf = element_.DistributedLoad(f);
   for (int i = 0; i < n_el_; ++i) {
-    const Eigen::Map<const ElVec> e(q + 4 * i), edot(v + 4 * i);
-    ElVec Qe = Qf;
-    ElMat K = ElMat::Zero(), C = ElMat::Zero();
+    const Eigen::Map<const BeamElVec> e(q + 4 * i), edot(v + 4 * i);
+    BeamElVec Qe = Qf;
+    BeamElMat K = BeamElMat::Zero(), C = BeamElMat::Zero();
     element_.AddInternalForces(e, edot, Qe, K, C);
     Q.segment<8>(4 * i) += Qe;
     dQdq.block<8, 8>(4 * i, 4 * i) += K;
@@ -98,6 +98,13 @@ int AncfBeam2dBody::NodeOf(const Marker& m) const {
                          std::to_string(n_el_),
                      {"", 0, "marker '" + m.name + "'"});
   return m.node;
+}
+
+bool AncfBeam2dBody::BlockPattern(std::vector<std::pair<int, int>>& entries) const {
+  for (int e = 0; e < n_el_; ++e)
+    for (int j = 0; j < 8; ++j)
+      for (int i = 0; i < 8; ++i) entries.emplace_back(4 * e + i, 4 * e + j);
+  return true;
 }
 
 void AncfBeam2dBody::EvaluateMarker(const double* q, const double* v, const Marker& m,
@@ -177,7 +184,7 @@ void AncfBeam2dBody::MarkerTwistTangent(const double* q, const double* v, const 
 double AncfBeam2dBody::KineticEnergy(const double*, const double* v) const {
   double T = 0.0;
   for (int i = 0; i < n_el_; ++i) {
-    const Eigen::Map<const ElVec> ve(v + 4 * i);
+    const Eigen::Map<const BeamElVec> ve(v + 4 * i);
     T += 0.5 * ve.dot(element_.MassMatrix() * ve);
   }
   return T;
@@ -187,23 +194,23 @@ double AncfBeam2dBody::GravityPotential(const double* q, const Vec3& g_W) const 
   const BeamSection& sec = element_.section();
   const double rhoA = sec.rho * sec.A;
   const Vec2 g(R_WP_.col(0).dot(g_W), R_WP_.col(1).dot(g_W));
-  const ElVec Qg = element_.DistributedLoad(rhoA * g);
+  const BeamElVec Qg = element_.DistributedLoad(rhoA * g);
   double V = -rhoA * data_.length * g_W.dot(data_.start_W);
-  for (int i = 0; i < n_el_; ++i) V -= Eigen::Map<const ElVec>(q + 4 * i).dot(Qg);
+  for (int i = 0; i < n_el_; ++i) V -= Eigen::Map<const BeamElVec>(q + 4 * i).dot(Qg);
   return V;
 }
 
 Vec6 AncfBeam2dBody::Momentum(const double* q, const double* v) const {
   const BeamSection& sec = element_.section();
-  const ElVec Sx = element_.DistributedLoad(sec.rho * sec.A * Vec2::UnitX());
-  const ElVec Sy = element_.DistributedLoad(sec.rho * sec.A * Vec2::UnitY());
+  const BeamElVec Sx = element_.DistributedLoad(sec.rho * sec.A * Vec2::UnitX());
+  const BeamElVec Sy = element_.DistributedLoad(sec.rho * sec.A * Vec2::UnitY());
   Vec2 p = Vec2::Zero();
   double Lz = 0.0;
   for (int i = 0; i < n_el_; ++i) {
-    const Eigen::Map<const ElVec> e(q + 4 * i), ve(v + 4 * i);
+    const Eigen::Map<const BeamElVec> e(q + 4 * i), ve(v + 4 * i);
     p += Vec2(Sx.dot(ve), Sy.dot(ve));
     // int rho A (r x rdot) ds = e^T M w, w_a = (rdot_a,y, -rdot_a,x) per 2-vector
-    ElVec w;
+    BeamElVec w;
     for (int a = 0; a < 4; ++a) w(2 * a) = ve(2 * a + 1), w(2 * a + 1) = -ve(2 * a);
     Lz += e.dot(element_.MassMatrix() * w);
   }
@@ -221,7 +228,7 @@ void AncfBeam2dBody::BodyFramePose(const double*, Vec3& p_WB, Mat3& R_WB) const 
 
 double AncfBeam2dBody::StrainEnergy(const double* q) const {
   double W = 0.0;
-  for (int i = 0; i < n_el_; ++i) W += element_.StrainEnergy(Eigen::Map<const ElVec>(q + 4 * i));
+  for (int i = 0; i < n_el_; ++i) W += element_.StrainEnergy(Eigen::Map<const BeamElVec>(q + 4 * i));
   return W;
 }
 
@@ -229,7 +236,7 @@ Vec3 AncfBeam2dBody::PositionAt(const double* q, double s) const {
   const double h = element_.length();
   const int i = std::min(n_el_ - 1, std::max(0, static_cast<int>(std::floor(s / h))));
   const double xi = std::min(1.0, std::max(0.0, (s - i * h) / h));
-  const Vec2 r = element_.Position(Eigen::Map<const ElVec>(q + 4 * i), xi);
+  const Vec2 r = element_.Position(Eigen::Map<const BeamElVec>(q + 4 * i), xi);
   return data_.start_W + R_WP_.leftCols<2>() * r;
 }
 

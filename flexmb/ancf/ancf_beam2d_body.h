@@ -56,6 +56,11 @@ class AncfBeam2dBody final : public Body {
   bool MarkerJacobianFullRank() const override { return false; }
   void AddForces(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q,
                  Eigen::Ref<MatX> dQdq, Eigen::Ref<MatX> dQdv) const override;
+  /// Element-wise coupling: the 8x8 blocks of the elements, overlapping
+  /// at the shared nodes (banded, half bandwidth 7).
+  bool BlockPattern(std::vector<std::pair<int, int>>& entries) const override;
+  /// The 4 velocities of the marker's node.
+  std::pair<int, int> MarkerColumns(const Marker& m) const override { return {4 * NodeOf(m), 4}; }
   void EvaluateMarker(const double* q, const double* v, const Marker& m,
                       MarkerState& out) const override;
   Vec6 MarkerAccelerationBias(const double* q, const double* v, const Marker& m) const override;
@@ -66,6 +71,8 @@ class AncfBeam2dBody final : public Body {
   double KineticEnergy(const double* q, const double* v) const override;
   double GravityPotential(const double* q, const Vec3& g_W) const override;
   Vec6 Momentum(const double* q, const double* v) const override;
+  /// The strain energy of the whole beam [J] (StrainEnergy).
+  double ElasticEnergy(const double* q) const override { return StrainEnergy(q); }
   /// The plane frame: origin O_W, axes R_WP.
   void BodyFramePose(const double* q, Vec3& p_WB, Mat3& R_WB) const override;
 

@@ -12,6 +12,18 @@ namespace flexmb::ancf {
 AncfStaticsResult SolveAncfStatics(const AncfBeam2dBody& body, const std::vector<int>& held,
                                    const VecX& load, const Vec3& g_W, VecX& q,
                                    const AncfStaticsSettings& settings) {
+  return SolveBodyStatics(body, body.element().length() * body.elements(), held, load, g_W, q, settings);
+}
+
+AncfStaticsResult SolveAncfStatics(const AncfCable3dBody& body, const std::vector<int>& held,
+                                   const VecX& load, const Vec3& g_W, VecX& q,
+                                   const AncfStaticsSettings& settings) {
+  return SolveBodyStatics(body, body.element().length() * body.elements(), held, load, g_W, q, settings);
+}
+
+AncfStaticsResult SolveBodyStatics(const Body& body, double L, const std::vector<int>& held,
+                                   const VecX& load, const Vec3& g_W, VecX& q,
+                                   const AncfStaticsSettings& settings) {
   const int n = body.nv();
   const ErrorContext ctx{"", 0, "body '" + body.name() + "'"};
   if (q.size() != n || load.size() != n)
@@ -25,7 +37,6 @@ AncfStaticsResult SolveAncfStatics(const AncfBeam2dBody& body, const std::vector
   for (int j = 0; j < n; ++j)
     if (!is_held[j]) free.push_back(j);
   const int nf = static_cast<int>(free.size());
-  const double L = body.element().length() * body.elements();
   const VecX v = VecX::Zero(n);
   VecX Q(n), Rf(nf), dq(nf), trial(n);
   MatX K(n, n), C(n, n), Kf(nf, nf);

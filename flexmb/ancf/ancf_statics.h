@@ -1,6 +1,6 @@
 #pragma once
 /// \file ancf_statics.h
-/// Static equilibrium of one planar ANCF beam body under large deflection:
+/// Static equilibrium of one ANCF body (planar beam or 3D cable) under large deflection:
 /// Newton's method with load stepping (and optional backtracking). Boundary conditions are held
 /// coordinates (e.g. a clamp holds x, y, x', y' of node 0; a pin x, y).
 /// The engine's SolveStatics (solver/statics.h) needs joints for supports and
@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "flexmb/ancf/ancf_beam2d_body.h"
+#include "flexmb/ancf/ancf_cable3d_body.h"
 
 namespace flexmb::ancf {
 
@@ -38,6 +39,18 @@ struct AncfStaticsResult {
 /// NumericalError if a load step does not converge or the tangent is
 /// singular (an unsupported beam).
 AncfStaticsResult SolveAncfStatics(const AncfBeam2dBody& body, const std::vector<int>& held,
+                                   const VecX& load, const Vec3& g_W, VecX& q,
+                                   const AncfStaticsSettings& settings = {});
+
+/// The same for a 3D cable body (coordinates r_k, r'_k per node, world
+/// components; a clamp holds r_0 and the direction of r'_0, a pin r_0).
+AncfStaticsResult SolveAncfStatics(const AncfCable3dBody& body, const std::vector<int>& held,
+                                   const VecX& load, const Vec3& g_W, VecX& q,
+                                   const AncfStaticsSettings& settings = {});
+
+/// The same for any body whose AddForces gives its static forces and
+/// tangent; `length` [m] scales the convergence tolerance.
+AncfStaticsResult SolveBodyStatics(const Body& body, double length, const std::vector<int>& held,
                                    const VecX& load, const Vec3& g_W, VecX& q,
                                    const AncfStaticsSettings& settings = {});
 

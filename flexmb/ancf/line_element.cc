@@ -62,6 +62,16 @@ Eigen::Matrix<double, D, D> CrossMatrix(int k) {
   return A;
 }
 
+// D x 4D shape matrix from the 4 scalar Hermite functions (or derivatives)
+template <int D>
+Eigen::Matrix<double, D, 4 * D> Expand(const double (&s)[4]) {
+  Eigen::Matrix<double, D, 4 * D> S = Eigen::Matrix<double, D, 4 * D>::Zero();
+  for (int a = 0; a < 4; ++a) {
+    for (int d = 0; d < D; ++d) S(d, a * D + d) = s[a];
+  }
+  return S;
+}
+
 }  // namespace
 
 void GaussPoints01(int n, const double*& xi, const double*& w) {
@@ -104,11 +114,7 @@ typename LineElement<D>::ShapeMat LineElement<D>::Shape(double x) const {
   const double L = length_;
   const double s[4] = {1.0 - 3.0 * x * x + 2.0 * x * x * x, L * (x - 2.0 * x * x + x * x * x),
                        3.0 * x * x - 2.0 * x * x * x, L * (x * x * x - x * x)};
-  ShapeMat S = ShapeMat::Zero();
-  for (int a = 0; a < 4; ++a) {
-    for (int d = 0; d < D; ++d) S(d, a * D + d) = s[a];
-  }
-  return S;
+  return Expand<D>(s);
 }
 
 template <int D>
@@ -116,11 +122,7 @@ typename LineElement<D>::ShapeMat LineElement<D>::ShapeSlope(double x) const {
   const double L = length_;
   const double s[4] = {(-6.0 * x + 6.0 * x * x) / L, 1.0 - 4.0 * x + 3.0 * x * x,
                        (6.0 * x - 6.0 * x * x) / L, 3.0 * x * x - 2.0 * x};
-  ShapeMat S = ShapeMat::Zero();
-  for (int a = 0; a < 4; ++a) {
-    for (int d = 0; d < D; ++d) S(d, a * D + d) = s[a];
-  }
-  return S;
+  return Expand<D>(s);
 }
 
 template <int D>
@@ -128,11 +130,7 @@ typename LineElement<D>::ShapeMat LineElement<D>::ShapeCurvature(double x) const
   const double L = length_;
   const double s[4] = {(-6.0 + 12.0 * x) / (L * L), (-4.0 + 6.0 * x) / L,
                        (6.0 - 12.0 * x) / (L * L), (6.0 * x - 2.0) / L};
-  ShapeMat S = ShapeMat::Zero();
-  for (int a = 0; a < 4; ++a) {
-    for (int d = 0; d < D; ++d) S(d, a * D + d) = s[a];
-  }
-  return S;
+  return Expand<D>(s);
 }
 
 template <int D>
@@ -184,73 +182,73 @@ void LineElement<D>::BendingTerms(const ShapeMat& Sx, const ShapeMat& Sxx, const
 }
 
 template <int D>
-double LineElement<D>::StrainEnergy(const Vec& e) const {
+template <class F>
+void LineElement<D>::ForEachAxialPoint(F&& f) const {
   const double* xi = nullptr;
   const double* w = nullptr;
-  double W = 0.0;
   for (int rule = 0; rule < 2; ++rule) {
     const int np = rule == 0 ? order_.axial : order_.axial_full_points;
     const double frac = rule == 0 ? 1.0 - axial_full_ : axial_full_;
     if (frac == 0.0) continue;
     GaussPoints01(np, xi, w);
-    for (int g = 0; g < np; ++g) {
-      const double eps = AxialStrain(e, xi[g]);
-      W += 0.5 * frac * w[g] * length_ * section_.E * section_.A * eps * eps;
-    }
+    for (int g = 0; g < np; ++g) f(xi[g], frac * w[g] * length_ * section_.E * section_.A);
   }
+}
+
+template <int D>
+template <class F>
+void LineElement<D>::ForEachBendingPoint(F&& f) const {
+  const double* xi = nullptr;
+  const double* w = nullptr;
   GaussPoints01(order_.bending, xi, w);
-  for (int g = 0; g < order_.bending; ++g) {
-    const VecK dk = Curvature(e, xi[g]) - kappa0_;
-    W += 0.5 * w[g] * length_ * section_.E * section_.I * dk.squaredNorm();
+  for (int g = 0; g < order_.bending; ++g) f(xi[g], w[g] * length_ * section_.E * section_.I);
+}
+
+template <int D>
+void LineElement<D>::AddStrainTerm(double stiffness, double strain, const Vec& d1, const Mat& d2,
+                                   const Vec& edot, Vec& Q, Mat& dQde, Mat& dQdedot) const {
+  Q.noalias() -= (stiffness * strain) * d1;
+  dQde.noalias() -= stiffness * (d1 * d1.transpose() + strain * d2);
+  const double beta = section_.damping;
+  if (beta > 0.0) {
+    const double rate = d1.dot(edot);
+    Q.noalias() -= (beta * stiffness * rate) * d1;
+    dQdedot.noalias() -= (beta * stiffness) * d1 * d1.transpose();
+    dQde.noalias() -= (beta * stiffness) * (rate * d2 + d1 * (d2 * edot).transpose());
   }
+}
+
+template <int D>
+double LineElement<D>::StrainEnergy(const Vec& e) const {
+  double W = 0.0;
+  ForEachAxialPoint([&](double xi, double EA) {
+    const double eps = AxialStrain(e, xi);
+    W += 0.5 * EA * eps * eps;
+  });
+  ForEachBendingPoint([&](double xi, double EI) {
+    W += 0.5 * EI * (Curvature(e, xi) - kappa0_).squaredNorm();
+  });
   return W;
 }
 
 template <int D>
 void LineElement<D>::AddInternalForces(const Vec& e, const Vec& edot, Vec& Q, Mat& dQde,
                                        Mat& dQdedot) const {
-  const double* xi = nullptr;
-  const double* w = nullptr;
-  const double beta = section_.damping;
   double val = 0.0;
   Vec d1;
   Mat d2;
-  for (int rule = 0; rule < 2; ++rule) {
-    const int np = rule == 0 ? order_.axial : order_.axial_full_points;
-    const double frac = rule == 0 ? 1.0 - axial_full_ : axial_full_;
-    if (frac == 0.0) continue;
-    GaussPoints01(np, xi, w);
-    for (int g = 0; g < np; ++g) {
-      const double EA = frac * w[g] * length_ * section_.E * section_.A;
-      AxialTerms(ShapeSlope(xi[g]), e, val, d1, d2);
-      Q.noalias() -= (EA * val) * d1;
-      dQde.noalias() -= EA * (d1 * d1.transpose() + val * d2);
-      if (beta > 0.0) {
-        const double rate = d1.dot(edot);
-        Q.noalias() -= (beta * EA * rate) * d1;
-        dQdedot.noalias() -= (beta * EA) * d1 * d1.transpose();
-        dQde.noalias() -= (beta * EA) * (rate * d2 + d1 * (d2 * edot).transpose());
-      }
-    }
-  }
-  GaussPoints01(order_.bending, xi, w);
-  for (int g = 0; g < order_.bending; ++g) {
-    const double EI = w[g] * length_ * section_.E * section_.I;
-    const ShapeMat Sx = ShapeSlope(xi[g]);
-    const ShapeMat Sxx = ShapeCurvature(xi[g]);
+  ForEachAxialPoint([&](double xi, double EA) {
+    AxialTerms(ShapeSlope(xi), e, val, d1, d2);
+    AddStrainTerm(EA, val, d1, d2, edot, Q, dQde, dQdedot);
+  });
+  ForEachBendingPoint([&](double xi, double EI) {
+    const ShapeMat Sx = ShapeSlope(xi);
+    const ShapeMat Sxx = ShapeCurvature(xi);
     for (int k = 0; k < kCurv; ++k) {
       BendingTerms(Sx, Sxx, e, k, val, d1, d2);
-      const double dk = val - kappa0_(k);
-      Q.noalias() -= (EI * dk) * d1;
-      dQde.noalias() -= EI * (d1 * d1.transpose() + dk * d2);
-      if (beta > 0.0) {
-        const double rate = d1.dot(edot);
-        Q.noalias() -= (beta * EI * rate) * d1;
-        dQdedot.noalias() -= (beta * EI) * d1 * d1.transpose();
-        dQde.noalias() -= (beta * EI) * (rate * d2 + d1 * (d2 * edot).transpose());
-      }
+      AddStrainTerm(EI, val - kappa0_(k), d1, d2, edot, Q, dQde, dQdedot);
     }
-  }
+  });
 }
 
 template <int D>

@@ -120,6 +120,17 @@ class LineElement {
   void AxialTerms(const ShapeMat& Sx, const Vec& e, double& eps, Vec& deps, Mat& ddeps) const;
   void BendingTerms(const ShapeMat& Sx, const ShapeMat& Sxx, const Vec& e, int k, double& kap,
                     Vec& dkap, Mat& ddkap) const;
+  // calls f(xi, EA w) at every point of the axial rules (weights include
+  // the length and the split between reduced and full integration)
+  template <class F>
+  void ForEachAxialPoint(F&& f) const;
+  // calls f(xi, EI w) at every bending quadrature point
+  template <class F>
+  void ForEachBendingPoint(F&& f) const;
+  // elastic (and damping) force of one strain component with weighted
+  // stiffness k: -k strain d1, its tangent, and the damping terms
+  void AddStrainTerm(double stiffness, double strain, const Vec& d1, const Mat& d2, const Vec& edot,
+                     Vec& Q, Mat& dQde, Mat& dQdedot) const;
 
   double length_;
   BeamSection section_;

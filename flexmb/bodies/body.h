@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "flexmb/model/marker.h"
 
@@ -60,6 +62,29 @@ class Body {
   virtual void AddForces(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q,
                          Eigen::Ref<MatX> dQdq, Eigen::Ref<MatX> dQdv) const = 0;
 
+  /// Sparsity of the body's own nv x nv blocks (mass matrix, and dQdq, dQdv
+  /// of AddForces): appends the structurally non-zero (row, column) pairs, in
+  /// the body's velocity indices, to `entries` (duplicates allowed) and
+  /// returns true. Entries outside the pattern must stay zero in all three
+  /// blocks: the assembler copies only the pattern into the sparse iteration
+  /// matrix (and zeros only the pattern before AddForces). The default
+  /// appends nothing and returns false: the blocks are dense. Called once,
+  /// when the workspace is sized.
+  virtual bool BlockPattern(std::vector<std::pair<int, int>>& entries) const {
+    (void)entries;
+    return false;
+  }
+
+  /// Velocity columns (first, count) of the body, in its own indices, that
+  /// marker m depends on: its twist Jacobian J and MarkerTwistTangent are
+  /// zero outside columns first..first+count-1, and AddMarkerWrenchTangent
+  /// adds only to the rows and columns of that range. Default: all columns
+  /// (0, nv()). Called once, when the workspace is sized.
+  virtual std::pair<int, int> MarkerColumns(const Marker& m) const {
+    (void)m;
+    return {0, nv()};
+  }
+
   /// Pose, twist and twist Jacobian of marker `m` attached to this body.
   virtual void EvaluateMarker(const double* q, const double* v, const Marker& m,
                               MarkerState& out) const = 0;
@@ -84,6 +109,9 @@ class Body {
   virtual double KineticEnergy(const double* q, const double* v) const = 0;
   /// Potential energy of gravity g_W, zero at the world origin [J].
   virtual double GravityPotential(const double* q, const Vec3& g_W) const = 0;
+  /// Elastic (strain) energy stored in the body's deformation at q [J];
+  /// 0 for bodies that cannot deform (the default).
+  virtual double ElasticEnergy(const double* /*q*/) const { return 0.0; }
   /// Linear momentum [kg m/s] and angular momentum about the world origin
   /// [kg m^2/s], both in world components.
   virtual Vec6 Momentum(const double* q, const double* v) const = 0;

@@ -65,6 +65,7 @@ FlexibleBody::FlexibleBody(std::string name, FlexibleBodyData data)
   mass_body_.setZero(6 + n_, 6 + n_);
   theta_cols_.setZero(6 + n_, 3);
   nu_.setZero(6 + n_);
+  stiffening_ = MakeGeometricStiffening(this->name(), *data_.reduced, data_.geometric_stiffening);
 }
 
 Eigen::Block<const MatX, 3, Eigen::Dynamic> FlexibleBody::Ht(int node) const {
@@ -98,6 +99,16 @@ void FlexibleBody::MarkerGeometry(const Marker& m, const double* w, Vec3& s, Vec
   theta.noalias() = Hr(m.node) * wv;
 }
 
+void FlexibleBody::MarkerBodyTwist(const double* v, const Marker& m, const Vec3& s, Vec3& v_rel,
+                                   Vec3& w_B) const {
+  const Vec3 om(v[3], v[4], v[5]);
+  const Eigen::Map<const VecX> wd(v + 6, n_);
+  v_rel = om.cross(s);
+  v_rel.noalias() += Hm_ * wd;
+  w_B = om;
+  if (m.node >= 0) w_B.noalias() += Hr(m.node) * wd;
+}
+
 void FlexibleBody::InitialCoordinates(double* q, double* v) const {
   const Quat quat(data_.R_WB);
   for (int k = 0; k < 3; ++k) q[k] = data_.p_WB(k);
@@ -121,7 +132,7 @@ void FlexibleBody::Retract(const double* q, const double* dx, double* q_out) con
 void FlexibleBody::MassMatrix(const double* q, MatX& M) const {
   const int N = 6 + n_;
   if (M.rows() != N || M.cols() != N) M.resize(N, N);
-  reduction::MassMatrix(data_.reduced->invariants, Eigen::Map<const VecX>(q + 7, n_), M);
+  inertia_.MassMatrix(q + 7, M);
   // M_W = T^T M_B T with nu_B = T nu_W, T = diag(R^T, I, I)
   const Mat3 R = QuatOf(q).toRotationMatrix();
   mass_rows_.noalias() = R * M.topRows<3>();
@@ -169,6 +180,7 @@ void FlexibleBody::AddForces(const double* q, const double* v, const Vec3& g_W, 
   dQdq.block(0, 6, 3, n).noalias() += R * Fw.topRows<3>();
   dQdq.block(3, 6, N - 3, n) += Fw.bottomRows(N - 3);
   dQdq.bottomRightCorner(n, n) -= K;
+  if (stiffening_) stiffening_->Add(om, q + 7, Q.tail(n), dQdv.block(6, 3, n, 3), dQdq.bottomRightCorner(n, n));
 }
 
 void FlexibleBody::EvaluateMarker(const double* q, const double* v, const Marker& m,
@@ -177,12 +189,8 @@ void FlexibleBody::EvaluateMarker(const double* q, const double* v, const Marker
   Vec3 s, theta;
   MarkerGeometry(m, q + 7, s, theta);
   const Mat3 R = QuatOf(q).toRotationMatrix();
-  const Vec3 om(v[3], v[4], v[5]);
-  const Eigen::Map<const VecX> wd(v + 6, n);
-  Vec3 ws = om.cross(s);
-  ws.noalias() += Hm_ * wd;
-  Vec3 wn = om;
-  if (m.node >= 0) wn.noalias() += Hr(m.node) * wd;
+  Vec3 ws, wn;
+  MarkerBodyTwist(v, m, s, ws, wn);
   out.p_WM = Vec3(q[0], q[1], q[2]) + R * s;
   out.R_WM = R * ExpSO3(theta) * m.R_BM;
   out.v_WM = Vec3(v[0], v[1], v[2]) + R * ws;
@@ -239,11 +247,8 @@ void FlexibleBody::MarkerTwistTangent(const double* q, const double* v, const Ma
   MarkerGeometry(m, q + 7, s, theta);
   const Mat3 R = QuatOf(q).toRotationMatrix();
   const Vec3 om(v[3], v[4], v[5]);
-  const Eigen::Map<const VecX> wd(v + 6, n);
-  Vec3 y = om.cross(s);
-  y.noalias() += Hm_ * wd;
-  Vec3 wn = om;
-  if (m.node >= 0) wn.noalias() += Hr(m.node) * wd;
+  Vec3 y, wn;
+  MarkerBodyTwist(v, m, s, y, wn);
   out.setZero();
   out.block<3, 3>(0, 3) = -R * Skew(y);
   out.block<3, 3>(3, 3) = -R * Skew(wn);
@@ -288,11 +293,31 @@ double FlexibleBody::StrainEnergy(const double* q) const {
   return 0.5 * w.dot(data_.reduced->stiffness * w);
 }
 
-Vec3 FlexibleBody::NodeDisplacement(const double* q, int node) const {
+void FlexibleBody::CheckNode(int node) const {
   if (node < 0 || node >= static_cast<int>(data_.reduced->mesh.nodes.size()))
     throw InputError("node index " + std::to_string(node) + " out of range",
                      {"", 0, "flexible body '" + name() + "'"});
+}
+
+Vec3 FlexibleBody::NodeDisplacement(const double* q, int node) const {
+  CheckNode(node);
   return Ht(node) * Eigen::Map<const VecX>(q + 7, n_);
+}
+
+Vec3 FlexibleBody::NodePosition(const double* q, int node) const {
+  CheckNode(node);
+  Vec3 u = data_.reduced->mesh.nodes[node].x;
+  u.noalias() += Ht(node) * Eigen::Map<const VecX>(q + 7, n_);
+  return Vec3(q[0], q[1], q[2]) + QuatOf(q).toRotationMatrix() * u;
+}
+
+Vec3 FlexibleBody::NodeVelocity(const double* q, const double* v, int node) const {
+  CheckNode(node);
+  Vec3 u = data_.reduced->mesh.nodes[node].x;
+  u.noalias() += Ht(node) * Eigen::Map<const VecX>(q + 7, n_);
+  Vec3 ud = Vec3(v[3], v[4], v[5]).cross(u);
+  ud.noalias() += Ht(node) * Eigen::Map<const VecX>(v + 6, n_);
+  return Vec3(v[0], v[1], v[2]) + QuatOf(q).toRotationMatrix() * ud;
 }
 
 }  // namespace flexmb

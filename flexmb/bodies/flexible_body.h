@@ -27,12 +27,15 @@
 ///
 /// Forces: inertial and gravity forces from the inertia invariants
 /// (flexible_inertia.h), elastic -K w and damping -D wd with the reduced
-/// stiffness and damping of the body (or a damping override).
+/// stiffness and damping of the body (or a damping override), and, if the
+/// body file has it and FlexibleBodyData::geometric_stiffening allows, the
+/// centrifugal geometric stiffening -G(om) w (geometric_stiffening.h).
 
 #include <memory>
 
 #include "flexmb/bodies/body.h"
 #include "flexmb/bodies/flexible_inertia.h"
+#include "flexmb/bodies/geometric_stiffening.h"
 #include "flexmb/reduction/reduced_body.h"
 
 namespace flexmb {
@@ -48,6 +51,9 @@ struct FlexibleBodyData {
   VecX wd0;                      ///< initial modal velocities (empty = zero)
   /// Damping override, n x n (empty = the reduced body's damping).
   MatX damping;
+  /// Geometric stiffening from the body file's centrifugal geometric
+  /// stiffness (bodies/geometric_stiffening.h): by default used if present.
+  GeometricStiffening geometric_stiffening = GeometricStiffening::kAuto;
 };
 
 /// Floating-frame flexible body; see the file comment.
@@ -77,6 +83,8 @@ class FlexibleBody final : public Body {
   /// -g . (m r + R (S0 + M_vw w)), S0 the first moment about the frame origin [J].
   double GravityPotential(const double* q, const Vec3& g_W) const override;
   Vec6 Momentum(const double* q, const double* v) const override;
+  /// The strain energy 1/2 w^T K w [J] (StrainEnergy).
+  double ElasticEnergy(const double* q) const override { return StrainEnergy(q); }
   void BodyFramePose(const double* q, Vec3& p_WB, Mat3& R_WB) const override;
 
   /// Elastic strain energy 1/2 w^T K w [J].
@@ -84,6 +92,11 @@ class FlexibleBody final : public Body {
   /// Elastic displacement of node `node` (index) relative to the floating
   /// frame, H_k^t w, body axes [m].
   Vec3 NodeDisplacement(const double* q, int node) const;
+  /// World position of node `node` (index), r + R (rho_k + H_k^t w) [m].
+  Vec3 NodePosition(const double* q, int node) const;
+  /// World velocity of node `node` (index), v_W + R (om x u_k + H_k^t wd)
+  /// with u_k = rho_k + H_k^t w [m/s].
+  Vec3 NodeVelocity(const double* q, const double* v, int node) const;
   /// Number of modal coordinates.
   int modes() const { return n_; }
   /// The reduced body.
@@ -92,10 +105,18 @@ class FlexibleBody final : public Body {
   bool IsInterfaceNode(int node) const;
   /// Reduced damping matrix in use (n x n).
   const MatX& damping() const { return damping_; }
+  /// True if the body adds the geometric stiffening force.
+  bool HasGeometricStiffening() const { return stiffening_ != nullptr; }
 
  private:
   // H^t (3 x n), H^r (3 x n) of the marker's node and its offset point
   void MarkerGeometry(const Marker& m, const double* w, Vec3& s, Vec3& theta) const;
+  // body-axes twist of the marker at point s (after MarkerGeometry, which
+  // sets Hm_): v_rel = om x s + Hm wd (velocity relative to the frame
+  // origin's), w_B = om + H^r wd
+  void MarkerBodyTwist(const double* v, const Marker& m, const Vec3& s, Vec3& v_rel, Vec3& w_B) const;
+  // throws InputError naming the body if `node` is not a node index
+  void CheckNode(int node) const;
   Eigen::Block<const MatX, 3, Eigen::Dynamic> Ht(int node) const;
   Eigen::Block<const MatX, 3, Eigen::Dynamic> Hr(int node) const;
 
@@ -110,6 +131,7 @@ class FlexibleBody final : public Body {
   mutable MatX mass_body_;            // scratch: nv x nv
   mutable FlexibleInertia::MatN3 theta_cols_;  // scratch: nv x 3
   mutable VecX nu_;                   // scratch: nv
+  std::unique_ptr<GeometricStiffeningForce> stiffening_;  // null: no geometric stiffening
 };
 
 }  // namespace flexmb

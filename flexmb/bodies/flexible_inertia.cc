@@ -19,6 +19,38 @@ FlexibleInertia::FlexibleInertia(const reduction::InertiaInvariants& inv) : inv_
   T_.setZero(3, n_);
   Y_.setZero(n_, n_);
   Wq_.setZero(n_, n_);
+  G_.setZero(9 * n_, n_);
+  for (int k = 0; k < n_; ++k) {
+    for (int j = 0; j < n_; ++j) {
+      const Mat3 P = inv_.moo2[static_cast<size_t>(k) * n_ + j] + inv_.moo2[static_cast<size_t>(j) * n_ + k];
+      G_.block<9, 1>(9 * k, j) = Eigen::Map<const Eigen::Matrix<double, 9, 1>>(P.data());
+    }
+  }
+  GW_.setZero(9 * n_, 2);
+}
+
+void FlexibleInertia::MassMatrix(const double* w, Eigen::Ref<Eigen::MatrixXd> out) const {
+  const int n = n_;
+  const Eigen::Map<const Eigen::VectorXd> wv(w, n);
+  // sum_ij w_i w_j moo2[i n + j] = 1/2 sum_k w_k sum_j w_j (G_ block k, j)
+  GW_.col(0).noalias() = G_ * wv;
+  Mat3 mvo = inv_.mvo0, moo = inv_.moo0;
+  for (int k = 0; k < n; ++k) {
+    mvo += w[k] * inv_.mvo1[k];
+    moo += w[k] * (inv_.moo1[k] + 0.5 * Eigen::Map<const Mat3>(GW_.col(0).data() + 9 * k));
+  }
+  out.block<3, 3>(0, 0) = inv_.mvv;
+  out.block<3, 3>(0, 3) = mvo;
+  out.block<3, 3>(3, 0) = mvo.transpose();
+  out.block<3, 3>(3, 3) = 0.5 * (moo + moo.transpose());
+  if (n == 0) return;
+  out.block(0, 6, 3, n) = inv_.mvw;
+  auto ow = out.block(3, 6, 3, n);
+  ow = inv_.mow0;
+  for (int k = 0; k < n; ++k) ow += w[k] * inv_.mow1[k];
+  out.block(6, 0, n, 3) = inv_.mvw.transpose();
+  out.block(6, 3, n, 3) = ow.transpose();
+  out.block(6, 6, n, n) = inv_.mww;
 }
 
 void FlexibleInertia::Evaluate(const Vec3& vb, const Vec3& om, const double* w, const double* wd,
@@ -37,20 +69,26 @@ void FlexibleInertia::Evaluate(const Vec3& vb, const Vec3& om, const double* w, 
     C_.noalias() += w[i] * inv_.mow1[i];
     Cdot_.noalias() += wd[i] * inv_.mow1[i];
   }
-  T_.setZero();
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) {
-      const Mat3& P = inv_.moo2[static_cast<size_t>(i) * n + j];
-      J += (w[i] * w[j]) * P;
-      Jk_[i] += w[j] * P;
-      Jk_[j] += w[i] * P;
-      if (tangents) {
-        const Vec3 Po = P * om;
-        T_.col(j) += wd[i] * Po;
-        T_.col(i) += wd[j] * Po;
-        Wq_(i, j) = om.dot(Po);
-      }
-    }
+  // moo2 sums through G_: Jk = dJ/dw_k = moo1[k] + sum_j w_j (P_kj + P_jk),
+  // J += 1/2 sum_k w_k (Jk - moo1[k]); with tangents T(:, k) = sum_i wd_i
+  // (P_ik + P_ki) om and Wq(k, j) = om^T P_kj om = 1/2 om^T (G_ block k, j) om
+  // one pass over G_ (column j: the n blocks k, j, kept in cache for the
+  // three uses) instead of one per product
+  const Mat3 oo = 0.5 * om * om.transpose();
+  const Eigen::Map<const Eigen::Matrix<double, 1, 9>> o9(oo.data());
+  GW_.setZero();
+  for (int j = 0; j < n; ++j) {
+    const auto g = G_.col(j);
+    GW_.col(0).noalias() += w[j] * g;
+    if (!tangents) continue;
+    GW_.col(1).noalias() += wd[j] * g;
+    Wq_.col(j).transpose().noalias() = o9 * Eigen::Map<const Eigen::Matrix<double, 9, Eigen::Dynamic>>(g.data(), 9, n);
+  }
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Map<const Mat3> Gw(GW_.col(0).data() + 9 * k);
+    Jk_[k] += Gw;
+    J += (0.5 * w[k]) * Gw;
+    if (tangents) T_.col(k) = Eigen::Map<const Mat3>(GW_.col(1).data() + 9 * k) * om;
   }
   Mat3 Jdot = Mat3::Zero();
   for (int i = 0; i < n; ++i) Jdot += wd[i] * Jk_[i];

@@ -4,7 +4,9 @@
 /// inertia invariants (THEORY sections 4 and 5), in body components, with
 /// their analytic partial derivatives. Cost O(n^2) in the number of modes n,
 /// independent of the FE mesh; no allocation per call (scratch is sized at
-/// construction).
+/// construction). Keeps a stacked copy of the second-order invariants moo2
+/// (9 n^2 doubles, 1.8 MB at n = 160) so that each evaluation reads them in
+/// one pass.
 ///
 /// Variables: vb = R^T v_W (velocity of the frame origin, body components),
 /// om (angular velocity, body components), wd (modal velocities), w (modal
@@ -43,6 +45,11 @@ class FlexibleInertia {
   void Evaluate(const Vec3& vb, const Vec3& om, const double* w, const double* wd, const Vec3& gb,
                 bool tangents) const;
 
+  /// Mass matrix M(w) (6 + n square, body components, velocity blocks
+  /// (vb, om, wd)) into `out`, equal to reduction::MassMatrix to round-off
+  /// but from the stacked symmetric moo2 (one matrix-vector product).
+  void MassMatrix(const double* w, Eigen::Ref<Eigen::MatrixXd> out) const;
+
   /// Results of the last Evaluate call.
   const Eigen::VectorXd& F() const { return F_; }   ///< (6 + n) force
   const MatN3& dF_dvb() const { return Fvb_; }      ///< (6 + n) x 3
@@ -60,6 +67,10 @@ class FlexibleInertia {
  private:
   const reduction::InertiaInvariants& inv_;
   int n_;
+  // G_(9 k + r, j) = (moo2[k n + j] + moo2[j n + k]) entry r (column-major
+  // 3 x 3): every sum over moo2 becomes one matrix product, O(9 n^2)
+  Eigen::MatrixXd G_;
+  mutable Eigen::MatrixXd GW_;          // G_ w, G_ wd
   // scratch, sized at construction
   mutable Eigen::VectorXd F_;
   mutable MatN3 Fvb_, Fom_, Fgb_;

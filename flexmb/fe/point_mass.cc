@@ -5,16 +5,11 @@
 #include <string>
 
 #include "flexmb/common/error.h"
+#include "flexmb/math/rotation.h"
 
 namespace flexmb::fe {
 
 namespace {
-
-Mat3 Skew(const Vec3& v) {
-  Mat3 s;
-  s << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
-  return s;
-}
 
 [[noreturn]] void Fail(const PointMass& pm, const std::string& message) {
   throw InputError(message, {pm.origin.file, pm.origin.line, "point mass " + std::to_string(pm.id)});

@@ -1,7 +1,8 @@
 #pragma once
 /// \file ancf_body_parser.h
 /// Model-file entries for ANCF bodies (reference: docs/model-file.md,
-/// "ANCF beams"): a body with `type: ancf_beam`.
+/// "ANCF beams"): a body with `type: ancf_beam` (planar beam) or
+/// `type: ancf_cable` (3D cable).
 
 #include <yaml-cpp/yaml.h>
 

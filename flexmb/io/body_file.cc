@@ -117,6 +117,15 @@ void CheckBody(const ReducedBody& b, const std::string& path) {
   for (const fe::Element& e : b.mesh.elements) {
     if (!HasBodyFileTypeCode(e.type)) fail("element " + std::to_string(e.id), "has an unknown element type");
   }
+  if (!b.geometric_stiffness.empty() && b.geometric_stiffness.size() != 6) {
+    fail("geometric_stiffness", "has " + std::to_string(b.geometric_stiffness.size()) +
+                                    " load cases, expected 6 (centrifugal) or none");
+  }
+  for (size_t c = 0; c < b.geometric_stiffness.size(); ++c) {
+    const std::string field = "geometric_stiffness[" + std::to_string(c) + "]";
+    shape(field, b.geometric_stiffness[c], n, n);
+    finite_m(field, b.geometric_stiffness[c]);
+  }
 }
 
 // a non-negative count attribute of /counts
@@ -189,6 +198,18 @@ void WriteContents(hdf5::Writer& w, const ReducedBody& body) {
     w.Doubles("/invariants/mow1", {hn, 3, hn}, mow1.data());
   }
   w.Matrix("/invariants/mww", v.mww);
+
+  if (!body.geometric_stiffness.empty()) {
+    // optional (older files have none): six n x n centrifugal cases
+    std::vector<double> kg;
+    kg.reserve(6 * static_cast<size_t>(n) * n);
+    for (const MatX& m : body.geometric_stiffness) {
+      const RowMat rm = m;
+      kg.insert(kg.end(), rm.data(), rm.data() + rm.size());
+    }
+    w.Group("/geometric_stiffness");
+    w.Doubles("/geometric_stiffness/centrifugal", {6, hn, hn}, kg.data());
+  }
 
   w.Group("/stress");
   for (const auto& [group, t] : StressTables(body.stress)) {
@@ -294,6 +315,14 @@ ReducedBody ReadBody(const std::string& path) {
     }
   }
   v.mww = r.Matrix("/invariants/mww", n, n);
+  if (r.Exists("/geometric_stiffness/centrifugal")) {
+    const std::vector<double> kg = r.Doubles("/geometric_stiffness/centrifugal", {6, hn, hn});
+    body.geometric_stiffness.resize(6);
+    for (int c = 0; c < 6; ++c) {
+      body.geometric_stiffness[c] =
+          Eigen::Map<const RowMat>(kg.data() + static_cast<size_t>(n) * n * c, n, n);
+    }
+  }
 
   const std::pair<std::string, StressTable*> tables[] = {
       {"/stress/shell", &body.stress.shell},

@@ -1,8 +1,9 @@
 // Reads a model-file body of type flexible (docs/model-file.md, "Flexible
 // bodies"): name, type, file, position, orientation, velocity,
 // angular_velocity, modal_coordinates, modal_velocities, damping
-// {rayleigh: [alpha, beta]} | {ratios: [..]}, markers [{name, node,
-// position, orientation}].
+// {rayleigh: [alpha, beta]} | {ratios: [..]}, geometric_stiffening
+// (true | false; default: used if the body file has it), markers [{name,
+// node, position, orientation}].
 #include "flexmb/io/flexible_body_parser.h"
 
 #include <cmath>
@@ -66,7 +67,7 @@ bool IsFlexibleBodyType(const std::string& type) { return type == "flexible"; }
 
 void ParseFlexibleBody(const YAML::Node& node, ParseContext& ctx, std::map<std::string, int>& lines) {
   ctx.CheckKeys(node, {"name", "type", "file", "position", "orientation", "velocity", "angular_velocity",
-                       "modal_coordinates", "modal_velocities", "damping", "markers"});
+                       "modal_coordinates", "modal_velocities", "damping", "geometric_stiffening", "markers"});
   const std::string name = ctx.String(node, "name");
   if (name.empty()) ctx.Fail(node["name"], "a body name must not be empty");
   if (name.find('.') != std::string::npos || name == "ground")
@@ -94,6 +95,13 @@ void ParseFlexibleBody(const YAML::Node& node, ParseContext& ctx, std::map<std::
   d.w0 = NumberList(node, "modal_coordinates", n, ctx);
   d.wd0 = NumberList(node, "modal_velocities", n, ctx);
   if (node["damping"]) d.damping = ParseDamping(node["damping"], *reduced, ctx);
+  if (node["geometric_stiffening"]) {
+    const bool on = ctx.Bool(node, "geometric_stiffening", false);
+    if (on && reduced->geometric_stiffness.empty())
+      ctx.Fail(node["geometric_stiffening"], "body file " + Quote(path.string()) +
+                                                 " has no geometric stiffness: reduce it with --geometric-stiffening");
+    d.geometric_stiffening = on ? GeometricStiffening::kOn : GeometricStiffening::kOff;
+  }
   d.reduced = reduced;
 
   auto body = ctx.Guard(node, [&] { return std::make_unique<FlexibleBody>(name, d); });
@@ -101,34 +109,21 @@ void ParseFlexibleBody(const YAML::Node& node, ParseContext& ctx, std::map<std::
   const int b = ctx.Guard(node["name"], [&] { return ctx.model().AddBody(std::move(body)); });
   lines[entity] = ParseContext::Line(node);
 
-  const YAML::Node list = node["markers"];
-  if (!list) return;
-  if (!list.IsSequence()) ctx.Fail(list, "expected 'markers' as a list of entries ('- ...')");
-  for (const YAML::Node& m : list) {
-    ctx.SetEntity(entity);
-    ctx.CheckKeys(m, {"name", "node", "position", "orientation"});
-    const std::string mname = ctx.String(m, "name");
-    if (mname.empty() || mname.find('.') != std::string::npos)
-      ctx.Fail(m["name"], "invalid marker name " + Quote(mname));
-    const std::string mentity = "marker '" + name + "." + mname + "'";
-    ctx.SetEntity(mentity);
-    int k = -1;
-    if (m["node"]) {
-      const int id = ctx.Integer(m, "node", -1);
-      k = reduced->mesh.NodeIndex(id);
-      if (k < 0)
-        ctx.Fail(m["node"], "node " + std::to_string(id) + " does not exist in body file " +
-                                Quote(path.string()) + " of body " + Quote(name));
-      if (!flex->IsInterfaceNode(k))
-        LogWarning(ctx.file() + ":" + std::to_string(ParseContext::Line(m["node"])) + ": " + mentity +
-                   ": node " + std::to_string(id) + " is not an interface node of the reduction; its motion "
-                   "is only as exact as the kept modes make it");
-    }
-    const Vec3 p = ctx.Vector3(m, "position", Vec3::Zero());
-    const Mat3 R = ctx.Orientation(m, "orientation");
-    ctx.Guard(m, [&] { return ctx.model().AddMarker(b, mname, p, R, k); });
-    lines[mentity] = ParseContext::Line(m);
-  }
+  // a marker on a node of the body file (by its id), or on the floating frame
+  auto node_of = [&](const YAML::Node& m) {
+    if (!m["node"]) return -1;
+    const int id = ctx.Integer(m, "node", -1);
+    const int k = reduced->mesh.NodeIndex(id);
+    if (k < 0)
+      ctx.Fail(m["node"], "node " + std::to_string(id) + " does not exist in body file " +
+                              Quote(path.string()) + " of body " + Quote(name));
+    if (!flex->IsInterfaceNode(k))
+      LogWarning(ctx.file() + ":" + std::to_string(ParseContext::Line(m["node"])) + ": " + ctx.entity() +
+                 ": node " + std::to_string(id) + " is not an interface node of the reduction; its motion "
+                 "is only as exact as the kept modes make it");
+    return k;
+  };
+  ctx.ParseMarkerList(node, b, {"name", "node", "position", "orientation"}, node_of, lines);
 }
 
 }  // namespace flexmb

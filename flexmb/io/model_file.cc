@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -65,22 +66,7 @@ Vec3 InitialMarkerPosition(const Model& model, int marker) {
 }
 
 void ParseMarkers(const YAML::Node& node, int body, ParseContext& ctx, Lines& lines) {
-  const YAML::Node list = List(node, "markers", ctx);
-  if (!list) return;
-  const std::string owner = ctx.entity();
-  const std::string& body_name = ctx.model().bodies[body]->name();
-  for (const YAML::Node& m : list) {
-    ctx.SetEntity(owner);
-    ctx.CheckKeys(m, {"name", "position", "orientation"});
-    const std::string name = Name(m, "marker", ctx);
-    const std::string entity = "marker '" + body_name + "." + name + "'";
-    ctx.SetEntity(entity);
-    const Vec3 p = ctx.Vector3(m, "position", Vec3::Zero());
-    const Mat3 R = ctx.Orientation(m, "orientation");
-    ctx.Guard(m, [&] { return ctx.model().AddMarker(body, name, p, R); });
-    lines[entity] = ParseContext::Line(m);
-  }
-  ctx.SetEntity(owner);
+  ctx.ParseMarkerList(node, body, {"name", "position", "orientation"}, nullptr, lines);
 }
 
 void ParseShape(const YAML::Node& s, Shape& shape, const ParseContext& ctx) {
@@ -152,7 +138,7 @@ void ParseBody(const YAML::Node& node, int k, ParseContext& ctx, Lines& lines) {
   ctx.SetEntity(entity);
   const std::string type = ctx.String(node, "type", "rigid");
   if (type != "rigid")
-    ctx.Fail(node["type"], "body type " + Quote(type) + " is not supported yet (supported: rigid, flexible, ancf_beam)");
+    ctx.Fail(node["type"], "body type " + Quote(type) + " is not supported yet (supported: rigid, flexible, ancf_beam, ancf_cable)");
 
   RigidBodyData d;
   d.mass = ctx.Positive(node, "mass");
@@ -339,7 +325,7 @@ void ParseSolver(const YAML::Node& node, ParseContext& ctx) {
 
 void ParseOutput(const YAML::Node& node, ParseContext& ctx) {
   ctx.SetEntity("output");
-  ctx.CheckKeys(node, {"interval", "animation", "animation_interval"});
+  ctx.CheckKeys(node, {"interval", "animation", "animation_interval", "deformation_scale"});
   OutputSettings& o = ctx.model().output;
   o.interval = ctx.Double(node, "interval", o.interval);
   if (o.interval < 0.0) ctx.Fail(node["interval"], "'interval' must not be negative (0 = every step)");
@@ -347,6 +333,9 @@ void ParseOutput(const YAML::Node& node, ParseContext& ctx) {
   o.animation_interval = ctx.Double(node, "animation_interval", o.animation_interval);
   if (!(o.animation_interval > 0.0))
     ctx.Fail(node["animation_interval"], "'animation_interval' must be positive");
+  o.deformation_scale = ctx.Double(node, "deformation_scale", o.deformation_scale);
+  if (!(o.deformation_scale >= 0.0) || !std::isfinite(o.deformation_scale))
+    ctx.Fail(node["deformation_scale"], "'deformation_scale' must be a finite number >= 0");
 }
 
 void BuildModel(const YAML::Node& root, ParseContext& ctx) {

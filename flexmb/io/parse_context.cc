@@ -308,4 +308,32 @@ int ParseContext::Body(const YAML::Node& node, const char* key) const {
   return b;
 }
 
+void ParseContext::ParseMarkerList(const YAML::Node& node, int body,
+                                   std::initializer_list<const char*> allowed,
+                                   const std::function<int(const YAML::Node&)>& node_of,
+                                   std::map<std::string, int>& lines) {
+  const YAML::Node list = Child(*this, node, "markers");
+  if (!list) return;
+  if (!list.IsSequence()) Fail(list, "expected 'markers' as a list of entries ('- ...')");
+  const std::string owner = entity_;
+  const std::string body_name = model_.bodies[body]->name();
+  for (const YAML::Node& m : list) {
+    entity_ = owner;
+    CheckKeys(m, allowed);
+    const std::string name = String(m, "name");
+    if (name.empty()) Fail(m["name"], "a marker name must not be empty");
+    if (name.find('.') != std::string::npos)
+      Fail(m["name"], "a marker name must not contain '.' (it separates body and marker in "
+                      "'body.marker'), got '" + name + "'");
+    const std::string entity = "marker '" + body_name + "." + name + "'";
+    entity_ = entity;
+    const int k = node_of ? node_of(m) : -1;
+    const Vec3 p = Vector3(m, "position", Vec3::Zero());
+    const Mat3 R = Orientation(m, "orientation");
+    Guard(m, [&] { return model_.AddMarker(body, name, p, R, k); });
+    lines[entity] = Line(m);
+  }
+  entity_ = owner;
+}
+
 }  // namespace flexmb

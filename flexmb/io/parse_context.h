@@ -5,7 +5,9 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <functional>
 #include <initializer_list>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -88,6 +90,19 @@ class ParseContext {
   int Joint(const YAML::Node& node, const char* key) const;
   /// Index of the body named at node[key].
   int Body(const YAML::Node& node, const char* key) const;
+
+  /// Reads the list node["markers"] (absent: nothing) of body `body` (model
+  /// index) and adds its markers to the model. Each entry may have the keys
+  /// `allowed` (which include name, position, orientation); its name must be
+  /// non-empty without '.'; `position` [m] and `orientation` default to zero
+  /// and identity. While an entry is read the entity is "marker
+  /// 'body.name'"; `node_of(entry)` (if given) returns the node index of a
+  /// node-based body (it may Fail), otherwise the marker has node -1. Records
+  /// each marker's line in `lines` ("marker 'b.m'" -> line) and restores the
+  /// entity afterwards.
+  void ParseMarkerList(const YAML::Node& node, int body, std::initializer_list<const char*> allowed,
+                       const std::function<int(const YAML::Node&)>& node_of,
+                       std::map<std::string, int>& lines);
 
  private:
   std::string file_;

@@ -115,6 +115,7 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
   ro.normal_modes = opt.modes >= 0 ? opt.modes : 10;
   ro.cutoff_hz = opt.cutoff_hz;
   ro.keep = opt.keep;
+  ro.geometric_stiffening = opt.geometric_stiffening;
   if (!opt.rayleigh.empty()) {
     const std::vector<double> ab = NumberList(opt.rayleigh, "--rayleigh");
     if (ab.size() != 2 || ab[0] < 0.0 || ab[1] < 0.0) {
@@ -238,6 +239,7 @@ int BodyInfo(const BodyInfoOptions& opt, std::ostream& out) {
         << ", \"locations\": " << t.locations.size() << ", \"components\": " << t.components.size() << "}";
     }
     s << "},\n";
+    s << "  \"geometric_stiffening\": " << (body.geometric_stiffness.empty() ? "false" : "true") << ",\n";
     s << "  \"provenance\": {";
     std::set<std::string> seen;
     bool first = true;
@@ -274,6 +276,10 @@ int BodyInfo(const BodyInfoOptions& opt, std::ostream& out) {
       any = true;
     }
     s << (any ? "\n" : " none\n");
+    s << "geometric stiffness: "
+      << (body.geometric_stiffness.empty() ? "none"
+                                           : "centrifugal, 6 load cases (wx*wx, wy*wy, wz*wz, wx*wy, wy*wz, wz*wx)")
+      << "\n";
     s << "provenance:\n";
     for (const auto& [key, value] : body.provenance) s << "  " << key << ": " << value << "\n";
   }

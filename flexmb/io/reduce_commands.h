@@ -36,6 +36,9 @@ struct ReduceOptions {
   /// set it was written with). Then `interface`, `modes`, `cutoff_hz` and
   /// `fix` must not be given. Empty: compute the basis.
   std::string modes_file;
+  /// Also compute the centrifugal geometric stiffness (beam models only;
+  /// reduction/geometric_stiffness.h).
+  bool geometric_stiffening = false;
   std::string output;      ///< body file to write (.h5), required
   bool json = false;       ///< one JSON object instead of text
 };

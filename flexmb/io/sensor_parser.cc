@@ -10,6 +10,10 @@
 //   system_energy:       (no further keys)
 //   modal_coordinates:   body (flexible)
 //   node_displacement:   body (flexible), node (FE node id)
+//   node_position:       body (flexible), node (FE node id)
+//   node_velocity:       body (flexible), node (FE node id)
+//   element_stress:      body (flexible), element (FE element id)
+//   node_stress:         body (flexible), node (FE node id)
 //   strain_energy:       body (flexible)
 
 #include "flexmb/common/error.h"
@@ -50,6 +54,26 @@ const FlexibleBody& FlexibleAt(const YAML::Node& node, int body, ParseContext& c
   const auto* f = dynamic_cast<const FlexibleBody*>(ctx.model().bodies[body].get());
   if (!f) ctx.Fail(node["body"], "body '" + ctx.model().bodies[body]->name() + "' is not a flexible body");
   return *f;
+}
+
+// the node index of the FE node id at node["node"], or an error naming it
+int NodeAt(const YAML::Node& node, const FlexibleBody& f, ParseContext& ctx) {
+  if (!node["node"]) ctx.Fail(node, "missing key 'node' (FE node id)");
+  const int id = ctx.Integer(node, "node", -1);
+  const int k = f.reduced().mesh.NodeIndex(id);
+  if (k < 0) ctx.Fail(node["node"], "node " + std::to_string(id) + " does not exist in body '" + f.name() + "'");
+  return k;
+}
+
+// the element index of the FE element id at node["element"], or an error
+int ElementAt(const YAML::Node& node, const FlexibleBody& f, ParseContext& ctx) {
+  if (!node["element"]) ctx.Fail(node, "missing key 'element' (FE element id)");
+  const int id = ctx.Integer(node, "element", -1);
+  const auto& elements = f.reduced().mesh.elements;
+  for (size_t k = 0; k < elements.size(); ++k) {
+    if (elements[k].id == id) return static_cast<int>(k);
+  }
+  ctx.Fail(node["element"], "element " + std::to_string(id) + " does not exist in body '" + f.name() + "'");
 }
 
 }  // namespace
@@ -107,12 +131,38 @@ void ParseSensor(const YAML::Node& node, ParseContext& ctx) {
   } else if (type == "node_displacement") {
     ctx.CheckKeys(node, {"name", "type", "body", "node"});
     const int b = ctx.Body(node, "body");
+    sensor = std::make_unique<NodeDisplacementSensor>(name, b, NodeAt(node, FlexibleAt(node, b, ctx), ctx));
+  } else if (type == "node_position" || type == "node_velocity") {
+    ctx.CheckKeys(node, {"name", "type", "body", "node"});
+    const int b = ctx.Body(node, "body");
+    const int k = NodeAt(node, FlexibleAt(node, b, ctx), ctx);
+    if (type == "node_position") {
+      sensor = std::make_unique<NodePositionSensor>(name, b, k);
+    } else {
+      sensor = std::make_unique<NodeVelocitySensor>(name, b, k);
+    }
+  } else if (type == "element_stress") {
+    ctx.CheckKeys(node, {"name", "type", "body", "element"});
+    const int b = ctx.Body(node, "body");
     const FlexibleBody& f = FlexibleAt(node, b, ctx);
-    if (!node["node"]) ctx.Fail(node, "missing key 'node' (FE node id)");
-    const int id = ctx.Integer(node, "node", -1);
-    const int k = f.reduced().mesh.NodeIndex(id);
-    if (k < 0) ctx.Fail(node["node"], "node " + std::to_string(id) + " does not exist in body '" + f.name() + "'");
-    sensor = std::make_unique<NodeDisplacementSensor>(name, b, k);
+    const int e = ElementAt(node, f, ctx);
+    try {
+      sensor = std::make_unique<ElementStressSensor>(name, b, f, e);
+    } catch (const InputError&) {
+      ctx.Fail(node["element"], "element " + ctx.String(node, "element") + " of body '" + f.name() +
+                                    "' has no stress modes in its body file");
+    }
+  } else if (type == "node_stress") {
+    ctx.CheckKeys(node, {"name", "type", "body", "node"});
+    const int b = ctx.Body(node, "body");
+    const FlexibleBody& f = FlexibleAt(node, b, ctx);
+    const int k = NodeAt(node, f, ctx);
+    try {
+      sensor = std::make_unique<NodeStressSensor>(name, b, f, k);
+    } catch (const InputError&) {
+      ctx.Fail(node["node"], "node " + ctx.String(node, "node") + " of body '" + f.name() +
+                                 "' has no shell or solid element with stress modes");
+    }
   } else if (type == "strain_energy") {
     ctx.CheckKeys(node, {"name", "type", "body"});
     const int b = ctx.Body(node, "body");
@@ -126,7 +176,8 @@ void ParseSensor(const YAML::Node& node, ParseContext& ctx) {
              "unknown sensor type '" + type +
                  "' (known: marker_position, marker_velocity, marker_acceleration, "
                  "marker_orientation, joint_coordinate, joint_reaction, body_energy, "
-                 "body_position, system_energy, modal_coordinates, node_displacement, strain_energy)");
+                 "body_position, system_energy, modal_coordinates, node_displacement, node_position, "
+                 "node_velocity, element_stress, node_stress, strain_energy)");
   }
   try {
     model.AddSensor(std::move(sensor));

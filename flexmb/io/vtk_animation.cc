@@ -1,5 +1,6 @@
 #include "flexmb/io/vtk_animation.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -7,13 +8,29 @@
 #include <filesystem>
 #include <numbers>
 
+#include "flexmb/bodies/flexible_body.h"
 #include "flexmb/common/error.h"
 #include "flexmb/model/model.h"
+#include "flexmb/reduction/stress_modes.h"
 
 namespace flexmb {
 namespace {
 
-constexpr unsigned char kTriangle = 5, kHexahedron = 12, kWedge = 13;
+constexpr unsigned char kLine = 3, kTriangle = 5, kQuad = 9, kTetra = 10, kHexahedron = 12, kWedge = 13,
+                        kQuadraticTetra = 24;
+
+// vtk cell type of an FE element (node orders of Nastran and VTK agree)
+unsigned char CellType(fe::ElementType t) {
+  switch (t) {
+    case fe::ElementType::kQuad4: return kQuad;
+    case fe::ElementType::kTria3: return kTriangle;
+    case fe::ElementType::kBeam2: return kLine;
+    case fe::ElementType::kTet4: return kTetra;
+    case fe::ElementType::kTet10: return kQuadraticTetra;
+    case fe::ElementType::kHex8: return kHexahedron;
+  }
+  return 0;
+}
 constexpr const char* kPvdTail = "  </Collection>\n</VTKFile>\n";
 
 std::FILE* OpenOrThrow(const std::string& path) {
@@ -134,6 +151,31 @@ VtkAnimationWriter::VtkAnimationWriter(const std::string& dir, const Model& mode
     n_conn_ += static_cast<int>(m.connectivity.size());
     meshes_.push_back(std::move(m));
   }
+  // flexible bodies: their FE meshes
+  for (int b = 0; b < static_cast<int>(model.bodies.size()); ++b) {
+    const auto* flex = dynamic_cast<const FlexibleBody*>(model.bodies[b].get());
+    if (!flex) continue;
+    const reduction::ReducedBody& r = flex->reduced();
+    FlexMesh m;
+    m.body = b;
+    m.flexible = flex;
+    m.cell_of_element.assign(r.mesh.elements.size(), -1);
+    for (size_t e = 0; e < r.mesh.elements.size(); ++e) {
+      const fe::Element& el = r.mesh.elements[e];
+      m.cell_of_element[e] = static_cast<int>(m.cell_types.size());
+      m.cell_types.push_back(CellType(el.type));
+      m.cell_sizes.push_back(static_cast<int>(el.nodes.size()));
+      m.connectivity.insert(m.connectivity.end(), el.nodes.begin(), el.nodes.end());
+    }
+    m.u.setZero(r.modes.rows());
+    m.stress[0].setZero(r.stress.shell.modes.rows());
+    m.stress[1].setZero(r.stress.solid.modes.rows());
+    m.von_mises.assign(m.cell_types.size(), 0.0);
+    n_points_ += static_cast<int>(r.mesh.nodes.size());
+    n_cells_ += static_cast<int>(m.cell_types.size());
+    n_conn_ += static_cast<int>(m.connectivity.size());
+    flex_.push_back(std::move(m));
+  }
   // the collection, empty until the first frame
   pvd_file_ = OpenOrThrow(pvd_);
   std::fprintf(pvd_file_, "<?xml version=\"1.0\"?>\n"
@@ -152,6 +194,29 @@ std::string VtkAnimationWriter::FramePath(int i) const {
   char name[32];
   std::snprintf(name, sizeof(name), "frame_%05d.vtu", i);
   return (std::filesystem::path(dir_) / "frames" / name).string();
+}
+
+void VtkAnimationWriter::UpdateFlexMesh(FlexMesh& m, const double* w) {
+  const reduction::ReducedBody& r = m.flexible->reduced();
+  const int n = m.flexible->modes();
+  const Eigen::Map<const VecX> wv(w, n);
+  m.u.noalias() = r.modes * wv;
+  const reduction::StressTable* tables[2] = {&r.stress.shell, &r.stress.solid};
+  for (int t = 0; t < 2; ++t) {
+    const reduction::StressTable& table = *tables[t];
+    if (table.elements.empty() || table.modes.cols() != n) continue;
+    m.stress[t].noalias() = table.modes * wv;
+    const int nc = table.Components();
+    for (size_t k = 0; k < table.elements.size(); ++k) {
+      double vm = 0.0;
+      for (int l = 0; l < table.Locations(); ++l) {
+        const auto point = m.stress[t].segment(table.Row(static_cast<int>(k), l, 0), nc);
+        vm = std::max(vm, nc == 3 ? reduction::VonMises(Vec3(point))
+                                  : reduction::VonMises(Eigen::Matrix<double, 6, 1>(point)));
+      }
+      m.von_mises[m.cell_of_element[table.elements[k]]] = vm;
+    }
+  }
 }
 
 void VtkAnimationWriter::WriteFrame(const State& state) {
@@ -182,6 +247,20 @@ void VtkAnimationWriter::WriteFrame(const State& state) {
       std::fprintf(f, "          %.10g %.10g %.10g\n", p_W.x(), p_W.y(), p_W.z());
     }
   }
+  const double scale = model_.output.deformation_scale;
+  for (FlexMesh& m : flex_) {
+    const Body& b = *model_.bodies[m.body];
+    const double* q = state.q.data() + b.q_offset;
+    UpdateFlexMesh(m, q + 7);
+    Vec3 p_WB;
+    Mat3 R_WB;
+    b.BodyFramePose(q, p_WB, R_WB);
+    const auto& nodes = m.flexible->reduced().mesh.nodes;
+    for (size_t k = 0; k < nodes.size(); ++k) {
+      const Vec3 p_W = p_WB + R_WB * (nodes[k].x + scale * m.u.segment<3>(6 * k));
+      std::fprintf(f, "          %.10g %.10g %.10g\n", p_W.x(), p_W.y(), p_W.z());
+    }
+  }
   std::fprintf(f, "        </DataArray>\n      </Points>\n      <Cells>\n");
 
   // connectivity with global vertex numbers, then offsets and types
@@ -196,22 +275,54 @@ void VtkAnimationWriter::WriteFrame(const State& state) {
     }
     base += static_cast<int>(m.points_B.size());
   }
+  for (const FlexMesh& m : flex_) {
+    size_t c = 0;
+    for (int size : m.cell_sizes) {
+      std::fprintf(f, "         ");
+      for (int k = 0; k < size; ++k) std::fprintf(f, " %d", base + m.connectivity[c++]);
+      std::fputc('\n', f);
+    }
+    base += static_cast<int>(m.u.size() / 6);
+  }
   std::fprintf(f, "        </DataArray>\n"
                   "        <DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n");
   int offset = 0;
   for (const ShapeMesh& m : meshes_)
     for (int size : m.cell_sizes) std::fprintf(f, "          %d\n", offset += size);
+  for (const FlexMesh& m : flex_)
+    for (int size : m.cell_sizes) std::fprintf(f, "          %d\n", offset += size);
   std::fprintf(f, "        </DataArray>\n"
                   "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
   for (const ShapeMesh& m : meshes_)
     for (unsigned char t : m.cell_types) std::fprintf(f, "          %d\n", t);
+  for (const FlexMesh& m : flex_)
+    for (unsigned char t : m.cell_types) std::fprintf(f, "          %d\n", t);
   std::fprintf(f, "        </DataArray>\n      </Cells>\n");
 
-  // cell data: the body index
+  // point data: elastic displacement of flexible bodies' nodes (body axes)
+  std::fprintf(f, "      <PointData Vectors=\"displacement\">\n"
+                  "        <DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" "
+                  "format=\"ascii\">\n");
+  for (const ShapeMesh& m : meshes_)
+    for (size_t k = 0; k < m.points_B.size(); ++k) std::fprintf(f, "          0 0 0\n");
+  for (const FlexMesh& m : flex_)
+    for (Eigen::Index k = 0; k < m.u.size(); k += 6)
+      std::fprintf(f, "          %.10g %.10g %.10g\n", m.u(k), m.u(k + 1), m.u(k + 2));
+  std::fprintf(f, "        </DataArray>\n      </PointData>\n");
+
+  // cell data: the body index, von Mises stress
   std::fprintf(f, "      <CellData Scalars=\"body_id\">\n"
                   "        <DataArray type=\"Int32\" Name=\"body_id\" format=\"ascii\">\n");
   for (const ShapeMesh& m : meshes_)
     for (size_t c = 0; c < m.cell_types.size(); ++c) std::fprintf(f, "          %d\n", m.body);
+  for (const FlexMesh& m : flex_)
+    for (size_t c = 0; c < m.cell_types.size(); ++c) std::fprintf(f, "          %d\n", m.body);
+  std::fprintf(f, "        </DataArray>\n"
+                  "        <DataArray type=\"Float64\" Name=\"von_mises\" format=\"ascii\">\n");
+  for (const ShapeMesh& m : meshes_)
+    for (size_t c = 0; c < m.cell_types.size(); ++c) std::fprintf(f, "          0\n");
+  for (const FlexMesh& m : flex_)
+    for (double vm : m.von_mises) std::fprintf(f, "          %.8g\n", vm);
   std::fprintf(f, "        </DataArray>\n      </CellData>\n"
                   "    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n");
   const bool ok = std::ferror(f) == 0;

@@ -11,6 +11,17 @@
 /// hexahedron, a cylinder a fan of wedges, a sphere a triangulated surface.
 /// Bodies without a shape (Shape::Type::kNone) are skipped. Every cell
 /// carries the index of its body in Model::bodies as cell data "body_id".
+///
+/// Each floating-frame flexible body (bodies/flexible_body.h) also becomes
+/// its deformed FE mesh: every node at r + R (rho_k + s H_k^t w) in world,
+/// s = OutputSettings::deformation_scale; shells as quads and triangles,
+/// beams as lines, solids as tetrahedra (4 and 10 nodes) and hexahedra.
+/// Point data "displacement": the elastic displacement H_k^t w of each node
+/// relative to the floating frame, body axes, unscaled [m] (0 on shape
+/// vertices). Cell data "von_mises": the largest von Mises stress over the
+/// element's recovery points from the stress modes [Pa] (shells: bottom and
+/// top surface; solids: centroid); 0 for beams (the section's shape is not
+/// stored), elements without stress modes and shape cells.
 
 #include <string>
 #include <vector>
@@ -21,6 +32,7 @@ namespace flexmb {
 
 class Model;
 struct State;
+class FlexibleBody;
 
 /// Vertices and cells of one body's shape in the user's body frame.
 struct ShapeMesh {
@@ -58,11 +70,25 @@ class VtkAnimationWriter {
   std::string FramePath(int i) const;
 
  private:
+  // the FE mesh of one flexible body with its per-frame scratch
+  struct FlexMesh {
+    int body = 0;
+    const FlexibleBody* flexible = nullptr;
+    std::vector<int> connectivity;          // node indices (local to this mesh)
+    std::vector<int> cell_sizes;
+    std::vector<unsigned char> cell_types;
+    std::vector<int> cell_of_element;       // mesh element -> cell
+    VecX u;                                 // scratch: modes * w, 6 per node
+    VecX stress[2];                         // scratch: shell, solid table values
+    std::vector<double> von_mises;          // scratch: per cell
+  };
   void AppendToPvd(double t);
+  void UpdateFlexMesh(FlexMesh& m, const double* w);
 
   const Model& model_;
   std::string dir_, pvd_;
   std::vector<ShapeMesh> meshes_;
+  std::vector<FlexMesh> flex_;
   std::vector<double> times_;
   std::FILE* pvd_file_ = nullptr;
   long pvd_tail_ = 0;  ///< file position of the closing tags in anim.pvd

@@ -26,6 +26,9 @@ struct OutputSettings {
   double interval = 0.0;             ///< time between result rows [s]; 0 = every step
   bool animation = false;            ///< write anim.pvd and .vtu frames
   double animation_interval = 0.02;  ///< time between animation frames [s]
+  /// Factor on the elastic displacement of flexible bodies' FE meshes in the
+  /// animation (1 = true scale, 0 = undeformed), >= 0.
+  double deformation_scale = 1.0;
 };
 
 }  // namespace flexmb

@@ -5,6 +5,7 @@
 
 #include <Eigen/SparseCore>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "flexmb/forces/force_element.h"
@@ -22,6 +23,12 @@ struct Workspace {
   std::vector<ForceEval> forces;     ///< per force element
   std::vector<MatX> mass;            ///< per body: mass matrix block (nv_b x nv_b)
   std::vector<MatX> dQdq, dQdv;      ///< per body: own force derivatives
+  /// Per body: true if the body declared a block pattern (Body::BlockPattern);
+  /// then only its entries of mass, dQdq, dQdv are zeroed, used and copied.
+  std::vector<char> body_sparse;
+  /// Per marker: (first, count) of the body's velocity columns its Jacobian
+  /// can touch (Body::MarkerColumns), in the body's own indices.
+  std::vector<std::pair<int, int>> marker_cols;
   VecX Q;                            ///< generalized applied + inertial-velocity forces (nv)
   VecX vdot;                         ///< accelerations of the last solved step (nv)
 

@@ -13,6 +13,7 @@
 #include "flexmb/common/error.h"
 #include "flexmb/reduction/craig_bampton_basis.h"
 #include "flexmb/reduction/inertia_invariants.h"
+#include "flexmb/reduction/geometric_stiffness.h"
 #include "flexmb/reduction/stress_modes.h"
 #include "flexmb/reduction/rigid_modes.h"
 
@@ -285,6 +286,14 @@ ReducedBody ReduceBasis(const fe::FeModel& model, const fe::AssembledModel& a, c
   const auto t_stress = Clock::now();
   if (!model.imported) body.stress = ComputeStressModes(mesh, body.modes);
   t.stress_modes = Seconds(t_stress);
+  if (options.geometric_stiffening) {
+    if (model.imported)
+      throw InputError("geometric stiffening needs the elements (imported matrices have none)",
+                       {mesh.source, 0, "reduction options"});
+    body.geometric_stiffness = ComputeGeometricStiffness(
+        mesh, body.modes, options.fixed_nodes.empty() ? options.interface_nodes : options.fixed_nodes,
+        options.mass_form);
+  }
   body.frequencies_hz.resize(nk);
   for (int j = 0; j < nk; ++j) {
     body.frequencies_hz[j] = std::copysign(std::sqrt(std::abs(lambda[j])), lambda[j]) / (2.0 * M_PI);
@@ -325,6 +334,11 @@ ReducedBody ReduceBasis(const fe::FeModel& model, const fe::AssembledModel& a, c
       {"normal_modes", std::to_string(basis.normal_modes())},
       {"rigid_modes_removed", std::to_string(split.count)},
       {"flexible_modes", std::to_string(nk)},
+      {"geometric_stiffening",
+       options.geometric_stiffening
+           ? std::string("centrifugal (6 load cases), held at the ") +
+                 (options.fixed_nodes.empty() ? "interface nodes" : "fixed nodes")
+           : std::string("none")},
       {"stress_modes", model.imported ? "none (imported matrices have no element properties)" : "per element"},
       {"flexmb_version", FLEXMB_VERSION},
       {"date", UtcNow()},

@@ -37,6 +37,11 @@ struct ReductionOptions {
   /// fallback) or Spectra alone (the baseline of bench/reduce.cc).
   enum class EigenSolver { kBlockLanczos, kSpectra };
   EigenSolver eigen_solver = EigenSolver::kBlockLanczos;
+  /// Also compute the geometric stiffness of the centrifugal load cases
+  /// (reduction/geometric_stiffness.h), held at `fixed_nodes` or, without
+  /// them, at the interface nodes. Beam elements only (InputError
+  /// otherwise).
+  bool geometric_stiffening = false;
 };
 
 /// Wall time of each step [s]. The static and the normal modes are computed

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "flexmb/common/error.h"
+#include "flexmb/math/rotation.h"
 #include "flexmb/reduction/parallel_rows.h"
 
 namespace flexmb::reduction {
@@ -20,12 +21,6 @@ using ConstRows = Eigen::Map<const RowMat, 0, Eigen::OuterStride<>>;
 
 // nodes per slab of the dense products
 constexpr Index kSlab = 256;
-
-Mat3 Skew(const Vec3& v) {
-  Mat3 s;
-  s << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
-  return s;
-}
 
 // one component of `len` consecutive nodes of a row-major matrix with
 // `per_node` rows per node, from node k0, columns [col0, col0 + cols)

@@ -140,6 +140,13 @@ struct ReducedBody {
   MatX damping;                       ///< reduced n x n
   InertiaInvariants invariants;
   StressModes stress;
+  /// Geometric stiffness of the centrifugal load cases
+  /// (reduction/geometric_stiffness.h): empty (no geometric stiffening) or
+  /// six symmetric n x n matrices Kg_c [units of `stiffness` per
+  /// (rad/s)^2], in the order of kCentrifugalCaseNames
+  /// (wx*wx, wy*wy, wz*wz, wx*wy, wy*wz, wz*wx); the modal force is
+  /// -(sum_c p_c(om) Kg_c) w for the products p_c of the angular velocity.
+  std::vector<MatX> geometric_stiffness;
   std::string units = "SI (m, kg, s, N, Pa)";
   /// Provenance: source file, options, counts, flexmb version, date.
   std::vector<std::pair<std::string, std::string>> provenance;

@@ -1,6 +1,5 @@
 #include "flexmb/sensors/body_sensors.h"
 
-#include "flexmb/bodies/flexible_body.h"
 #include "flexmb/model/model.h"
 #include "flexmb/model/workspace.h"
 
@@ -32,8 +31,7 @@ void SystemEnergySensor::Evaluate(const Model& model, const State& state, const 
     const double* q = state.q.data() + b->q_offset;
     kinetic += b->KineticEnergy(q, state.v.data() + b->v_offset);
     potential += b->GravityPotential(q, model.gravity_W);
-    // elastic strain energy of flexible bodies
-    if (const auto* f = dynamic_cast<const FlexibleBody*>(b.get())) potential += f->StrainEnergy(q);
+    potential += b->ElasticEnergy(q);
   }
   // force elements: stored energy
   static const MarkerState kNoMarker{};

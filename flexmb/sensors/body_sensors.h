@@ -43,7 +43,7 @@ class BodyEnergySensor final : public Sensor {
 
 /// Energies of the whole model [J]: "kinetic" (all bodies), "potential"
 /// (gravity of all bodies, the force elements' PotentialEnergy and the
-/// strain energy of flexible bodies) and
+/// elastic energy of deformable bodies, Body::ElasticEnergy) and
 /// "total" = kinetic + potential.
 class SystemEnergySensor final : public Sensor {
  public:

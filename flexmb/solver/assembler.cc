@@ -1,6 +1,8 @@
 #include "flexmb/solver/assembler.h"
 
 #include <algorithm>
+#include <string>
+#include <utility>
 
 #include "flexmb/common/error.h"
 
@@ -31,21 +33,41 @@ void AddBlock(SparseMat& S, int r0, int c0, const Block& blk, double scale) {
   }
 }
 
+/// Calls f(k, i, j) for every pattern entry of S in the diagonal block of
+/// rows and columns off..off+n-1: k indexes S's value array, (i, j) are the
+/// row and column in the block.
+template <typename F>
+void ForBlockEntries(const SparseMat& S, int off, int n, F&& f) {
+  const int* outer = S.outerIndexPtr();
+  const int* inner = S.innerIndexPtr();
+  for (int j = 0; j < n; ++j) {
+    const int* end = inner + outer[off + j + 1];
+    for (const int* p = std::lower_bound(inner + outer[off + j], end, off); p != end && *p < off + n; ++p)
+      f(static_cast<int>(p - inner), *p - off, j);
+  }
+}
+
 /// Indices of the bodies a joint or force element couples (marker bodies).
 int BodyOf(const Model& m, int marker) { return marker < 0 ? 0 : m.markers[marker].body; }
 
-/// Adds scale * Ja^T K6 Rb at body blocks (a, b) of the top-left of S, where
-/// Rb (6 x nv_b) is marker b's twist Jacobian or its twist tangent.
+/// Column range (first, count) of a marker's Jacobian; ca.second == 0 for
+/// markers on bodies without velocities.
+using Cols = std::pair<int, int>;
+
+/// Adds scale * Ja^T K6 Rb at the marker column ranges (a, b) of the top-left
+/// of S, where Rb (6 x nv_b) is marker b's twist Jacobian or its twist
+/// tangent; only the columns ca of Ja and cb of Rb can be non-zero.
 template <typename Right>
-void AddCoupling(SparseMat& S, const MarkerState& ma, const MarkerState& mb, const Right& Rb,
+void AddCoupling(SparseMat& S, const MarkerState& ma, const Cols& ca, const MarkerState& mb,
+                 const Cols& cb, const Right& Rb,
                  const Eigen::Ref<const Eigen::Matrix<double, 6, 6>>& K6, double scale, MatX& tmp,
                  MatX& blk) {
-  if (ma.nv == 0 || mb.nv == 0 || scale == 0.0) return;
-  auto t = tmp.topLeftCorner(6, mb.nv);
-  auto b = blk.topLeftCorner(ma.nv, mb.nv);
-  t.noalias() = K6 * Rb;
-  b.noalias() = ma.J.transpose() * t;
-  AddBlock(S, ma.v_offset, mb.v_offset, b, scale);
+  if (ca.second == 0 || cb.second == 0 || scale == 0.0) return;
+  auto t = tmp.topLeftCorner(6, cb.second);
+  auto b = blk.topLeftCorner(ca.second, cb.second);
+  t.noalias() = K6 * Rb.middleCols(cb.first, cb.second);
+  b.noalias() = ma.J.middleCols(ca.first, ca.second).transpose() * t;
+  AddBlock(S, ma.v_offset + ca.first, mb.v_offset + cb.first, b, scale);
 }
 
 }  // namespace
@@ -53,11 +75,20 @@ void AddCoupling(SparseMat& S, const MarkerState& ma, const MarkerState& mb, con
 void InitWorkspace(const Model& model, Workspace& ws, const std::vector<int>& removed) {
   const int nb = static_cast<int>(model.bodies.size());
   ws.markers.assign(model.markers.size(), MarkerState{});
+  ws.marker_cols.assign(model.markers.size(), Cols{0, 0});
   for (size_t k = 0; k < model.markers.size(); ++k) {
     const Body& b = *model.bodies[model.markers[k].body];
     ws.markers[k].J.setZero(6, b.nv());
     ws.markers[k].nv = b.nv();
     ws.markers[k].v_offset = b.v_offset;
+    if (b.nv() == 0) continue;
+    const Cols c = b.MarkerColumns(model.markers[k]);
+    if (c.first < 0 || c.second < 0 || c.first + c.second > b.nv())
+      throw InputError("body reports marker columns " + std::to_string(c.first) + " + " +
+                           std::to_string(c.second) + " outside its " + std::to_string(b.nv()) +
+                           " velocities",
+                       {"", 0, "marker '" + model.markers[k].name + "'"});
+    ws.marker_cols[k] = c;
   }
   ws.joints.resize(model.joints.size());
   for (size_t k = 0; k < model.joints.size(); ++k) {
@@ -70,6 +101,7 @@ void InitWorkspace(const Model& model, Workspace& ws, const std::vector<int>& re
   ws.mass.resize(nb);
   ws.dQdq.resize(nb);
   ws.dQdv.resize(nb);
+  ws.body_sparse.assign(nb, 0);
   int max_nv = 1;
   for (int k = 0; k < nb; ++k) {
     const int n = model.bodies[k]->nv();
@@ -100,25 +132,53 @@ void InitWorkspace(const Model& model, Workspace& ws, const std::vector<int>& re
   // sparse patterns
   const int nv = model.nv;
   Triplets tb, ts;
-  for (const auto& b : model.bodies) PatternBlock(ts, b->v_offset, b->nv(), b->v_offset, b->nv());
-  auto couple = [&](int ba, int bb) {
-    const Body& A = *model.bodies[ba];
-    const Body& Bb = *model.bodies[bb];
-    PatternBlock(ts, A.v_offset, A.nv(), Bb.v_offset, Bb.nv());
-    PatternBlock(ts, Bb.v_offset, Bb.nv(), A.v_offset, A.nv());
+  // body blocks: the declared pattern, or dense
+  std::vector<std::pair<int, int>> entries;
+  for (int k = 0; k < nb; ++k) {
+    const Body& b = *model.bodies[k];
+    entries.clear();
+    if (b.nv() == 0 || !b.BlockPattern(entries)) {
+      PatternBlock(ts, b.v_offset, b.nv(), b.v_offset, b.nv());
+      continue;
+    }
+    ws.body_sparse[k] = 1;
+    for (const auto& e : entries) {
+      if (e.first < 0 || e.first >= b.nv() || e.second < 0 || e.second >= b.nv())
+        throw InputError("block pattern entry (" + std::to_string(e.first) + ", " +
+                             std::to_string(e.second) + ") outside the body's " +
+                             std::to_string(b.nv()) + " velocities",
+                         {"", 0, "body '" + b.name() + "'"});
+      ts.emplace_back(b.v_offset + e.first, b.v_offset + e.second, 0.0);
+    }
+  }
+  // marker couplings of force elements and joints: rows of marker a's
+  // columns times marker b's columns (for a == b the wrench tangent)
+  auto couple = [&](int ma, int mb) {
+    const Body& A = *model.bodies[BodyOf(model, ma)];
+    const Body& Bb = *model.bodies[BodyOf(model, mb)];
+    const Cols& ca = ws.marker_cols[ma];
+    const Cols& cb = ws.marker_cols[mb];
+    PatternBlock(ts, A.v_offset + ca.first, ca.second, Bb.v_offset + cb.first, cb.second);
   };
-  for (const auto& f : model.forces)
-    if (f->marker_j >= 0) couple(BodyOf(model, f->marker_i), BodyOf(model, f->marker_j));
+  for (const auto& f : model.forces) {
+    couple(f->marker_i, f->marker_i);
+    if (f->marker_j < 0) continue;
+    couple(f->marker_i, f->marker_j);
+    couple(f->marker_j, f->marker_i);
+    couple(f->marker_j, f->marker_j);
+  }
   for (const auto& j : model.joints) {
-    couple(BodyOf(model, j->marker_i), BodyOf(model, j->marker_j));
+    for (int a : {j->marker_i, j->marker_j})
+      for (int b : {j->marker_i, j->marker_j}) couple(a, b);
     for (int k = 0; k < j->NumEquations(); ++k) {
       const int r = ws.row_of_eq[j->lambda_offset + k];
       if (r < 0) continue;
       for (int mk : {j->marker_i, j->marker_j}) {
         const Body& b = *model.bodies[BodyOf(model, mk)];
-        PatternBlock(tb, r, 1, b.v_offset, b.nv());
-        PatternBlock(ts, nv + r, 1, b.v_offset, b.nv());
-        PatternBlock(ts, b.v_offset, b.nv(), nv + r, 1);
+        const Cols& c = ws.marker_cols[mk];
+        PatternBlock(tb, r, 1, b.v_offset + c.first, c.second);
+        PatternBlock(ts, nv + r, 1, b.v_offset + c.first, c.second);
+        PatternBlock(ts, b.v_offset + c.first, c.second, nv + r, 1);
       }
     }
   }
@@ -161,13 +221,15 @@ void EvaluateConstraints(const Model& model, const State& s, Workspace& ws) {
     if (count == 0) continue;
     // B rows of the active equations: D_i J_i and D_j J_j
     const MarkerState* m[2] = {&mi, &mj};
+    const Cols* cols[2] = {&ws.marker_cols[j.marker_i], &ws.marker_cols[j.marker_j]};
     for (int q = 0, r = 0; q < n; ++q) {
       if (ws.row_of_eq[j.lambda_offset + q] < 0) continue;
       for (int a = 0; a < 2; ++a) {
-        if (m[a]->nv == 0) continue;
-        auto row = ws.G.topLeftCorner(1, m[a]->nv);
-        row.noalias() = e.D.block(q, 6 * a, 1, 6) * m[a]->J;
-        AddBlock(ws.B, first + r, m[a]->v_offset, row, 1.0);
+        const Cols& c = *cols[a];
+        if (c.second == 0) continue;
+        auto row = ws.G.topLeftCorner(1, c.second);
+        row.noalias() = e.D.block(q, 6 * a, 1, 6) * m[a]->J.middleCols(c.first, c.second);
+        AddBlock(ws.B, first + r, m[a]->v_offset + c.first, row, 1.0);
       }
       ++r;
     }
@@ -181,8 +243,18 @@ void EvaluateForces(const Model& model, const State& s, Workspace& ws, bool tang
     if (b.nv() == 0) continue;
     const double* q = s.q.data() + b.q_offset;
     if (!b.HasConstantMass()) b.MassMatrix(q, ws.mass[k]);
-    ws.dQdq[k].setZero();
-    ws.dQdv[k].setZero();
+    if (ws.body_sparse[k]) {
+      // the body writes only its pattern entries: zero just those
+      MatX& dq = ws.dQdq[k];
+      MatX& dv = ws.dQdv[k];
+      ForBlockEntries(ws.S, b.v_offset, b.nv(), [&dq, &dv](int, int i, int j) {
+        dq(i, j) = 0.0;
+        dv(i, j) = 0.0;
+      });
+    } else {
+      ws.dQdq[k].setZero();
+      ws.dQdv[k].setZero();
+    }
     b.AddForces(q, s.v.data() + b.v_offset, model.gravity_W, ws.Q.segment(b.v_offset, b.nv()),
                 ws.dQdq[k], ws.dQdv[k]);
   }
@@ -198,9 +270,15 @@ void EvaluateForces(const Model& model, const State& s, Workspace& ws, bool tang
       e.C.setZero();
     }
     f.Evaluate(mi, mj, s.t, e);
-    if (mi.nv > 0) ws.Q.segment(mi.v_offset, mi.nv).noalias() += mi.J.transpose() * e.wrench.head<6>();
-    if (f.marker_j >= 0 && mj.nv > 0)
-      ws.Q.segment(mj.v_offset, mj.nv).noalias() += mj.J.transpose() * e.wrench.tail<6>();
+    const Cols& ci = ws.marker_cols[f.marker_i];
+    if (ci.second > 0)
+      ws.Q.segment(mi.v_offset + ci.first, ci.second).noalias() +=
+          mi.J.middleCols(ci.first, ci.second).transpose() * e.wrench.head<6>();
+    if (f.marker_j >= 0 && ws.marker_cols[f.marker_j].second > 0) {
+      const Cols& cj = ws.marker_cols[f.marker_j];
+      ws.Q.segment(mj.v_offset + cj.first, cj.second).noalias() +=
+          mj.J.middleCols(cj.first, cj.second).transpose() * e.wrench.tail<6>();
+    }
   }
   (void)tangents;
 }
@@ -214,9 +292,16 @@ void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
   for (size_t k = 0; k < model.bodies.size(); ++k) {
     const Body& b = *model.bodies[k];
     if (b.nv() == 0) continue;
-    AddBlock(S, b.v_offset, b.v_offset, ws.mass[k], c.mass);
-    if (c.damping != 0.0) AddBlock(S, b.v_offset, b.v_offset, ws.dQdv[k], -c.damping);
-    if (c.stiffness != 0.0) AddBlock(S, b.v_offset, b.v_offset, ws.dQdq[k], -c.stiffness);
+    // only the pattern entries of the body block (all of them for dense bodies)
+    const MatX& M = ws.mass[k];
+    const MatX& Kv = ws.dQdv[k];
+    const MatX& Kq = ws.dQdq[k];
+    double* val = S.valuePtr();
+    ForBlockEntries(S, b.v_offset, b.nv(), [&](int p, int i, int j) {
+      val[p] += c.mass * M(i, j);
+      if (c.damping != 0.0) val[p] += -c.damping * Kv(i, j);
+      if (c.stiffness != 0.0) val[p] += -c.stiffness * Kq(i, j);
+    });
   }
   // force elements: -d(J^T w)/dq and -d(J^T w)/dv
   for (size_t k = 0; k < model.forces.size() && (c.damping != 0.0 || c.stiffness != 0.0); ++k) {
@@ -226,26 +311,33 @@ void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
     const int mk[2] = {f.marker_i, f.marker_j};
     for (int a = 0; a < nm; ++a) {
       const MarkerState& ma = ws.markers[mk[a]];
+      const Cols& ca = ws.marker_cols[mk[a]];
       const Marker& marker = model.markers[mk[a]];
       const Body& body = *model.bodies[marker.body];
-      if (ma.nv > 0 && c.stiffness != 0.0) {
-        auto blk = ws.GtK.topLeftCorner(ma.nv, ma.nv);
+      if (ca.second > 0 && c.stiffness != 0.0) {
+        // the body adds only to its marker's column range: zero and copy that
+        auto full = ws.GtK.topLeftCorner(ma.nv, ma.nv);
+        auto blk = full.block(ca.first, ca.first, ca.second, ca.second);
         blk.setZero();
         const Vec6 w = e.wrench.segment<6>(6 * a);
-        body.AddMarkerWrenchTangent(s.q.data() + body.q_offset, marker, w, blk);
-        AddBlock(S, ma.v_offset, ma.v_offset, blk, -c.stiffness);
+        body.AddMarkerWrenchTangent(s.q.data() + body.q_offset, marker, w, full);
+        AddBlock(S, ma.v_offset + ca.first, ma.v_offset + ca.first, blk, -c.stiffness);
       }
       for (int b = 0; b < nm; ++b) {
         const MarkerState& mb = ws.markers[mk[b]];
-        AddCoupling(S, ma, mb, mb.J, e.K.block<6, 6>(6 * a, 6 * b), -c.stiffness, ws.G, ws.GtK);
-        AddCoupling(S, ma, mb, mb.J, e.C.block<6, 6>(6 * a, 6 * b), -c.damping, ws.G, ws.GtK);
+        const Cols& cb = ws.marker_cols[mk[b]];
+        AddCoupling(S, ma, ca, mb, cb, mb.J, e.K.block<6, 6>(6 * a, 6 * b), -c.stiffness, ws.G,
+                    ws.GtK);
+        AddCoupling(S, ma, ca, mb, cb, mb.J, e.C.block<6, 6>(6 * a, 6 * b), -c.damping, ws.G,
+                    ws.GtK);
         if (mb.nv == 0 || c.stiffness == 0.0 || e.C.block<6, 6>(6 * a, 6 * b).isZero(0.0)) continue;
         // dampers: the twist of marker b turns with its body at fixed v
         const Marker& mkb = model.markers[mk[b]];
         const Body& bb = *model.bodies[mkb.body];
         auto td = ws.twist_dq.leftCols(mb.nv);
         bb.MarkerTwistTangent(s.q.data() + bb.q_offset, s.v.data() + bb.v_offset, mkb, td);
-        AddCoupling(S, ma, mb, td, e.C.block<6, 6>(6 * a, 6 * b), -c.stiffness, ws.G, ws.GtK);
+        AddCoupling(S, ma, ca, mb, cb, td, e.C.block<6, 6>(6 * a, 6 * b), -c.stiffness, ws.G,
+                    ws.GtK);
       }
     }
   }
@@ -254,6 +346,7 @@ void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
     const Joint& j = *model.joints[k];
     const JointEval& e = ws.joints[k];
     const MarkerState* m[2] = {&ws.markers[j.marker_i], &ws.markers[j.marker_j]};
+    const Cols* cols[2] = {&ws.marker_cols[j.marker_i], &ws.marker_cols[j.marker_j]};
     const int n = j.NumEquations();
     double lam[16] = {0};
     bool any_lambda = false;
@@ -263,11 +356,12 @@ void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
       lam[q] = s.lambda(j.lambda_offset + q);
       any_lambda |= lam[q] != 0.0;
       for (int a = 0; a < 2; ++a) {
-        if (m[a]->nv == 0) continue;
-        auto row = ws.G.topLeftCorner(1, m[a]->nv);
-        row.noalias() = e.D.block(q, 6 * a, 1, 6) * m[a]->J;
-        AddBlock(S, nv + r, m[a]->v_offset, row, 1.0);
-        AddBlock(S, m[a]->v_offset, nv + r, row.transpose(), 1.0);
+        const Cols& cc = *cols[a];
+        if (cc.second == 0) continue;
+        auto row = ws.G.topLeftCorner(1, cc.second);
+        row.noalias() = e.D.block(q, 6 * a, 1, 6) * m[a]->J.middleCols(cc.first, cc.second);
+        AddBlock(S, nv + r, m[a]->v_offset + cc.first, row, 1.0);
+        AddBlock(S, m[a]->v_offset + cc.first, nv + r, row.transpose(), 1.0);
       }
     }
     if (!c.geometric || c.stiffness == 0.0 || !any_lambda) continue;
@@ -277,16 +371,18 @@ void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
     for (int q = 0; q < n; ++q) w += lam[q] * e.D.row(q).transpose();
     const int mk[2] = {j.marker_i, j.marker_j};
     for (int a = 0; a < 2; ++a) {
-      if (m[a]->nv == 0) continue;
+      const Cols& ca = *cols[a];
+      if (ca.second == 0) continue;
       const Marker& marker = model.markers[mk[a]];
       const Body& body = *model.bodies[marker.body];
-      auto blk = ws.GtK.topLeftCorner(m[a]->nv, m[a]->nv);
+      auto full = ws.GtK.topLeftCorner(m[a]->nv, m[a]->nv);
+      auto blk = full.block(ca.first, ca.first, ca.second, ca.second);
       blk.setZero();
-      body.AddMarkerWrenchTangent(s.q.data() + body.q_offset, marker, w.segment<6>(6 * a), blk);
-      AddBlock(S, m[a]->v_offset, m[a]->v_offset, blk, c.stiffness);
+      body.AddMarkerWrenchTangent(s.q.data() + body.q_offset, marker, w.segment<6>(6 * a), full);
+      AddBlock(S, m[a]->v_offset + ca.first, m[a]->v_offset + ca.first, blk, c.stiffness);
       for (int b = 0; b < 2; ++b)
-        AddCoupling(S, *m[a], *m[b], m[b]->J, ws.H.block<6, 6>(6 * a, 6 * b), c.stiffness, ws.G,
-                    ws.GtK);
+        AddCoupling(S, *m[a], ca, *m[b], *cols[b], m[b]->J, ws.H.block<6, 6>(6 * a, 6 * b),
+                    c.stiffness, ws.G, ws.GtK);
     }
   }
 }
@@ -295,7 +391,15 @@ void MassTimes(const Model& model, const Workspace& ws, const VecX& a, VecX& r) 
   for (size_t k = 0; k < model.bodies.size(); ++k) {
     const Body& b = *model.bodies[k];
     if (b.nv() == 0) continue;
-    r.segment(b.v_offset, b.nv()).noalias() = ws.mass[k] * a.segment(b.v_offset, b.nv());
+    if (!ws.body_sparse[k]) {
+      r.segment(b.v_offset, b.nv()).noalias() = ws.mass[k] * a.segment(b.v_offset, b.nv());
+      continue;
+    }
+    // the pattern entries of the mass block only
+    const MatX& M = ws.mass[k];
+    const int off = b.v_offset;
+    r.segment(off, b.nv()).setZero();
+    ForBlockEntries(ws.S, off, b.nv(), [&](int, int i, int j) { r(off + i) += M(i, j) * a(off + j); });
   }
 }
 

@@ -2,24 +2,34 @@
 
 #include <klu.h>
 
+#include <Eigen/LU>
+#include <cmath>
+#include <limits>
+
 namespace flexmb {
 
 struct SparseLu::Impl {
   klu_common common;
   klu_symbolic* symbolic = nullptr;
   klu_numeric* numeric = nullptr;
-  const int* pattern_outer = nullptr;  // pattern identity of the analysis
   int n = -1, nnz = -1;
+  // dense path, sized when the pattern is set
+  bool dense = false, dense_ok = false;
+  Eigen::MatrixXd a;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+  Eigen::VectorXd col_max, tmp;
   void Free() {
     if (numeric) klu_free_numeric(&numeric, &common);
     if (symbolic) klu_free_symbolic(&symbolic, &common);
     numeric = nullptr;
     symbolic = nullptr;
     n = nnz = -1;
+    dense = dense_ok = false;
   }
+  bool FactorizeDense(const SparseMat& A, int& singular_column, double& rcond);
 };
 
-SparseLu::SparseLu() : impl_(new Impl) { klu_defaults(&impl_->common); }
+SparseLu::SparseLu(Path path) : impl_(new Impl), path_(path) { klu_defaults(&impl_->common); }
 
 SparseLu::~SparseLu() {
   impl_->Free();
@@ -27,6 +37,39 @@ SparseLu::~SparseLu() {
 }
 
 void SparseLu::Reset() { impl_->Free(); }
+
+bool SparseLu::dense() const { return impl_->dense; }
+
+bool SparseLu::Impl::FactorizeDense(const SparseMat& A, int& singular_column, double& rcond) {
+  dense_ok = false;
+  a.setZero();
+  col_max.setZero();
+  for (int j = 0; j < n; ++j) {
+    for (SparseMat::InnerIterator it(A, j); it; ++it) {
+      a(it.row(), j) = it.value();
+      col_max(j) = std::max(col_max(j), std::abs(it.value()));
+    }
+  }
+  lu.compute(a);
+  // negligible pivot: round-off of the column's size -> dependent column
+  const double tol = n * std::numeric_limits<double>::epsilon();
+  const auto& U = lu.matrixLU();
+  double umin = std::numeric_limits<double>::infinity(), umax = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const double u = std::abs(U(k, k));
+    if (u <= tol * col_max(k)) {
+      singular_column = k;
+      return false;
+    }
+    umin = std::min(umin, u);
+    umax = std::max(umax, u);
+  }
+  rcond = umax > 0.0 ? umin / umax : 0.0;
+  if (std::isnan(U.diagonal().sum())) rcond = std::numeric_limits<double>::quiet_NaN();
+  if (rcond < 1e-16) return false;
+  dense_ok = true;
+  return true;
+}
 
 bool SparseLu::Factorize(const SparseMat& A) {
   Impl& k = *impl_;
@@ -36,13 +79,23 @@ bool SparseLu::Factorize(const SparseMat& A) {
   auto* Ai = const_cast<int*>(A.innerIndexPtr());
   auto* Ax = const_cast<double*>(A.valuePtr());
   singular_column_ = -1;
-  if (n != k.n || nnz != k.nnz || k.symbolic == nullptr) {
+  if (n != k.n || nnz != k.nnz || (k.symbolic == nullptr && !k.dense)) {
     k.Free();
-    k.symbolic = klu_analyze(n, Ap, Ai, &k.common);
-    if (!k.symbolic) return false;
+    if (path_ == Path::kDense || (path_ == Path::kAuto && n >= kDenseMinRows &&
+                                   nnz >= kDenseMinFill * static_cast<double>(n) * n)) {
+      k.dense = true;
+      k.a.setZero(n, n);
+      k.lu = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
+      k.col_max.setZero(n);
+      k.tmp.setZero(n);
+    } else {
+      k.symbolic = klu_analyze(n, Ap, Ai, &k.common);
+      if (!k.symbolic) return false;
+    }
     k.n = n;
     k.nnz = nnz;
   }
+  if (k.dense) return k.FactorizeDense(A, singular_column_, rcond_);
   // try to reuse the pivot order; refactor fails or degrades -> fresh factor
   if (k.numeric) {
     if (klu_refactor(Ap, Ai, Ax, k.symbolic, k.numeric, &k.common) && klu_rcond(k.symbolic, k.numeric, &k.common) &&
@@ -68,7 +121,16 @@ bool SparseLu::Factorize(const SparseMat& A) {
 }
 
 void SparseLu::Solve(VecX& b) {
-  klu_solve(impl_->symbolic, impl_->numeric, static_cast<int>(b.size()), 1, b.data(), &impl_->common);
+  Impl& k = *impl_;
+  if (k.dense) {
+    // x = U^-1 L^-1 P b, through the preallocated tmp (no temporaries)
+    k.tmp.noalias() = k.lu.permutationP() * b;
+    k.lu.matrixLU().triangularView<Eigen::UnitLower>().solveInPlace(k.tmp);
+    k.lu.matrixLU().triangularView<Eigen::Upper>().solveInPlace(k.tmp);
+    b = k.tmp;
+    return;
+  }
+  klu_solve(k.symbolic, k.numeric, static_cast<int>(b.size()), 1, b.data(), &k.common);
 }
 
 }  // namespace flexmb

@@ -10,10 +10,14 @@
 #include <fstream>
 #include <numbers>
 
+#include "flexmb/bodies/flexible_body.h"
 #include "flexmb/bodies/rigid_body.h"
 #include "flexmb/common/error.h"
+#include "flexmb/io/body_file.h"
 #include "flexmb/io/json_text.h"
 #include "flexmb/io/parse_context.h"
+#include "flexmb/reduction/craig_bampton.h"
+#include "flexmb/reduction/stress_modes.h"
 #include "flexmb/solver/simulator.h"
 #include "flexmb/vehicle/driver.h"
 #include "flexmb/vehicle/lane_change_course.h"
@@ -33,12 +37,24 @@ struct EndOfTest {};
 struct LaneChangeFile {
   double speed_kmh = 55.0;
   std::string frame = "rigid";
+  FrameReductionData reduction;
   double mu = 0.8;
   LaneChangeCourseData course;
   DriverData driver;
   double dt = 0.002, rho_inf = 0.8, output_interval = 0.01, newton_tol = 1e-10;
   TruckData truck;
 };
+
+// an optional sub-map of the test (course, driver, solver): checked for its
+// keys, the entity set for messages; an undefined node if absent
+YAML::Node Section(const YAML::Node& t, const char* key, ParseContext& ctx, std::initializer_list<const char*> keys) {
+  const YAML::Node n = t[key];
+  if (n) {
+    ctx.SetEntity(key);
+    ctx.CheckKeys(n, keys);
+  }
+  return n;
+}
 
 LaneChangeFile ReadFile(const std::string& path) {
   YAML::Node root;
@@ -54,13 +70,18 @@ LaneChangeFile ReadFile(const std::string& path) {
   ctx.CheckKeys(root, {"lane_change_test", "truck", "name", "note"});
   const YAML::Node t = root["lane_change_test"];
   ctx.SetEntity("lane_change_test");
-  ctx.CheckKeys(t, {"entry_speed_kmh", "frame", "road_mu", "course", "driver", "solver"});
+  ctx.CheckKeys(t, {"entry_speed_kmh", "frame", "frame_modes", "frame_damping", "frame_keep_modes", "road_mu", "course", "driver", "solver"});
   f.speed_kmh = ctx.Double(t, "entry_speed_kmh", f.speed_kmh);
   f.frame = ctx.String(t, "frame", f.frame);
+  FrameReductionData& fr = f.reduction;
+  fr.normal_modes = ctx.Integer(t, "frame_modes", fr.normal_modes);
+  if (fr.normal_modes < 0) ctx.Fail(t["frame_modes"], "frame_modes must be >= 0");
+  fr.damping_ratio = ctx.Double(t, "frame_damping", fr.damping_ratio);
+  if (!(fr.damping_ratio >= 0)) ctx.Fail(t["frame_damping"], "frame_damping must be >= 0");
+  fr.keep = ctx.Integer(t, "frame_keep_modes", fr.keep);
   f.mu = ctx.Positive(t, "road_mu");
-  if (const YAML::Node c = t["course"]) {
-    ctx.SetEntity("course");
-    ctx.CheckKeys(c, {"section1_length", "section2_length", "section1_width", "section3_width", "offset"});
+  if (const YAML::Node c = Section(t, "course", ctx,
+                                    {"section1_length", "section2_length", "section1_width", "section3_width", "offset"})) {
     LaneChangeCourseData& cd = f.course;
     cd.section1_length = ctx.Double(c, "section1_length", cd.section1_length);
     cd.section2_length = ctx.Double(c, "section2_length", cd.section2_length);
@@ -68,10 +89,9 @@ LaneChangeFile ReadFile(const std::string& path) {
     cd.section3_width = ctx.Double(c, "section3_width", cd.section3_width);
     cd.offset = ctx.Double(c, "offset", cd.offset);
   }
-  if (const YAML::Node d = t["driver"]) {
-    ctx.SetEntity("driver");
-    ctx.CheckKeys(d, {"preview_time", "min_preview", "max_wheel_angle_deg", "max_wheel_rate_deg", "neutral_in_section3",
-                      "speed_kp", "speed_ki", "max_drive_torque", "hold_speed"});
+  if (const YAML::Node d = Section(t, "driver", ctx,
+                                    {"preview_time", "min_preview", "max_wheel_angle_deg", "max_wheel_rate_deg",
+                                     "neutral_in_section3", "speed_kp", "speed_ki", "max_drive_torque", "hold_speed"})) {
     DriverData& dd = f.driver;
     dd.preview_time = ctx.Double(d, "preview_time", dd.preview_time);
     dd.min_preview = ctx.Double(d, "min_preview", dd.min_preview);
@@ -83,9 +103,7 @@ LaneChangeFile ReadFile(const std::string& path) {
     dd.max_drive_torque = ctx.Double(d, "max_drive_torque", dd.max_drive_torque);
     dd.hold_speed = ctx.Bool(d, "hold_speed", dd.hold_speed);
   }
-  if (const YAML::Node s = t["solver"]) {
-    ctx.SetEntity("solver");
-    ctx.CheckKeys(s, {"dt", "rho_inf", "output_interval", "newton_tol"});
+  if (const YAML::Node s = Section(t, "solver", ctx, {"dt", "rho_inf", "output_interval", "newton_tol"})) {
     f.dt = ctx.Positive(s, "dt");
     f.rho_inf = ctx.Double(s, "rho_inf", f.rho_inf);
     f.output_interval = ctx.Double(s, "output_interval", f.output_interval);
@@ -97,6 +115,85 @@ LaneChangeFile ReadFile(const std::string& path) {
   f.driver.steering_ratio = f.truck.steering_ratio;
   return f;
 }
+
+/// Deflection and stress of the elastic frame at one instant: the largest
+/// elastic node displacement relative to the floating frame and the largest
+/// von Mises stress of the shell stress modes, with where. Buffers are
+/// allocated once.
+class FrameResponse {
+ public:
+  explicit FrameResponse(const FlexibleBody* body) : body_(body) {
+    if (!body_) return;
+    const reduction::ReducedBody& b = body_->reduced();
+    u_.resize(b.modes.rows());
+    s_.resize(b.stress.shell.modes.rows());
+    centroid_.resize(b.stress.shell.elements.size());
+    for (size_t k = 0; k < centroid_.size(); ++k) {
+      const fe::Element& e = b.mesh.elements[static_cast<size_t>(b.stress.shell.elements[k])];
+      Vec3 c = Vec3::Zero();
+      for (int n : e.nodes) c += b.mesh.nodes[static_cast<size_t>(n)].x / static_cast<double>(e.nodes.size());
+      centroid_[k] = c;
+    }
+  }
+  bool active() const { return body_ != nullptr; }
+  /// Evaluates at the frame's coordinates q (7 + n).
+  void Evaluate(const double* q) {
+    const reduction::ReducedBody& b = body_->reduced();
+    const Eigen::Map<const VecX> w(q + 7, body_->modes());
+    u_.noalias() = b.modes * w;
+    disp_ = 0;
+    for (Eigen::Index k = 0; 6 * k < u_.size(); ++k) {
+      const double d = u_.segment<3>(6 * k).norm();
+      if (d > disp_) {
+        disp_ = d;
+        node_ = static_cast<int>(k);
+      }
+    }
+    stress_ = 0;
+    const reduction::StressTable& t = b.stress.shell;
+    if (t.modes.rows() == 0) return;
+    s_.noalias() = t.modes * w;
+    for (int k = 0; k < static_cast<int>(t.elements.size()); ++k)
+      for (int l = 0; l < t.Locations(); ++l) {
+        const double vm = reduction::VonMises(Eigen::Vector3d(s_.segment<3>(t.Row(k, l, 0))));
+        if (vm > stress_) {
+          stress_ = vm;
+          element_ = k;
+        }
+      }
+  }
+  /// Keeps the maxima over time in r.
+  void Record(double t, LaneChangeResult& r) const {
+    const reduction::ReducedBody& b = body_->reduced();
+    if (disp_ > r.max_frame_displacement) {
+      r.max_frame_displacement = disp_;
+      r.max_displacement_node = b.mesh.nodes[static_cast<size_t>(node_)].id;
+      r.max_displacement_position = b.mesh.nodes[static_cast<size_t>(node_)].x;
+      r.max_displacement_time = t;
+    }
+    if (stress_ > r.max_frame_stress) {
+      r.max_frame_stress = stress_;
+      r.max_stress_element = b.mesh.elements[static_cast<size_t>(b.stress.shell.elements[element_])].id;
+      r.max_stress_position = centroid_[static_cast<size_t>(element_)];
+      r.max_stress_time = t;
+    }
+  }
+  /// Appends the instant's values as CSV columns (leading comma).
+  void WriteCsv(std::FILE* f) const {
+    const reduction::ReducedBody& b = body_->reduced();
+    std::fprintf(f, ",%.6g,%d,%.4g,%.6g,%d,%.4g", disp_ * 1e3, b.mesh.nodes[static_cast<size_t>(node_)].id,
+                 b.mesh.nodes[static_cast<size_t>(node_)].x.x(), stress_ / 1e6,
+                 b.mesh.elements[static_cast<size_t>(b.stress.shell.elements[element_])].id,
+                 centroid_[static_cast<size_t>(element_)].x());
+  }
+
+ private:
+  const FlexibleBody* body_;
+  VecX u_, s_;
+  std::vector<Vec3> centroid_;
+  double disp_ = 0, stress_ = 0;
+  int node_ = 0, element_ = 0;
+};
 
 // roll, pitch, yaw (z-y-x) of a rotation matrix [rad]
 Vec3 RollPitchYaw(const Mat3& R) {
@@ -116,21 +213,62 @@ bool IsLaneChangeFile(const std::string& path) {
 
 TruckData LoadLaneChangeTruck(const std::string& file) { return ReadFile(file).truck; }
 
+FrameReductionData LaneChangeFrameReduction(const std::string& file) { return ReadFile(file).reduction; }
+
+std::shared_ptr<reduction::ReducedBody> ReduceTruckFrame(const TruckData& d, const FrameReductionData& r, double g) {
+  if (!d.frame_mesh) throw InputError("the truck has no frame mesh", {"", 0, "truck frame"});
+  fe::FeModel model;
+  model.mesh = *d.frame_mesh;
+  reduction::ReductionOptions o;
+  const LadderFrameData& lf = d.ladder;
+  for (const FrameAttachment& a : FrameAttachments(d, g)) {
+    const int node = NearestNode(model.mesh, a.point);
+    o.interface_nodes.push_back(node);
+    // the axle arms' pivots reach both rails (the leaf springs' eyes)
+    if (a.name.rfind("arm_pivot", 0) == 0) {
+      const double x = model.mesh.nodes[static_cast<size_t>(node)].x.x();
+      AddBracket(model.mesh, node, {Vec3(x, lf.half_spacing, lf.bottom_z), Vec3(x, -lf.half_spacing, lf.bottom_z)},
+                 lf.spider_radius);
+    }
+  }
+  AddSpiders(model.mesh, o.interface_nodes, lf.spider_radius);
+  o.normal_modes = r.normal_modes;
+  o.keep = r.keep;
+  o.damping_ratios = {r.damping_ratio};
+  return std::make_shared<reduction::ReducedBody>(reduction::ReduceCraigBampton(model, o));
+}
+
 LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
   LaneChangeFile f = ReadFile(opt.file);
   if (opt.speed_kmh) f.speed_kmh = *opt.speed_kmh;
   if (opt.frame) f.frame = *opt.frame;
   if (opt.dt) f.dt = *opt.dt;
   if (!std::isfinite(f.speed_kmh) || f.speed_kmh < 0) throw InputError("entry speed must be >= 0 km/h");
-  if (f.frame == "elastic")
-    throw InputError("the elastic frame is not available yet (issue 7, part 2); use --frame rigid");
-  if (f.frame != "rigid") throw InputError("frame must be 'rigid' or 'elastic', got '" + f.frame + "'");
+  if (f.frame != "rigid" && f.frame != "elastic") throw InputError("frame must be 'rigid' or 'elastic', got '" + f.frame + "'");
   if (!(f.dt > 0)) throw InputError("dt must be positive");
 
   const double v0 = f.speed_kmh / 3.6;
   const LaneChangeCourse course(f.course);
   Driver driver(f.driver, course, v0);
+  LaneChangeResult r;
+  r.frame = f.frame;
   Model model;
+  if (!opt.out_dir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(opt.out_dir, ec);
+  }
+  if (f.frame == "elastic") {
+    // reduce the generated frame (or take the caller's) and keep the body file
+    const auto t0 = std::chrono::steady_clock::now();
+    std::shared_ptr<const reduction::ReducedBody> body = opt.frame_body;
+    if (!body) {
+      auto reduced = ReduceTruckFrame(f.truck, f.reduction, -model.gravity_W.z());
+      if (!opt.out_dir.empty()) io::WriteBody(*reduced, (std::filesystem::path(opt.out_dir) / "frame.h5").string());
+      body = std::move(reduced);
+    }
+    f.truck.elastic_frame = body;
+    r.reduction_wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
   model.name = "truck_lane_change";
   model.solver.dt = f.dt;
   model.solver.rho_inf = f.rho_inf;
@@ -140,28 +278,28 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
       BuildTruck(f.truck, v0, f.mu, driver.steering_wheel_angle(), driver.drive_torque(), model);
   model.Finalize();
 
-  LaneChangeResult r;
   r.entry_speed_kmh = f.speed_kmh;
   const std::array<double, 2> stat = StaticAxleLoads(f.truck, -model.gravity_W.z());
   r.static_axle_load[0] = stat[0];
   r.static_axle_load[1] = stat[1];
   r.min_axle_load[0] = r.min_axle_load[1] = 1e300;
   r.min_corridor_margin = 1e300;
-  const double distance = course.TestDistance();
+  const double distance = opt.stop_distance ? std::min(*opt.stop_distance, course.TestDistance()) : course.TestDistance();
   const bool by_time = v0 <= 0.1;
   const double t_limit = by_time ? 10.0 : 1.5 * distance / v0 + 5.0;
 
   std::FILE* csv = nullptr;
   if (!opt.out_dir.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(opt.out_dir, ec);
     csv = std::fopen((std::filesystem::path(opt.out_dir) / "results.csv").string().c_str(), "w");
     if (!csv) throw InputError("cannot write results.csv", {opt.out_dir, 0, ""});
     std::fprintf(csv,
                  "time,x,y,centre_line_y,speed_kmh,lateral_acceleration,steering_wheel_angle_deg,road_wheel_angle_deg,"
                  "roll_deg,pitch_deg,yaw_deg,yaw_rate_degps,front_axle_load_kN,rear_axle_load_kN,fz_fl_kN,fz_fr_kN,"
                  "fz_rl_kN,fz_rr_kN,liftoff_fl,liftoff_fr,liftoff_rl,liftoff_rr,corridor_margin,drive_torque_kNm,"
-                 "wheel_angle_left_deg,wheel_angle_right_deg\n");
+                 "wheel_angle_left_deg,wheel_angle_right_deg%s\n",
+                 h.elastic ? ",frame_max_displacement_mm,frame_max_displacement_node,frame_max_displacement_x,"
+                             "frame_max_stress_MPa,frame_max_stress_element,frame_max_stress_x"
+                           : "");
   }
 
   Simulator sim(model);
@@ -169,7 +307,10 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
   const std::clock_t cpu0 = std::clock();
   double next_row = 0.0;
   const double x0 = 0.0;
-  const auto* frame_body = model.bodies[h.frame_body].get();
+  const Body* frame_body = model.bodies[h.frame_body].get();
+  const Marker& frame_ref = model.markers[static_cast<size_t>(h.frame_ref)];
+  FrameResponse frame_response(h.elastic ? static_cast<const FlexibleBody*>(frame_body) : nullptr);
+  r.frame_modal_coordinates = h.elastic ? f.truck.elastic_frame->invariants.n : 0;
   try {
     sim.Initialize();
     sim.Run(t_limit, 0.0, [&](const State& st, const Workspace& ws) {
@@ -179,8 +320,11 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
       const Vec3 ex(std::cos(yaw), std::sin(yaw), 0), ey(-std::sin(yaw), std::cos(yaw), 0);
       const Vec3 pf = ws.markers[h.front_axle_ref].p_WM, pr = ws.markers[h.rear_axle_ref].p_WM;
       const double speed = fr.v_WM.dot(ex);
-      const Vec3 acc = ws.vdot.segment<3>(frame_body->v_offset);
-      const double ay = acc.dot(ey);
+      // acceleration of the frame's centre of mass (the ref marker)
+      const Vec6 acc = fr.J * ws.vdot.segment(frame_body->v_offset, frame_body->nv()) +
+                       frame_body->MarkerAccelerationBias(st.q.data() + frame_body->q_offset,
+                                                          st.v.data() + frame_body->v_offset, frame_ref);
+      const double ay = acc.head<3>().dot(ey);
       const double yaw_rate = fr.w_WM.z();
 
       // controllers, held over the next step
@@ -222,17 +366,26 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
       r.t_end = st.t;
       r.distance = pf.x() - x0;
       const bool done = by_time ? st.t >= 10.0 - 1e-9 : r.distance >= distance;
-      if (csv && (st.t >= next_row - 1e-9 || done)) {
+      const bool row = st.t >= next_row - 1e-9 || done;
+      // elastic frame: deflection and stress hot spot at the output times
+      if (row && frame_response.active()) {
+        frame_response.Evaluate(st.q.data() + frame_body->q_offset);
+        if (record) frame_response.Record(st.t, r);
+      }
+      if (csv && row) {
         next_row = st.t + f.output_interval;
         std::fprintf(csv,
                      "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%d,%d,%d,"
-                     "%d,%.6g,%.6g,%.6g,%.6g\n",
+                     "%d,%.6g,%.6g,%.6g,%.6g",
                      st.t, pf.x(), pf.y(), course.CentreLine(pf.x()), speed * 3.6, ay,
                      *driver.steering_wheel_angle() * kDeg, driver.road_wheel_angle() * kDeg, rpy.x() * kDeg,
                      rpy.y() * kDeg, yaw * kDeg, yaw_rate * kDeg, front / 1e3, rear / 1e3, fz[0] / 1e3, fz[1] / 1e3,
                      fz[2] / 1e3, fz[3] / 1e3, lift[0], lift[1], lift[2], lift[3], margin,
                      *driver.drive_torque() / 1e3, KingpinAngle(0) * kDeg, KingpinAngle(1) * kDeg);
+        if (frame_response.active()) frame_response.WriteCsv(csv);
+        std::fputc('\n', csv);
       }
+      if (row && !csv) next_row = st.t + f.output_interval;
       if (done) throw EndOfTest{};
       // a truck rolled past 45 degrees is over: end the run as failed
       if (record && std::abs(rpy.x()) > std::numbers::pi / 4) {
@@ -263,19 +416,33 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
   }
   if (opt.info)
     std::fprintf(opt.info,
-                 "lane change at %.1f km/h (rigid frame): %s; %s after %.1f m, t = %.2f s; max |a_y| %.2f m/s^2, "
+                 "lane change at %.1f km/h (%s frame): %s; %s after %.1f m, t = %.2f s; max |a_y| %.2f m/s^2, "
                  "max |roll| %.2f deg, min corridor margin %.3f m; %.2f s wall time (real-time factor %.1f; %.1f on CPU time)\n",
-                 r.entry_speed_kmh, r.passed ? "passed" : "failed", r.completed ? "completed" : "stopped", r.distance,
+                 r.entry_speed_kmh, r.frame.c_str(), r.passed ? "passed" : "failed", r.completed ? "completed" : "stopped", r.distance,
                  r.t_end, r.max_lateral_acceleration, r.max_roll_deg, r.min_corridor_margin, r.wall_time_s,
                  r.real_time_factor, r.cpu_time_s > 0 ? r.t_end / r.cpu_time_s : 0.0);
+  if (opt.info && r.frame == "elastic")
+    std::fprintf(opt.info,
+                 "elastic frame (%d modal coordinates, reduced in %.2f s): max elastic displacement %.2f mm at node %d "
+                 "(x = %.2f m, t = %.2f s), max von Mises stress %.1f MPa in element %d (x = %.2f m, t = %.2f s)\n",
+                 r.frame_modal_coordinates, r.reduction_wall_time_s, r.max_frame_displacement * 1e3,
+                 r.max_displacement_node, r.max_displacement_position.x(), r.max_displacement_time,
+                 r.max_frame_stress / 1e6, r.max_stress_element, r.max_stress_position.x(), r.max_stress_time);
   return r;
 }
 
 double MaxPassSpeed(const LaneChangeOptions& base, double low, double high, double tol, std::FILE* log,
                     bool* low_passed) {
   if (!(low > 0) || !(high > low) || !(tol > 0)) throw InputError("max-speed: need 0 < low < high and tol > 0");
+  // an elastic frame is reduced once for all trials
+  LaneChangeOptions shared = base;
+  if (!shared.frame_body) {
+    const LaneChangeFile f = ReadFile(base.file);
+    if (base.frame.value_or(f.frame) == "elastic")
+      shared.frame_body = ReduceTruckFrame(f.truck, f.reduction);
+  }
   auto passes = [&](double v) {
-    LaneChangeOptions o = base;
+    LaneChangeOptions o = shared;
     o.speed_kmh = v;
     o.out_dir.clear();
     o.stop_on_failure = true;
@@ -305,7 +472,7 @@ std::string LaneChangeJson(const LaneChangeResult& r) {
   auto b = [](bool v) { return std::string(v ? "true" : "false"); };
   add("status", JsonString(r.completed ? "ok" : "failed"));
   add("message", JsonString(r.message));
-  add("frame", JsonString("rigid"));
+  add("frame", JsonString(r.frame));
   add("passed", b(r.passed));
   add("completed", b(r.completed));
   add("entry_speed_kmh", JsonNumber(r.entry_speed_kmh));
@@ -330,7 +497,22 @@ std::string LaneChangeJson(const LaneChangeResult& r) {
   add("wall_time_s", JsonNumber(r.wall_time_s));
   add("cpu_time_s", JsonNumber(r.cpu_time_s));
   add("real_time_factor_cpu", JsonNumber(r.cpu_time_s > 0 ? r.t_end / r.cpu_time_s : 0.0));
-  add("real_time_factor", JsonNumber(r.real_time_factor), true);
+  add("real_time_factor", JsonNumber(r.real_time_factor), r.frame != "elastic");
+  if (r.frame == "elastic") {
+    auto pos = [](const Vec3& x) {
+      return "[" + JsonNumber(x.x()) + ", " + JsonNumber(x.y()) + ", " + JsonNumber(x.z()) + "]";
+    };
+    add("frame_modal_coordinates", std::to_string(r.frame_modal_coordinates));
+    add("reduction_wall_time_s", JsonNumber(r.reduction_wall_time_s));
+    add("max_frame_displacement_mm", JsonNumber(r.max_frame_displacement * 1e3));
+    add("max_displacement_node", std::to_string(r.max_displacement_node));
+    add("max_displacement_position", pos(r.max_displacement_position));
+    add("max_displacement_time", JsonNumber(r.max_displacement_time));
+    add("max_frame_stress_MPa", JsonNumber(r.max_frame_stress / 1e6));
+    add("max_stress_element", std::to_string(r.max_stress_element));
+    add("max_stress_position", pos(r.max_stress_position));
+    add("max_stress_time", JsonNumber(r.max_stress_time), true);
+  }
   return j + "}\n";
 }
 

@@ -6,6 +6,7 @@
 /// wheel lift-off, and writes results.csv and summary.json.
 
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -22,6 +23,13 @@ struct LaneChangeOptions {
   std::optional<double> dt;           ///< step size [s], overrides the file
   bool stop_on_failure = false;       ///< end the run at the first corridor exit or lift-off
   std::FILE* info = nullptr;          ///< one-line report (nullptr: silent)
+  /// Elastic frame only: a reduced frame to use instead of reducing the
+  /// file's frame (ReduceTruckFrame of the same file's truck and modes; a
+  /// bisection or a benchmark reduces once). Not written to frame.h5.
+  std::shared_ptr<const reduction::ReducedBody> frame_body;
+  /// End the run when the front axle has travelled this far [m] (a shorter
+  /// run for tests); the run counts as completed when it gets there.
+  std::optional<double> stop_distance;
 };
 
 /// Outcome of a lane-change run (also written as summary.json).
@@ -47,6 +55,23 @@ struct LaneChangeResult {
   double cpu_time_s = 0.0;            ///< CPU time of the integration (process clock) [s]
   double wall_time_s = 0.0;           ///< wall time of the integration [s]
   double real_time_factor = 0.0;      ///< simulated time / wall time
+  std::string frame = "rigid";        ///< frame model, "rigid" or "elastic"
+  /// Elastic frame: largest elastic displacement of a frame node relative to
+  /// the floating frame (|H_k^t w|) over the run [m], the node's id, its
+  /// undeformed position (vehicle frame) [m] and the time [s].
+  double max_frame_displacement = 0.0;
+  int max_displacement_node = -1;
+  Vec3 max_displacement_position = Vec3::Zero();
+  double max_displacement_time = 0.0;
+  /// Elastic frame: largest von Mises stress of the shell stress modes
+  /// (element surfaces) over the run [Pa], the element's id, its centroid
+  /// (vehicle frame) [m] and the time [s].
+  double max_frame_stress = 0.0;
+  int max_stress_element = -1;
+  Vec3 max_stress_position = Vec3::Zero();
+  double max_stress_time = 0.0;
+  int frame_modal_coordinates = 0;    ///< elastic frame: modal coordinates of the body
+  double reduction_wall_time_s = 0.0; ///< elastic frame: generation, reduction and body file [s]
 };
 
 /// True if the YAML file at `path` is a lane-change file (top-level key
@@ -68,6 +93,25 @@ double MaxPassSpeed(const LaneChangeOptions& base, double low, double high, doub
 /// The truck's parameters of a lane-change file (tire files resolved
 /// relative to it); throws InputError like RunLaneChange.
 TruckData LoadLaneChangeTruck(const std::string& file);
+
+/// Settings of the elastic frame's reduction (lane_change_test keys
+/// frame_modes, frame_damping, frame_keep_modes).
+struct FrameReductionData {
+  int normal_modes = 10;           ///< fixed-interface normal modes (seed: 10)
+  double damping_ratio = 0.02;     ///< modal damping ratio of every mode
+  int keep = -1;                   ///< keep the lowest N flexible modes (-1: all, as the seed)
+};
+
+/// Craig-Bampton reduction of the truck's generated frame (d.frame_mesh):
+/// the interface nodes are the nodes nearest to FrameAttachments(d, g),
+/// each with a rigid spider of radius d.ladder.spider_radius (the arm
+/// pivots' brackets also reach both rails, AddBracket), all their static
+/// modes and the fixed-interface normal modes of `r`.
+std::shared_ptr<reduction::ReducedBody> ReduceTruckFrame(const TruckData& d, const FrameReductionData& r,
+                                                         double g = 9.81);
+
+/// The elastic frame's reduction settings of a lane-change file.
+FrameReductionData LaneChangeFrameReduction(const std::string& file);
 
 /// The result as a JSON object.
 std::string LaneChangeJson(const LaneChangeResult& r);

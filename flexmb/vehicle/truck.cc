@@ -1,16 +1,19 @@
 #include "flexmb/vehicle/truck.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <tuple>
 
+#include "flexmb/bodies/flexible_body.h"
 #include "flexmb/bodies/rigid_body.h"
+#include "flexmb/forces/bushing.h"
 #include "flexmb/common/error.h"
 #include "flexmb/forces/joint_motor.h"
 #include "flexmb/forces/rotational_spring_damper.h"
 #include "flexmb/forces/spring_damper.h"
 #include "flexmb/io/parse_context.h"
 #include "flexmb/joints/distance.h"
-#include "flexmb/joints/fixed.h"
 #include "flexmb/joints/revolute.h"
 #include "flexmb/vehicle/command_signal.h"
 
@@ -39,6 +42,9 @@ int AddPart(Model& m, const std::string& name, const PartData& p, const Vec3& cg
   RigidBodyData b;
   b.mass = p.mass;
   b.inertia_C = p.inertia.asDiagonal();
+  b.inertia_C(0, 1) = b.inertia_C(1, 0) = p.products.x();
+  b.inertia_C(0, 2) = b.inertia_C(2, 0) = p.products.y();
+  b.inertia_C(1, 2) = b.inertia_C(2, 1) = p.products.z();
   b.c_B = cg;
   // the body frame is the vehicle frame: its origin's velocity gives the
   // centre of mass the forward speed
@@ -47,11 +53,23 @@ int AddPart(Model& m, const std::string& name, const PartData& p, const Vec3& cg
   return m.AddBody(std::make_unique<RigidBody>(name, b));
 }
 
-void ReadPart(const YAML::Node& n, ParseContext& ctx, const char* key, PartData& p) {
+void ReadPart(const YAML::Node& n, ParseContext& ctx, const char* key, PartData& p, MountData* mounts = nullptr) {
   const YAML::Node& node = n[key];
   ctx.SetEntity(std::string("truck part '") + key + "'");
   if (!node) ctx.Fail(n, std::string("missing part '") + key + "'");
-  ctx.CheckKeys(node, {"mass", "cg", "inertia", "note"});
+  if (mounts) {
+    ctx.CheckKeys(node, {"mass", "cg", "inertia", "note", "mount_x", "mount_stiffness", "mount_damping"});
+    const YAML::Node mx = node["mount_x"];
+    if (!mx || !mx.IsSequence() || mx.size() == 0) ctx.Fail(node, "expected 'mount_x' as a list of x stations [m]");
+    mounts->x.clear();
+    for (const YAML::Node& v : mx) mounts->x.push_back(ctx.Number(v, "mount station"));
+    mounts->stiffness = ctx.Vector3(node, "mount_stiffness", mounts->stiffness);
+    mounts->damping = ctx.Vector3(node, "mount_damping", mounts->damping);
+    if (mounts->stiffness.minCoeff() <= 0 || mounts->damping.minCoeff() < 0)
+      ctx.Fail(node, "mount stiffness must be positive and damping not negative");
+  } else {
+    ctx.CheckKeys(node, {"mass", "cg", "inertia", "note"});
+  }
   p.mass = ctx.Positive(node, "mass");
   p.cg = ctx.Vector3(node, "cg", Vec3::Zero());
   p.inertia = ctx.Vector3(node, "inertia");
@@ -73,7 +91,96 @@ void ReadSuspension(const YAML::Node& n, ParseContext& ctx, const char* key, Sus
   s.stabilizer_damping = ctx.Double(node, "stabilizer_damping", 0.0);
 }
 
+// reads the ladder frame's parameters (frame map of the truck)
+void ReadFrame(const YAML::Node& n, ParseContext& ctx, TruckData& d) {
+  const YAML::Node& node = n["frame"];
+  ctx.SetEntity("truck frame");
+  if (!node) ctx.Fail(n, "missing 'frame'");
+  ctx.CheckKeys(node, {"mass", "front_x", "length", "half_spacing", "web_height", "flange_width", "thickness",
+                       "bottom_z", "cross_members", "cross_member_thickness", "element_size", "E", "nu", "rho", "spider_radius", "note"});
+  LadderFrameData& f = d.ladder;
+  f.total_mass = ctx.Positive(node, "mass");
+  f.front_x = ctx.Double(node, "front_x", f.front_x);
+  f.length = ctx.Double(node, "length", f.length);
+  f.half_spacing = ctx.Double(node, "half_spacing", f.half_spacing);
+  f.web_height = ctx.Double(node, "web_height", f.web_height);
+  f.flange_width = ctx.Double(node, "flange_width", f.flange_width);
+  f.thickness = ctx.Double(node, "thickness", f.thickness);
+  f.bottom_z = ctx.Double(node, "bottom_z", f.bottom_z);
+  f.cross_member_thickness = ctx.Double(node, "cross_member_thickness", f.cross_member_thickness);
+  f.element_size = ctx.Double(node, "element_size", f.element_size);
+  f.E = ctx.Double(node, "E", f.E);
+  f.nu = ctx.Double(node, "nu", f.nu);
+  f.rho = ctx.Double(node, "rho", f.rho);
+  f.spider_radius = ctx.Double(node, "spider_radius", f.spider_radius);
+  if (const YAML::Node c = node["cross_members"]) {
+    if (!c.IsSequence() || c.size() < 2) ctx.Fail(c, "expected 'cross_members' as a list of at least two x [m]");
+    f.cross_members.clear();
+    for (const YAML::Node& v : c) f.cross_members.push_back(ctx.Number(v, "cross member x"));
+  }
+  ctx.Guard(node, [&] { SetFrameMesh(d); });
+}
+
+// static wheel-centre heights front, rear [m] from the tire deflections
+std::array<double, 2> WheelCentreHeights(const TruckData& d, double g) {
+  const std::array<double, 2> loads = StaticAxleLoads(d, g);
+  return {d.front_tire.unloaded_radius - 0.5 * loads[0] / (d.front_tire.count * d.front_tire.vertical_stiffness),
+          d.rear_tire.unloaded_radius - 0.5 * loads[1] / (d.rear_tire.count * d.rear_tire.vertical_stiffness)};
+}
+
+// left kingpin on the axle at wheel-centre height zf
+Vec3 LeftKingpin(const TruckData& d, double zf) { return Vec3(0, 0.5 * d.front_track - d.kingpin_offset, zf); }
+
+// pitman arm pivot (the steering gear's output shaft) on the frame; see BuildTruck
+Vec3 SteeringGearPivot(const TruckData& d, double zf) {
+  const double a = d.pitman_arm_length, hz = 0.15;
+  return LeftKingpin(d, zf) + Vec3(d.drag_link_length, -a, hz + a);
+}
+
+// mount points of a part: per station left then right, at the rails' top corners
+std::vector<Vec3> MountPoints(const TruckData& d, const MountData& mounts) {
+  std::vector<Vec3> p;
+  const double top = d.ladder.bottom_z + d.ladder.web_height;
+  for (double x : mounts.x)
+    for (double side : {1.0, -1.0}) p.emplace_back(x, side * d.ladder.half_spacing, top);
+  return p;
+}
+
 }  // namespace
+
+void SetFrameMesh(TruckData& d) {
+  auto mesh = std::make_shared<fe::Mesh>(GenerateLadderFrame(d.ladder, {}).mesh);
+  const MassProperties3 mp = ShellMassProperties(*mesh);
+  d.frame.mass = mp.mass;
+  d.frame.cg = mp.cg;
+  d.frame.inertia = mp.inertia.diagonal();
+  d.frame.products = Vec3(mp.inertia(0, 1), mp.inertia(0, 2), mp.inertia(1, 2));
+  d.frame_mesh = std::move(mesh);
+}
+
+std::vector<FrameAttachment> FrameAttachments(const TruckData& d, double g) {
+  const std::array<double, 2> zw = WheelCentreHeights(d, g);
+  const double xr = -d.wheelbase;
+  std::vector<FrameAttachment> a;
+  for (int axle = 0; axle < 2; ++axle) {
+    const SuspensionData& s = axle == 0 ? d.front : d.rear;
+    const double x = axle == 0 ? 0.0 : xr;
+    const std::string side = axle == 0 ? "front" : "rear";
+    a.push_back({"spring_seat_" + side + "_left", Vec3(x, s.spring_half_spacing, zw[axle] + s.spring_length)});
+    a.push_back({"spring_seat_" + side + "_right", Vec3(x, -s.spring_half_spacing, zw[axle] + s.spring_length)});
+    a.push_back({"arm_pivot_" + side, Vec3(x + s.arm_length, 0, zw[axle])});
+  }
+  a.push_back({"steering_gear", SteeringGearPivot(d, zw[0])});
+  for (const auto& [name, mounts] : {std::pair<std::string, const MountData*>{"cab", &d.cab_mounts},
+                                     {"powertrain", &d.powertrain_mounts},
+                                     {"cargo", &d.cargo_mounts}}) {
+    const std::vector<Vec3> p = MountPoints(d, *mounts);
+    for (size_t k = 0; k < p.size(); ++k)
+      a.push_back({name + "_mount_" + std::to_string(k / 2 + 1) + (k % 2 == 0 ? "_left" : "_right"), p[k]});
+  }
+  a.push_back({"tow_hitch", Vec3(d.ladder.front_x - d.ladder.length, 0, d.ladder.bottom_z + 0.5 * d.ladder.web_height)});
+  return a;
+}
 
 std::array<double, 2> StaticAxleLoads(const TruckData& d, double g) {
   const double L = d.wheelbase;
@@ -98,29 +205,67 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
   const std::array<double, 2> loads = StaticAxleLoads(d, g);
   TruckHandles h;
   // static wheel-centre heights from the tire deflections
-  const double zf = d.front_tire.unloaded_radius - 0.5 * loads[0] / (d.front_tire.count * d.front_tire.vertical_stiffness);
-  const double zr = d.rear_tire.unloaded_radius - 0.5 * loads[1] / (d.rear_tire.count * d.rear_tire.vertical_stiffness);
+  const std::array<double, 2> zw = WheelCentreHeights(d, g);
+  const double zf = zw[0], zr = zw[1];
   h.wheel_centre_z = {zf, zr};
   const double xr = -d.wheelbase;
   const Vec3 zero = Vec3::Zero();
   const Mat3 I = Mat3::Identity();
 
-  // sprung parts
-  const int frame = AddPart(m, "frame", d.frame, d.frame.cg, speed, zero);
+  // the frame: rigid with the generated frame's mass properties, or elastic
+  int frame = -1;
+  if (d.elastic_frame) {
+    FlexibleBodyData fd;
+    fd.reduced = d.elastic_frame;
+    fd.v_WB = Vec3(speed, 0, 0);
+    frame = m.AddBody(std::make_unique<FlexibleBody>("frame", fd));
+    h.elastic = true;
+  } else {
+    frame = AddPart(m, "frame", d.frame, d.frame.cg, speed, zero);
+  }
   h.frame_body = frame;
+  // a frame marker at an attachment point: on the elastic frame carried by
+  // the nearest (interface) node, offset to the point
+  auto frame_marker = [&](const std::string& name, const Vec3& p, const Mat3& R) {
+    if (!d.elastic_frame) return m.AddMarker(frame, name, p, R);
+    const int node = NearestNode(d.elastic_frame->mesh, p);
+    const auto& in = d.elastic_frame->interface_nodes;
+    if (std::find(in.begin(), in.end(), node) == in.end())
+      throw InputError("frame attachment '" + name + "' is not on an interface node of the elastic frame",
+                       {"", 0, "truck frame"});
+    return m.AddMarker(frame, name, p - d.elastic_frame->mesh.nodes[static_cast<size_t>(node)].x, R, node);
+  };
   h.frame_ref = m.AddMarker(frame, "ref", d.frame.cg, I);
   h.front_axle_ref = m.AddMarker(frame, "front_axle_ref", Vec3(0, 0, 0), I);
   h.rear_axle_ref = m.AddMarker(frame, "rear_axle_ref", Vec3(xr, 0, 0), I);
   const double hb = 0.5 * d.gauge_width;
   h.gauge = {m.AddMarker(frame, "gauge_fl", Vec3(0, hb, zf), I), m.AddMarker(frame, "gauge_fr", Vec3(0, -hb, zf), I),
              m.AddMarker(frame, "gauge_rl", Vec3(xr, hb, zr), I), m.AddMarker(frame, "gauge_rr", Vec3(xr, -hb, zr), I)};
-  for (const auto& [name, part] : {std::pair<const char*, const PartData*>{"cab", &d.cab},
-                                   {"powertrain", &d.powertrain},
-                                   {"cargo", &d.cargo}}) {
+  // cab, powertrain, cargo on bushings at the mount points, preloaded by
+  // their weight shared by the lever rule along x
+  for (const auto& [name, part, mounts] :
+       {std::tuple<const char*, const PartData*, const MountData*>{"cab", &d.cab, &d.cab_mounts},
+        {"powertrain", &d.powertrain, &d.powertrain_mounts},
+        {"cargo", &d.cargo, &d.cargo_mounts}}) {
     const int b = AddPart(m, name, *part, part->cg, speed, zero);
-    m.AddJoint(std::make_unique<FixedJoint>(std::string(name) + "_mount"),
-               m.AddMarker(frame, std::string(name) + "_mount", part->cg, I), m.AddMarker(b, "mount", part->cg, I));
+    const std::vector<Vec3> pts = MountPoints(d, *mounts);
+    const double n = static_cast<double>(pts.size());
+    double xm = 0, sxx = 0;
+    for (const Vec3& p : pts) xm += p.x() / n;
+    for (const Vec3& p : pts) sxx += (p.x() - xm) * (p.x() - xm);
+    for (size_t k = 0; k < pts.size(); ++k) {
+      const std::string mname = std::string(name) + "_mount_" + std::to_string(k / 2 + 1) + (k % 2 == 0 ? "_left" : "_right");
+      const double share = 1.0 / n + (sxx > 0 ? (part->cg.x() - xm) * (pts[k].x() - xm) / sxx : 0.0);
+      BushingData bd;
+      bd.translational_stiffness = mounts->stiffness;
+      bd.translational_damping = mounts->damping;
+      bd.preload_force = Vec3(0, 0, share * part->mass * g);
+      m.AddForce(std::make_unique<Bushing>(mname, bd), frame_marker(mname, pts[k], I),
+                 m.AddMarker(b, "mount_" + std::to_string(k + 1), pts[k], I));
+    }
   }
+  // the rear tow hitch: an attachment point without a load in this model
+  frame_marker("tow_hitch", Vec3(d.ladder.front_x - d.ladder.length, 0, d.ladder.bottom_z + 0.5 * d.ladder.web_height), I);
 
   // one axle: arm, axle, suspension springs, stabilizer; returns the axle body
   auto axle = [&](bool front) {
@@ -131,7 +276,7 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
     const int arm = AddPart(m, side + "_arm", d.arm, Vec3(x + 0.5 * s.arm_length, 0, z), speed, zero);
     const int ax = AddPart(m, side + "_axle", ap, Vec3(x, 0, z), speed, zero);
     const Vec3 pivot(x + s.arm_length, 0, z), centre(x, 0, z);
-    m.AddJoint(std::make_unique<RevoluteJoint>(side + "_arm_pivot"), m.AddMarker(frame, side + "_arm_pivot", pivot, AxisY()),
+    m.AddJoint(std::make_unique<RevoluteJoint>(side + "_arm_pivot"), frame_marker("arm_pivot_" + side, pivot, AxisY()),
                m.AddMarker(arm, "pivot", pivot, AxisY()));
     const int ri = m.AddMarker(arm, "roll", centre, AxisX()), rj = m.AddMarker(ax, "roll", centre, AxisX());
     m.AddJoint(std::make_unique<RevoluteJoint>(side + "_axle_roll"), ri, rj);
@@ -150,7 +295,7 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
       law.damping = s.spring_damping;
       law.preload = -spring_load;
       m.AddForce(std::make_unique<SpringDamper>(side + "_spring_" + lr, law),
-                 m.AddMarker(frame, side + "_spring_" + lr, Vec3(x, y, z + s.spring_length), I),
+                 frame_marker("spring_seat_" + side + "_" + lr, Vec3(x, y, z + s.spring_length), I),
                  m.AddMarker(ax, "spring_" + lr, Vec3(x, y, z), I));
     }
     return ax;
@@ -176,7 +321,7 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
   for (int k = 0; k < 2; ++k) {
     const double sgn = k == 0 ? 1.0 : -1.0;
     const std::string name = k == 0 ? "knuckle_left" : "knuckle_right";
-    kingpin[k] = Vec3(0, sgn * (0.5 * d.front_track - d.kingpin_offset), zf);
+    kingpin[k] = Vec3(1, sgn, 1).cwiseProduct(LeftKingpin(d, zf));
     const Vec3 wc(0, sgn * 0.5 * d.front_track, zf);
     knuckle[k] = AddPart(m, name, d.knuckle, Vec3(0, sgn * (0.5 * d.front_track - 0.5 * d.kingpin_offset), zf),
                          speed, zero);
@@ -202,13 +347,13 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
     const double a = d.pitman_arm_length, hz = 0.15;
     const Vec3 arm_end = kingpin[0] + Vec3(0, -a, hz);
     const Vec3 ball = arm_end + Vec3(d.drag_link_length, 0, 0);
-    const Vec3 pivot = ball + Vec3(0, 0, a);
+    const Vec3 pivot = SteeringGearPivot(d, zf);
     PartData pitman;
     pitman.mass = d.pitman_arm_mass;
     pitman.inertia = Vec3(0.03, 0.03, 0.01);
     const int pb = AddPart(m, "pitman_arm", pitman, 0.5 * (ball + pivot), speed, zero);
     const int pj = m.AddJoint(std::make_unique<RevoluteJoint>("steering_gear"),
-                              m.AddMarker(frame, "steering_gear", pivot, AxisY()), m.AddMarker(pb, "gear", pivot, AxisY()));
+                              frame_marker("steering_gear", pivot, AxisY()), m.AddMarker(pb, "gear", pivot, AxisY()));
     m.AddJoint(std::make_unique<DistanceJoint>("drag_link", (ball - arm_end).norm()), m.AddMarker(pb, "ball", ball, I),
                m.AddMarker(knuckle[0], "steering_arm", arm_end, I));
     // one-piece tie rod between trapezoid arms aimed at the rear-axle centre
@@ -290,10 +435,9 @@ TruckData ParseTruck(const YAML::Node& n, ParseContext& ctx, const std::string& 
   d.rear_track = ctx.Positive(n, "rear_track");
   d.kingpin_offset = ctx.Double(n, "kingpin_offset", d.kingpin_offset);
   d.gauge_width = ctx.Positive(n, "gauge_width");
-  ReadPart(n, ctx, "frame", d.frame);
-  ReadPart(n, ctx, "cab", d.cab);
-  ReadPart(n, ctx, "powertrain", d.powertrain);
-  ReadPart(n, ctx, "cargo", d.cargo);
+  ReadPart(n, ctx, "cab", d.cab, &d.cab_mounts);
+  ReadPart(n, ctx, "powertrain", d.powertrain, &d.powertrain_mounts);
+  ReadPart(n, ctx, "cargo", d.cargo, &d.cargo_mounts);
   ReadPart(n, ctx, "front_axle", d.front_axle);
   ReadPart(n, ctx, "rear_axle", d.rear_axle);
   ReadPart(n, ctx, "knuckle", d.knuckle);
@@ -321,6 +465,7 @@ TruckData ParseTruck(const YAML::Node& n, ParseContext& ctx, const std::string& 
   const std::filesystem::path base(dir);
   d.front_tire = LoadTireFile((base / ctx.String(tires, "front")).string());
   d.rear_tire = LoadTireFile((base / ctx.String(tires, "rear")).string());
+  ReadFrame(n, ctx, d);
   return d;
 }
 

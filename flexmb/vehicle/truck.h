@@ -1,7 +1,9 @@
 #pragma once
 /// \file truck.h
-/// The two-axle (4x2) truck template: a rigid ladder frame with cab,
-/// powertrain and cargo fixed to it, rigid front and rear axles on
+/// The two-axle (4x2) truck template: a ladder frame (rigid, or elastic by a
+/// Craig-Bampton reduced body of the generated shell frame, ladder_frame.h)
+/// with cab, powertrain and cargo on stiff mounts (bushings) at the frame's
+/// interface points, rigid front and rear axles on
 /// leaf-spring suspensions (vertical spring-dampers, a longitudinal arm,
 /// a stabilizer as a roll spring), steered front knuckles, wheels on
 /// revolute joints with tires, and a drive torque on the rear wheels.
@@ -11,10 +13,13 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <yaml-cpp/yaml.h>
 
 #include "flexmb/model/model.h"
+#include "flexmb/reduction/reduced_body.h"
+#include "flexmb/vehicle/ladder_frame.h"
 #include "flexmb/vehicle/tire.h"
 
 namespace flexmb {
@@ -28,6 +33,20 @@ struct PartData {
   double mass = 1.0;              ///< [kg]
   Vec3 cg = Vec3::Zero();         ///< centre of mass, vehicle frame [m] (wheels, axles: only x used for axles)
   Vec3 inertia = Vec3::Ones();    ///< principal moments about the centre of mass, vehicle axes [kg m^2]
+  /// Off-diagonal entries of the inertia tensor about the centre of mass
+  /// (xy, xz, yz), vehicle axes [kg m^2]; 0 for principal axes along the
+  /// vehicle axes.
+  Vec3 products = Vec3::Zero();
+};
+
+/// Mounts of a rigid part (cab, powertrain, cargo) on the frame: one linear
+/// bushing (translational stiffness and damping, vehicle axes) on each rail
+/// at every station `x`, at the rail's top web-flange corner, preloaded by
+/// the part's static weight shared by the lever rule.
+struct MountData {
+  std::vector<double> x;           ///< stations along the frame [m]
+  Vec3 stiffness = Vec3::Constant(5e6);  ///< per mount [N/m]
+  Vec3 damping = Vec3::Constant(2e4);    ///< per mount [N s/m]
 };
 
 /// One leaf-spring axle suspension.
@@ -48,7 +67,17 @@ struct TruckData {
   double front_track = 2.0;        ///< [m]
   double rear_track = 1.85;        ///< centre of the twin tires [m]
   double kingpin_offset = 0.15;    ///< kingpin lateral distance inboard of the wheel centre [m]
-  PartData frame, cab, powertrain, cargo;       ///< sprung parts (cab, powertrain, cargo fixed to the frame)
+  /// Sprung parts. The frame's mass properties are those of the generated
+  /// shell frame (ShellMassProperties of `frame_mesh`, non-structural mass
+  /// included), for the rigid and the elastic frame alike.
+  PartData frame, cab, powertrain, cargo;
+  LadderFrameData ladder;          ///< geometry and mass of the ladder frame
+  MountData cab_mounts, powertrain_mounts, cargo_mounts;  ///< mounts of the parts on the frame
+  std::shared_ptr<const fe::Mesh> frame_mesh;  ///< the generated frame (set by ParseTruck / SetFrameMesh)
+  /// When set, the frame is a FlexibleBody of this reduced body (its basic
+  /// frame is the vehicle frame; its interface nodes include the nodes
+  /// nearest to FrameAttachments); otherwise a rigid body.
+  std::shared_ptr<const reduction::ReducedBody> elastic_frame;
   PartData front_axle, rear_axle, knuckle, front_wheel, rear_wheel, arm;  ///< unsprung parts
   SuspensionData front, rear;      ///< suspensions
   double steering_stiffness = 4e5;  ///< knuckle servo stiffness about the kingpin [N m/rad]
@@ -68,6 +97,17 @@ struct TruckData {
   double gauge_width = 2.5;        ///< overall width of the vehicle for the gauge points [m]
 };
 
+/// Generates the ladder frame of `d.ladder` (ladder_frame.h), stores it in
+/// d.frame_mesh and sets d.frame's mass properties from it.
+void SetFrameMesh(TruckData& d);
+
+/// The 26 named attachment points of the frame, vehicle frame [m]: spring
+/// seats (4), arm pivots (2), steering gear (1), cab mounts (4 by default),
+/// powertrain mounts (4), cargo mounts (10) and the rear tow hitch (1), at
+/// the static ride height. The elastic frame's interface nodes are the mesh
+/// nodes nearest to them (NearestNode).
+std::vector<FrameAttachment> FrameAttachments(const TruckData& d, double g = 9.81);
+
 /// Static axle loads [N] (front, rear) by the lever rule over all parts'
 /// weights: the independent hand computation used to preload the springs
 /// and by the static check.
@@ -75,7 +115,8 @@ std::array<double, 2> StaticAxleLoads(const TruckData& d, double g);
 
 /// Indices of the entities of a built truck.
 struct TruckHandles {
-  int frame_body = -1;                 ///< the frame
+  int frame_body = -1;                 ///< the frame (RigidBody or FlexibleBody)
+  bool elastic = false;                ///< the frame is a FlexibleBody
   int frame_ref = -1;                  ///< frame marker at the frame's centre of mass, vehicle axes
   int front_axle_ref = -1, rear_axle_ref = -1;  ///< frame markers above the axle centres at road level
   std::array<int, 4> gauge{};          ///< frame gauge markers: front-left, front-right, rear-left, rear-right

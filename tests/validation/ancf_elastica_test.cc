@@ -1,11 +1,13 @@
 // Validation of the planar ANCF beam under large deflection: Mattiasson's
 // elastica, a cantilever with a tip load of fixed direction normal to its
 // axis, PL^2/EI = 1..10 (docs/validation.md, "ANCF beams"). Solved by the
-// load-stepping Newton solver of flexmb/ancf/ancf_statics.
+// load-stepping Newton solver of flexmb/ancf/ancf_statics. The same for the
+// 3D ANCF cable body bent in a plane not aligned with the world planes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "flexmb/ancf/ancf_statics.h"
 
@@ -72,6 +74,42 @@ TEST(AncfElastica, FullAxialIntegrationLocks) {
   full.axial = 5;
   full.bending = 4;
   EXPECT_GT(MaxError(8, full), 10.0 * MaxError(8, {}));
+}
+
+TEST(AncfElastica, Cable3dInASkewPlane) {
+  // the 3D cable body: axis along x, tip load along n = (0, 0.6, -0.8);
+  // clamp holds r_0 and the y, z components of r'_0 (its direction)
+  const double L = 2.0, h = L / 1000.0;
+  const int n_el = 16;
+  AncfCable3dData d;
+  d.length = L;
+  d.elements = n_el;
+  d.section.E = 2.1e11;
+  d.section.A = h * h;
+  d.section.I = h * h * h * h / 12.0;
+  d.section.rho = 7850.0;
+  const AncfCable3dBody cable("cantilever", d);
+  const double EI = d.section.E * d.section.I;
+  const Vec3 n(0.0, 0.6, -0.8), b = Vec3::UnitX().cross(n);
+  VecX q(cable.nq()), v(cable.nv());
+  cable.InitialCoordinates(q.data(), v.data());
+  const int tip = 6 * n_el;
+  double err = 0.0, off_plane = 0.0;
+  for (int k = 1; k <= 10; ++k) {
+    VecX load = VecX::Zero(cable.nv());
+    load.segment<3>(tip) = (k * EI / (L * L)) * n;
+    AncfStaticsSettings s;
+    s.load_steps = 2;
+    s.initial_load_factor = (k - 1.0) / k;
+    SolveAncfStatics(cable, {0, 1, 2, 4, 5}, load, Vec3::Zero(), q, s);
+    const Vec3 r = q.segment<3>(tip);
+    const double w = r.dot(n) / L, u = 1.0 - r.x() / L;
+    err = std::max({err, std::abs(w - kRefW[k - 1]), std::abs(u - kRefU[k - 1])});
+    off_plane = std::max(off_plane, std::abs(r.dot(b)) / L);
+  }
+  std::printf("3D cable elastica, 16 elements: largest error %.3e L, out of plane %.3e L\n", err, off_plane);
+  EXPECT_LT(err, 2e-5);
+  EXPECT_LT(off_plane, 1e-10);
 }
 
 }  // namespace

@@ -3,10 +3,13 @@
 // point_force, both from the model file, solved by the engine's
 // SolveStatics (solver/statics.h) with the load factor as time, against
 // Mattiasson's elastica (docs/validation.md, "ANCF beams") and against the
-// direct solver SolveAncfStatics on the same beam.
+// direct solver SolveAncfStatics on the same beam. The same for the 3D
+// cable body (its clamp by a fixed joint has one redundant equation: the
+// spin about the tangent, which the cable does not have).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "flexmb/ancf/ancf_statics.h"
@@ -71,6 +74,57 @@ TEST(AncfEngineStatics, ClampedCantileverThroughJointsAndForces) {
   load(4 * 8 + 1) = -2.0;
   SolveAncfStatics(beam, {0, 1, 3}, load, Vec3::Zero(), qd);
   for (int j = 0; j < beam.nq(); ++j) EXPECT_NEAR(q[j], qd(j), 1e-8) << j;
+}
+
+TEST(AncfEngineStatics, ClampedCable3dThroughJointsAndForces) {
+  // the cantilever above as a 3D cable along x, tip load 2 N along
+  // (0, 0.6, -0.8) reached at t = 1
+  const std::string text =
+      "name: cantilever3d\n"
+      "gravity: [0, 0, 0]\n"
+      "ground:\n"
+      "  markers:\n"
+      "    - {name: clamp, position: [0, 0, 0]}\n"
+      "bodies:\n"
+      "  - name: cable\n"
+      "    type: ancf_cable\n"
+      "    length: 1.0\n"
+      "    elements: 8\n"
+      "    section: {area: 1.0e-2, inertia: 8.333333333333333e-6}\n"
+      "    material: {E: 1.2e5, rho: 1000}\n"
+      "    markers:\n"
+      "      - {name: root, end: start}\n"
+      "      - {name: tip, end: end}\n"
+      "joints:\n"
+      "  - {name: clamp, type: fixed, i: ground.clamp, j: cable.root}\n"
+      "forces:\n"
+      "  - {name: load, type: point_force, marker: cable.tip, force: [0, {expression: \"1.2*t\"}, "
+      "{expression: \"-1.6*t\"}]}\n";
+  auto model = LoadModelString(text, "cantilever3d.yaml");
+  State s = model->InitialState();
+  Workspace ws;
+  const ConstraintReport rep = MakeConsistent(*model, s, ws);
+  EXPECT_EQ(rep.redundant.size(), 1u);
+  for (int k = 1; k <= 10; ++k) {
+    s.t = 0.1 * k;
+    SolveStatics(*model, s, ws);
+  }
+  const auto& cable = dynamic_cast<const AncfCable3dBody&>(*model->bodies[model->FindBody("cable")]);
+  const double* q = s.q.data() + cable.q_offset;
+  const Vec3 tip = cable.PositionAt(q, 1.0);
+  const Vec3 n(0.0, 0.6, -0.8);
+  std::printf("3D cable clamped by a fixed joint: w/L %.5f, u/L %.5f\n", tip.dot(n), 1.0 - tip.x());
+  // as the planar beam: w/L = 0.49420, u/L = 0.16018 (Mattiasson, inextensible: 0.49346, 0.16064)
+  EXPECT_NEAR(tip.dot(n), 0.49346, 2e-3);
+  EXPECT_NEAR(1.0 - tip.x(), 0.16064, 2e-3);
+  EXPECT_NEAR(tip.dot(Vec3::UnitX().cross(n)), 0.0, 1e-10);
+  // the direct solver, holding r_0 and the direction of r'_0 (y', z')
+  VecX qd(cable.nq()), vd(cable.nv());
+  cable.InitialCoordinates(qd.data(), vd.data());
+  VecX load = VecX::Zero(cable.nv());
+  load.segment<3>(6 * 8) = 2.0 * n;
+  SolveAncfStatics(cable, {0, 1, 2, 4, 5}, load, Vec3::Zero(), qd);
+  for (int j = 0; j < cable.nq(); ++j) EXPECT_NEAR(q[j], qd(j), 1e-8) << j;
 }
 
 }  // namespace

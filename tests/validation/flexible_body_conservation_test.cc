@@ -16,7 +16,7 @@
 
 #include "flexmb/bodies/flexible_body.h"
 #include "flexmb/solver/simulator.h"
-#include "tests/unit/bodies/flexible_test_bodies.h"
+#include "tests/validation/flexible_body_fixture.h"
 
 namespace flexmb {
 namespace {
@@ -40,9 +40,7 @@ Drift Simulate(const std::shared_ptr<reduction::ReducedBody>& reduced, double dt
   d.w0(n - 1) = -0.005;
   d.damping = MatX::Zero(n, n);  // undamped
   const int b = m.AddBody(std::make_unique<FlexibleBody>("bar", d));
-  m.solver.dt = dt;
-  m.solver.rho_inf = 1.0;
-  m.solver.newton_tol = 1e-12;
+  testing::UseReferenceIntegrator(m, dt);
   m.Finalize();
   Simulator sim(m);
   sim.Initialize();

@@ -30,9 +30,8 @@
 #include "flexmb/forces/point_force.h"
 #include "flexmb/joints/fixed.h"
 #include "flexmb/math/scalar_function.h"
-#include "flexmb/reduction/craig_bampton.h"
 #include "flexmb/solver/simulator.h"
-#include "tests/unit/fe/fe_test_models.h"
+#include "tests/validation/flexible_body_fixture.h"
 
 namespace flexmb {
 namespace {
@@ -40,16 +39,7 @@ namespace {
 constexpr int kElements = 4;
 constexpr double kLength = 1.0, kRadius = 0.01, kE = 2.1e11, kRho = 7850.0;
 
-fe::FeModel Cantilever() {
-  fe::FeModel model;
-  fe::Mesh& mesh = model.mesh;
-  mesh.source = "cantilever.bdf";
-  const int mat = fe::testing::AddMaterial(mesh, kE, 0.3, kRho);
-  const int sec = fe::testing::AddRoundBar(mesh, mat, kRadius);
-  for (int k = 0; k <= kElements; ++k) fe::testing::AddNode(mesh, fe::Vec3(kLength * k / kElements, 0, 0));
-  for (int k = 0; k < kElements; ++k) fe::testing::AddBeam(mesh, sec, k, k + 1, fe::Vec3(0, 1, 0));
-  return model;
-}
+fe::FeModel Cantilever() { return testing::RoundBeamAlongX(kElements, kLength, kRadius, kE, kRho); }
 
 // c^T u at t = k h, k = 0..steps, for M u'' + K u = f from rest, Newmark
 // average acceleration (beta = 1/4, gamma = 1/2)
@@ -98,9 +88,7 @@ std::vector<double> Multibody(const std::shared_ptr<reduction::ReducedBody>& red
                  "load", std::array<std::shared_ptr<const ScalarFunction>, 3>{zero, zero, std::make_shared<ConstantFunction>(force)},
                  LoadFrame::kWorld),
              tip, -1);
-  m.solver.dt = h;
-  m.solver.rho_inf = 1.0;
-  m.solver.newton_tol = 1e-12;
+  testing::UseReferenceIntegrator(m, h);
   m.Finalize();
   Simulator sim(m);
   sim.Initialize();
@@ -111,10 +99,7 @@ std::vector<double> Multibody(const std::shared_ptr<reduction::ReducedBody>& red
 
 TEST(FlexibleBodyLinearFe, ClampedBodyMatchesNewmarkOnTheFullModel) {
   const fe::FeModel model = Cantilever();
-  reduction::ReductionOptions o;
-  o.interface_nodes = {0, kElements};
-  o.normal_modes = 6 * (kElements - 1) - 1;  // interior DOF - 1
-  const auto reduced = std::make_shared<reduction::ReducedBody>(reduction::ReduceCraigBampton(model, o));
+  const auto reduced = testing::Reduced(model, {0, kElements}, 6 * (kElements - 1) - 1);  // interior DOF - 1
   ASSERT_EQ(reduced->invariants.n, 6 * kElements - 1);
   const double h = 1e-3;
   const int steps = 300;

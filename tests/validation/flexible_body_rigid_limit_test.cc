@@ -19,9 +19,8 @@
 #include "flexmb/bodies/rigid_body.h"
 #include "flexmb/fe/assembly.h"
 #include "flexmb/joints/spherical.h"
-#include "flexmb/reduction/craig_bampton.h"
 #include "flexmb/solver/simulator.h"
-#include "tests/unit/bodies/flexible_test_bodies.h"
+#include "tests/validation/flexible_body_fixture.h"
 
 namespace flexmb {
 namespace {
@@ -40,9 +39,7 @@ std::vector<Vec3> Simulate(std::unique_ptr<Body> body, const Vec3& pivot_B, cons
   const int tip = m.AddMarker(b, "tip", tip_B, Mat3::Identity(), node_tip);
   const int g = m.AddMarker(0, "pivot", pivot_W, Mat3::Identity());
   m.AddJoint(std::make_unique<SphericalJoint>("pivot"), pivot, g);
-  m.solver.dt = h;
-  m.solver.rho_inf = 1.0;
-  m.solver.newton_tol = 1e-12;
+  testing::UseReferenceIntegrator(m, h);
   m.Finalize();
   Simulator sim(m);
   sim.Initialize();
@@ -84,10 +81,7 @@ double MaxDifference(const fe::FeModel& fe_model, const std::shared_ptr<reductio
 
 TEST(FlexibleBodyRigidLimit, BodyWithoutModesMovesAsTheRigidBody) {
   const fe::FeModel model = testing::BentBar(kPerLeg);
-  reduction::ReductionOptions o;
-  o.interface_nodes = {0};
-  o.normal_modes = 0;
-  const auto reduced = std::make_shared<reduction::ReducedBody>(reduction::ReduceCraigBampton(model, o));
+  const auto reduced = testing::Reduced(model, {0}, 0);
   ASSERT_EQ(reduced->invariants.n, 0);
   const double t_end = 1.0;
   double travel = 0.0;

@@ -197,4 +197,29 @@ void Beam2SectionForces(const ElementInput& in, MatX& S, Eigen::Matrix3d& axes) 
   axes = b.R;
 }
 
+void Beam2GeometricStiffness(const ElementInput& in, double N, MatX& KG) {
+  const BeamLocal b = Setup(in);
+  const double L = b.L;
+  // bending in one plane, dofs (v_a, v'_a, v_b, v'_b)
+  Eigen::Matrix4d kb;
+  kb << 36.0, 3.0 * L, -36.0, 3.0 * L, 3.0 * L, 4.0 * L * L, -3.0 * L, -L * L, -36.0, -3.0 * L, 36.0, -3.0 * L,
+      3.0 * L, -L * L, -3.0 * L, 4.0 * L * L;
+  kb *= N / (30.0 * L);
+  Mat12 kg = Mat12::Zero();
+  // x-y plane: v = uy, v' = rz; x-z plane: w = uz, w' = -ry
+  const int xy[4] = {1, 5, 7, 11}, xz[4] = {2, 4, 8, 10};
+  const double sz[4] = {1.0, -1.0, 1.0, -1.0};
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 4; ++j) {
+      kg(xy[i], xy[j]) += kb(i, j);
+      kg(xz[i], xz[j]) += sz[i] * sz[j] * kb(i, j);
+    }
+  }
+  // twist: Wagner term of the axial stress about the centroid
+  const double kt = N * (b.sec->Iy + b.sec->Iz) / (b.sec->A * L);
+  kg(3, 3) += kt, kg(9, 9) += kt, kg(3, 9) -= kt, kg(9, 3) -= kt;
+  KG = b.t.transpose() * kg * b.t;
+  KG = 0.5 * (KG + KG.transpose()).eval();
+}
+
 }  // namespace flexmb::fe

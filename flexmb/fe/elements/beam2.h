@@ -49,4 +49,15 @@ void Beam2Matrices(const ElementInput& in, MatX& K, MatX& M);
 /// forces vary linearly in between). Throws InputError as Beam2Matrices.
 void Beam2SectionForces(const ElementInput& in, MatX& S, Eigen::Matrix3d& axes);
 
+/// Geometric (initial-stress) stiffness of a 2-node beam under a constant
+/// axial force N [N] (> 0 tension): fills KG (12 x 12, basic frame, node by
+/// node ux uy uz rx ry rz, as K) [N/m, N, N m]. It is the second variation of
+/// N/2 int (v'^2 + w'^2) dx + N (Iy + Iz) / (2 A) int phi'^2 dx with the cubic
+/// Hermite (Euler-Bernoulli) bending fields in both planes (v' = rz, w' = -ry
+/// in the element frame) and the linear twist phi (Przemieniecki's matrix);
+/// the shear flexibility and Iyz are not taken into account. The end offsets
+/// act as for K (rigid links). K - P KG(1) is singular at the buckling load
+/// P of the element chain. Throws InputError as Beam2Matrices.
+void Beam2GeometricStiffness(const ElementInput& in, double N, MatX& KG);
+
 }  // namespace flexmb::fe

@@ -7,23 +7,22 @@
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <string>
 
 #include "flexmb/common/error.h"
+#include "tests/unit/ancf/ancf_test_util.h"
 
 namespace flexmb::ancf {
 namespace {
+
+using test_util::ExpectForceIsMinusEnergyGradient;
+using test_util::ExpectTangentsMatchCentralDifferences;
 
 using Vec = AncfBeam2d::Vec;
 using Mat = AncfBeam2d::Mat;
 
 BeamSection Section(double damping = 0.0) {
-  BeamSection s;
-  s.E = 2.0e9;
-  s.A = 1.0e-3;
-  s.I = 3.0e-7;
-  s.rho = 7800.0;
-  s.damping = damping;
-  return s;
+  return test_util::MakeSection(2.0e9, 1.0e-3, 3.0e-7, 7800.0, damping);
 }
 
 // a deformed, stretched and bent state
@@ -33,34 +32,13 @@ Vec Deformed(const AncfBeam2d& el) {
   return e + d;
 }
 
-Vec Forces(const AncfBeam2d& el, const Vec& e, const Vec& edot) {
-  Vec Q = Vec::Zero();
-  Mat K = Mat::Zero(), C = Mat::Zero();
-  el.AddInternalForces(e, edot, Q, K, C);
-  return Q;
-}
-
 TEST(AncfBeam2d, TangentsMatchCentralDifferences) {
   for (double kappa0 : {0.0, 0.7}) {
     const AncfBeam2d el(0.9, Section(0.02), kappa0);
     const Vec e = Deformed(el);
     const Vec edot = (Vec() << 0.3, -0.1, 0.5, 0.2, -0.4, 0.6, 0.1, -0.3).finished();
-    Vec Q = Vec::Zero();
-    Mat K = Mat::Zero(), C = Mat::Zero();
-    el.AddInternalForces(e, edot, Q, K, C);
-    const double h = 1e-6;
-    Mat Kfd, Cfd;
-    for (int j = 0; j < 8; ++j) {
-      Vec ep = e, em = e, vp = edot, vm = edot;
-      ep(j) += h;
-      em(j) -= h;
-      vp(j) += h;
-      vm(j) -= h;
-      Kfd.col(j) = (Forces(el, ep, edot) - Forces(el, em, edot)) / (2 * h);
-      Cfd.col(j) = (Forces(el, e, vp) - Forces(el, e, vm)) / (2 * h);
-    }
-    EXPECT_LT((K - Kfd).norm(), 1e-6 * K.norm()) << "kappa0 " << kappa0;
-    EXPECT_LT((C - Cfd).norm(), 1e-6 * C.norm()) << "kappa0 " << kappa0;
+    SCOPED_TRACE("kappa0 " + std::to_string(kappa0));
+    ExpectTangentsMatchCentralDifferences(el, e, edot);
   }
   // without damping the tangent is the negative Hessian of the energy
   const AncfBeam2d el(0.9, Section(), 0.3);
@@ -72,17 +50,7 @@ TEST(AncfBeam2d, TangentsMatchCentralDifferences) {
 
 TEST(AncfBeam2d, ElasticForceIsMinusEnergyGradient) {
   const AncfBeam2d el(0.9, Section(), 0.4);
-  const Vec e = Deformed(el);
-  const Vec Q = Forces(el, e, Vec::Zero());
-  const double h = 1e-6;
-  Vec g;
-  for (int j = 0; j < 8; ++j) {
-    Vec ep = e, em = e;
-    ep(j) += h;
-    em(j) -= h;
-    g(j) = (el.StrainEnergy(ep) - el.StrainEnergy(em)) / (2 * h);
-  }
-  EXPECT_LT((Q + g).norm(), 1e-6 * Q.norm());
+  ExpectForceIsMinusEnergyGradient(el, Deformed(el));
 }
 
 TEST(AncfBeam2d, RigidMotionGivesNoElasticForce) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "flexmb/ancf/ancf_beam2d_body.h"
+#include "flexmb/ancf/ancf_cable3d_body.h"
 #include "flexmb/common/error.h"
 #include "flexmb/io/model_file.h"
 
@@ -102,6 +103,71 @@ TEST(AncfModelFile, BadInputNamesFileLineAndEntity) {
   }
   EXPECT_NE(ErrorOf(Replace(kModel, "{name: mid, node: 2}", "{name: mid, node: 5}"))
                 .find("node 5 does not exist"),
+            std::string::npos);
+}
+
+const char* kCable =
+    "name: rope3d\n"                                          // 1
+    "ground:\n"                                               // 2
+    "  markers:\n"                                            // 3
+    "    - {name: hook, position: [1, 2, 3]}\n"               // 4
+    "bodies:\n"                                               // 5
+    "  - name: rope\n"                                        // 6
+    "    type: ancf_cable\n"                                  // 7
+    "    start: [1, 2, 3]\n"                                  // 8
+    "    end: [3, 4, 2]\n"                                    // 9
+    "    elements: 6\n"                                       // 10
+    "    section: {area: 1.0e-4, inertia: 1.0e-9}\n"          // 11
+    "    material: {E: 1.0e10, rho: 1500}\n"                  // 12
+    "    markers:\n"                                          // 13
+    "      - {name: top, end: start}\n"                       // 14
+    "      - {name: mid, node: 3, position: [0, 0.1, 0]}\n"   // 15
+    "joints:\n"                                               // 16
+    "  - {name: pin, type: spherical, i: ground.hook, j: rope.top}\n";
+
+TEST(AncfModelFile, CableFromEndPointsWithNodeMarkers) {
+  auto model = LoadModelString(kCable, "rope3d.yaml");
+  const int b = model->FindBody("rope");
+  ASSERT_GT(b, 0);
+  const auto& rope = dynamic_cast<const AncfCable3dBody&>(*model->bodies[b]);
+  EXPECT_EQ(rope.elements(), 6);
+  EXPECT_NEAR(rope.element().length() * 6, 3.0, 1e-14);  // |(2, 2, -1)| = 3
+  const int mid = model->FindMarker("rope.mid");
+  EXPECT_EQ(model->markers[mid].node, 3);
+  VecX q(rope.nq()), v(rope.nv());
+  rope.InitialCoordinates(q.data(), v.data());
+  MarkerState ms;
+  rope.EvaluateMarker(q.data(), v.data(), model->markers[mid], ms);
+  // node 3 halfway; the offset along the reference y axis z0 x t0
+  const Vec3 t0 = Vec3(2, 2, -1) / 3.0;
+  EXPECT_LT((ms.p_WM - (Vec3(2, 3, 2.5) + 0.1 * rope.R_W0().col(1))).norm(), 1e-14);
+  EXPECT_LT((ms.R_WM.col(0) - t0).norm(), 1e-14);
+}
+
+TEST(AncfModelFile, BadCableInputNamesFileLineAndEntity) {
+  struct Case {
+    const char* from;
+    const char* to;
+    const char* where;
+    const char* entity;
+  };
+  const Case cases[] = {
+      {"{name: mid, node: 3,", "{name: mid, node: 7,", "rope.yaml:15", "marker 'rope.mid'"},
+      {"end: [3, 4, 2]", "end: [1, 2, 3]", "rope.yaml:9", "body 'rope'"},
+      {"end: [3, 4, 2]", "length: -1.0", "rope.yaml:9", "body 'rope'"},
+      {"end: [3, 4, 2]", "length: 0", "rope.yaml:9", "body 'rope'"},
+      {"elements: 6", "elements: -2", "rope.yaml:10", "body 'rope'"},
+      {"inertia: 1.0e-9", "inertia: 0", "rope.yaml:11", "body 'rope'"},
+      {"area: 1.0e-4", "area: -1.0e-4", "rope.yaml:11", "body 'rope'"},
+      {"    elements: 6\n", "    elements: 6\n    length: 3\n", "rope.yaml:9", "body 'rope'"},
+      {"end: [3, 4, 2]", "length: 2\n    direction: [0, 0, 1]\n    normal: [0, 0, 2]", "rope.yaml:", "body 'rope'"},
+  };
+  for (const Case& c : cases) {
+    const std::string what = ErrorOf(Replace(kCable, c.from, c.to));
+    EXPECT_NE(what.find(c.where), std::string::npos) << c.to << ": " << what;
+    EXPECT_NE(what.find(c.entity), std::string::npos) << c.to << ": " << what;
+  }
+  EXPECT_NE(ErrorOf(Replace(kCable, "{name: mid, node: 3,", "{name: mid, node: 7,")).find("node 7 does not exist"),
             std::string::npos);
 }
 

@@ -195,7 +195,7 @@ MarkerState Eval(const Fixture& f, const Marker& m, const VecX& q, const VecX& v
   return s;
 }
 
-Marker NodeMarker(int node) {
+Marker FlexNodeMarker(int node) {
   Marker m;
   m.name = "bar.m";
   m.body = 1;
@@ -208,7 +208,7 @@ Marker NodeMarker(int node) {
 double RotationJacobianError(double amplitude, int node) {
   const Fixture f = Make(amplitude);
   const int N = f.body->nv();
-  const Marker m = NodeMarker(node);
+  const Marker m = FlexNodeMarker(node);
   const MarkerState s = Eval(f, m, f.q, f.v);
   MatX fd(3, N);
   for (int k = 0; k < N; ++k) {
@@ -236,7 +236,7 @@ TEST(FlexibleBody, MarkerJacobianMatchesPose) {
   const Fixture f = Make(1e-2);
   const int N = f.body->nv();
   for (int node : {-1, 0, 3, 6}) {
-    const Marker m = NodeMarker(node);
+    const Marker m = FlexNodeMarker(node);
     const MarkerState s = Eval(f, m, f.q, f.v);
     MatX fd(6, N);
     for (int k = 0; k < N; ++k) {
@@ -256,7 +256,7 @@ TEST(FlexibleBody, MarkerJacobianMatchesPose) {
   }
   // in the undeformed state the rotation Jacobian is exact as well
   const Fixture u = Make(0.0);
-  const Marker m = NodeMarker(5);
+  const Marker m = FlexNodeMarker(5);
   const MarkerState s = Eval(u, m, u.q, u.v);
   for (int k = 0; k < N; ++k) {
     VecX e = VecX::Zero(N);
@@ -274,7 +274,7 @@ TEST(FlexibleBody, MarkerTangentsMatchFiniteDifferences) {
   Vec6 wrench;
   wrench << 30.0, -12.0, 7.0, 2.0, -5.0, 1.5;
   for (int node : {-1, 2, 6}) {
-    const Marker m = NodeMarker(node);
+    const Marker m = FlexNodeMarker(node);
     MatX twist(6, N), wt = MatX::Zero(N, N), fd_twist(6, N), fd_wt(N, N), fd_bias(6, 1);
     f.body->MarkerTwistTangent(f.q.data(), f.v.data(), m, twist);
     f.body->AddMarkerWrenchTangent(f.q.data(), m, wrench, wt);
@@ -300,7 +300,7 @@ TEST(FlexibleBody, MarkerTangentsMatchFiniteDifferences) {
 TEST(FlexibleBody, NodeForceIsVirtualWork) {
   // J^T wrench of a node marker: the power of the wrench on the marker twist
   const Fixture f = Make(1e-2);
-  const Marker m = NodeMarker(4);
+  const Marker m = FlexNodeMarker(4);
   const MarkerState s = Eval(f, m, f.q, f.v);
   Vec6 wrench;
   wrench << 1.0, 2.0, -3.0, 0.5, 0.1, -0.2;
@@ -320,7 +320,7 @@ TEST(FlexibleBody, BadInputNamesTheBody) {
   d.reduced = f.reduced;
   d.w0 = VecX::Zero(2);
   EXPECT_THROW(FlexibleBody("frame", d), InputError);
-  const Marker m = NodeMarker(1000);
+  const Marker m = FlexNodeMarker(1000);
   MarkerState s;
   EXPECT_THROW(f.body->EvaluateMarker(f.q.data(), f.v.data(), m, s), InputError);
 }

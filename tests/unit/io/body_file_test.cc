@@ -71,7 +71,7 @@ void ExpectSame(const std::vector<Mat3>& a, const std::vector<Mat3>& b, const st
   for (size_t i = 0; i < a.size(); ++i) ExpectSame(a[i], b[i], what + "[" + std::to_string(i) + "]");
 }
 
-void ExpectSameMesh(const fe::Mesh& a, const fe::Mesh& b) {
+void ExpectBitIdenticalMesh(const fe::Mesh& a, const fe::Mesh& b) {
   EXPECT_EQ(a.source, b.source);
   ASSERT_EQ(a.nodes.size(), b.nodes.size());
   for (size_t k = 0; k < a.nodes.size(); ++k) {
@@ -156,7 +156,7 @@ void ExpectSameTable(const StressTable& a, const StressTable& b) {
 }
 
 void ExpectSameBody(const ReducedBody& a, const ReducedBody& b) {
-  ExpectSameMesh(a.mesh, b.mesh);
+  ExpectBitIdenticalMesh(a.mesh, b.mesh);
   EXPECT_EQ(a.interface_nodes, b.interface_nodes);
   ExpectSame(a.modes, b.modes, "modes");
   ExpectSame(a.frequencies_hz, b.frequencies_hz, "frequencies_hz");
@@ -470,7 +470,7 @@ TEST(BodyFile, RoundTripOfABodyWithoutModesOrElements) {
   const std::string path = ScratchPath("empty.h5");
   WriteBody(body, path);
   const ReducedBody back = ReadBody(path);
-  ExpectSameMesh(body.mesh, back.mesh);
+  ExpectBitIdenticalMesh(body.mesh, back.mesh);
   EXPECT_EQ(back.modes.rows(), 6);
   EXPECT_EQ(back.modes.cols(), 0);
   ExpectSame(back.invariants.mvv, body.invariants.mvv, "mvv");

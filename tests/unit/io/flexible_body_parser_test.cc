@@ -47,7 +47,7 @@ const Folder& Shared() {
   return f;
 }
 
-std::string Model(const std::string& body_extra, const std::string& markers) {
+std::string ModelText(const std::string& body_extra, const std::string& markers) {
   return "gravity: [0, 0, 0]\n"
          "bodies:\n"
          "  - name: bar\n"
@@ -70,7 +70,7 @@ std::string ErrorOf(const std::string& yaml) {
 TEST(FlexibleBodyParser, LoadsBodyAndMarkers) {
   std::vector<std::string> warnings;
   const LogSink old = SetWarningSink([&](const std::string& w) { warnings.push_back(w); });
-  auto m = LoadModelFile(Shared().Write(Model("    modal_coordinates: [0.01, 0, 0, 0, 0, 0, 0, 0, 0]\n"
+  auto m = LoadModelFile(Shared().Write(ModelText("    modal_coordinates: [0.01, 0, 0, 0, 0, 0, 0, 0, 0]\n"
                                               "    damping: {rayleigh: [0.5, 0.001]}\n",
                                               "      - {name: a, node: 1}\n"
                                               "      - {name: b, node: 4, position: [0, 0, 0.1]}\n"
@@ -103,7 +103,7 @@ TEST(FlexibleBodyParser, LoadsBodyAndMarkers) {
 TEST(FlexibleBodyParser, FlexibleSensors) {
   const LogSink old = SetWarningSink([](const std::string&) {});
   auto m = LoadModelFile(Shared().Write(
-      Model("    modal_coordinates: [0.01, 0, 0, 0, 0, 0, 0, 0, -0.02]\n", "      - {name: a, node: 1}\n") +
+      ModelText("    modal_coordinates: [0.01, 0, 0, 0, 0, 0, 0, 0, -0.02]\n", "      - {name: a, node: 1}\n") +
       "sensors:\n"
       "  - {name: w, type: modal_coordinates, body: bar}\n"
       "  - {name: u, type: node_displacement, body: bar, node: 5}\n"
@@ -128,14 +128,52 @@ TEST(FlexibleBodyParser, FlexibleSensors) {
   const Vec3 ref = body.reduced().modes.block(6 * 4, 0, 3, n) * wq;  // node id 5 = index 4
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(u[k], ref(k), 1e-15);
   EXPECT_NEAR(e[0], 0.5 * wq.dot(body.reduced().stiffness * wq), 1e-12);
-  EXPECT_NE(ErrorOf(Model("", "      - {name: a, node: 1}\n") +
+  EXPECT_NE(ErrorOf(ModelText("", "      - {name: a, node: 1}\n") +
                     "sensors:\n  - {name: u, type: node_displacement, body: bar, node: 77}\n")
                 .find("node 77 does not exist"),
             std::string::npos);
 }
 
+TEST(FlexibleBodyParser, NodeAndStressSensors) {
+  const LogSink old = SetWarningSink([](const std::string&) {});
+  auto m = LoadModelFile(Shared().Write(
+      ModelText("    modal_coordinates: [0.01, 0, 0, 0, 0, 0, 0, 0, -0.02]\n", "      - {name: a, node: 1}\n") +
+      "sensors:\n"
+      "  - {name: p, type: node_position, body: bar, node: 5}\n"
+      "  - {name: v, type: node_velocity, body: bar, node: 5}\n"
+      "  - {name: s, type: element_stress, body: bar, element: 3}\n"));
+  SetWarningSink(old);
+  const auto& body = dynamic_cast<const FlexibleBody&>(*m->bodies[1]);
+  ASSERT_EQ(m->sensors.size(), 3u);
+  const State s = m->InitialState();
+  const Workspace ws;
+  double p[3], v[3], st[12];
+  m->sensors[0]->Evaluate(*m, s, ws, p);
+  m->sensors[1]->Evaluate(*m, s, ws, v);
+  m->sensors[2]->Evaluate(*m, s, ws, st);
+  const double* q = s.q.data() + body.q_offset;
+  // node id 5 = index 4, element id 3 = index 2 (the bar is beams only)
+  const Vec3 pr = body.NodePosition(q, 4), vr = body.NodeVelocity(q, s.v.data() + body.v_offset, 4);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_DOUBLE_EQ(p[k], pr(k));
+    EXPECT_DOUBLE_EQ(v[k], vr(k));
+  }
+  EXPECT_EQ(m->sensors[2]->Components()[4], "end_a_My");
+  const reduction::StressTable& t = body.reduced().stress.beam;
+  const VecX ref = t.modes.middleRows(t.Row(2, 0, 0), 12) * Eigen::Map<const VecX>(q + 7, body.modes());
+  for (int k = 0; k < 12; ++k) EXPECT_NEAR(st[k], ref(k), 1e-12 * ref.norm());
+  const std::string base = ModelText("", "      - {name: a, node: 1}\n") + "sensors:\n";
+  EXPECT_NE(ErrorOf(base + "  - {name: s, type: element_stress, body: bar, element: 40}\n").find("element 40 does not exist"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(base + "  - {name: s, type: node_stress, body: bar, node: 2}\n")
+                .find("node 2 of body 'bar' has no shell or solid element"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(base + "  - {name: s, type: node_velocity, body: bar}\n").find("missing key 'node'"),
+            std::string::npos);
+}
+
 TEST(FlexibleBodyParser, MissingNodeNamesFileLineBodyAndNode) {
-  const std::string e = ErrorOf(Model("", "      - {name: a, node: 1}\n      - {name: z, node: 99}\n"));
+  const std::string e = ErrorOf(ModelText("", "      - {name: a, node: 1}\n      - {name: z, node: 99}\n"));
   EXPECT_NE(e.find("model.yaml:10:"), std::string::npos) << e;
   EXPECT_NE(e.find("node 99 does not exist"), std::string::npos) << e;
   EXPECT_NE(e.find("'bar'"), std::string::npos) << e;
@@ -143,13 +181,13 @@ TEST(FlexibleBodyParser, MissingNodeNamesFileLineBodyAndNode) {
 }
 
 TEST(FlexibleBodyParser, BadInput) {
-  std::string yaml = Model("", "      - {name: a, node: 1}\n");
+  std::string yaml = ModelText("", "      - {name: a, node: 1}\n");
   const std::string missing = ErrorOf(yaml.replace(yaml.find("bar.h5"), 6, "nope.h5"));
   EXPECT_NE(missing.find("model.yaml:5"), std::string::npos) << missing;
   EXPECT_NE(missing.find("nope.h5"), std::string::npos) << missing;
-  const std::string len = ErrorOf(Model("    modal_coordinates: [0, 0]\n", "      - {name: a, node: 1}\n"));
+  const std::string len = ErrorOf(ModelText("    modal_coordinates: [0, 0]\n", "      - {name: a, node: 1}\n"));
   EXPECT_NE(len.find("9 numbers"), std::string::npos) << len;
-  const std::string damp = ErrorOf(Model("    damping: {rayleigh: [1]}\n", "      - {name: a, node: 1}\n"));
+  const std::string damp = ErrorOf(ModelText("    damping: {rayleigh: [1]}\n", "      - {name: a, node: 1}\n"));
   EXPECT_NE(damp.find("rayleigh"), std::string::npos) << damp;
 }
 

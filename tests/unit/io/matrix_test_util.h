@@ -12,6 +12,7 @@
 #include <cstring>
 #include <initializer_list>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "flexmb/fe/assembly.h"
@@ -34,6 +35,10 @@ inline Eigen::Matrix3d IntegerTestMatrix() {
   a << 2000, -1000, 0, -1000, 2000, 0, 0, 0, 1000;
   return a;
 }
+
+/// Position (row, column) of the k-th special value of
+/// RandomRoundTripMatrix in an n x n matrix (also stored mirrored).
+inline std::pair<int, int> RoundTripSpecialPosition(int n, int k) { return {(k * 7 + 3) % n, n - 1 - k % n}; }
 
 /// A random sparse n x n matrix for the round-trip tests of the matrix
 /// writers: diagonal `diagonal` + U(-1, 1) (scaled by 10^U(exponents) when
@@ -60,7 +65,7 @@ inline fe::SparseMat RandomRoundTripMatrix(int n, unsigned seed, bool symmetric,
   }
   int k = 0;
   for (double v : specials) {
-    const int i = (k * 7 + 3) % n, j = n - 1 - k % n;
+    const auto [i, j] = RoundTripSpecialPosition(n, k);
     ++k;
     t.emplace_back(i, j, v);
     if (i != j) t.emplace_back(j, i, v);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -10,14 +11,16 @@
 #include <numbers>
 #include <sstream>
 
+#include "flexmb/bodies/flexible_body.h"
 #include "flexmb/bodies/rigid_body.h"
 #include "flexmb/math/rotation.h"
 #include "flexmb/model/model.h"
+#include "tests/unit/bodies/flexible_test_bodies.h"
 
 namespace flexmb {
 namespace {
 
-constexpr const char* kPython = "/usr/bin/python3";
+constexpr const char* kDebianPython = "/usr/bin/python3";
 
 // a model with an unshaped ground, one body of the given shape at a general
 // pose and one body without a shape
@@ -48,7 +51,7 @@ Shape BoxShape() {
 
 // runs python and returns its standard output
 std::string Python(const std::string& script, const std::string& arg) {
-  const std::string cmd = std::string(kPython) + " -c '" + script + "' '" + arg + "'";
+  const std::string cmd = std::string(kDebianPython) + " -c '" + script + "' '" + arg + "'";
   std::FILE* p = popen(cmd.c_str(), "r");
   if (!p) return "";
   std::string out;
@@ -69,7 +72,9 @@ p = r.find("UnstructuredGrid/Piece")
 print(p.get("NumberOfPoints"), p.get("NumberOfCells"))
 cells = {a.get("Name"): (a.text or "").split() for a in p.find("Cells").findall("DataArray")}
 bid = [a for a in p.find("CellData").findall("DataArray") if a.get("Name") == "body_id"][0]
-for x in ((p.find("Points/DataArray").text or "").split(), cells["connectivity"], cells["offsets"], cells["types"], (bid.text or "").split()):
+disp = [a for a in p.find("PointData").findall("DataArray") if a.get("Name") == "displacement"][0]
+vm = [a for a in p.find("CellData").findall("DataArray") if a.get("Name") == "von_mises"][0]
+for x in ((p.find("Points/DataArray").text or "").split(), cells["connectivity"], cells["offsets"], cells["types"], (bid.text or "").split(), (disp.text or "").split(), (vm.text or "").split()):
   print(len(x), " ".join(x))
 )";
 
@@ -87,6 +92,7 @@ struct Vtu {
   int n_points = -1, n_cells = -1;
   std::vector<double> points;
   std::vector<int> connectivity, offsets, types, body_id;
+  std::vector<double> displacement, von_mises;
 };
 
 Vtu ReadVtu(const std::string& path) {
@@ -104,13 +110,15 @@ Vtu ReadVtu(const std::string& path) {
   read(v.offsets);
   read(v.types);
   read(v.body_id);
+  read(v.displacement);
+  read(v.von_mises);
   return v;
 }
 
 class VtkAnimation : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (access(kPython, X_OK) != 0) GTEST_SKIP() << "no " << kPython << " to parse the XML";
+    if (access(kDebianPython, X_OK) != 0) GTEST_SKIP() << "no " << kDebianPython << " to parse the XML";
     dir_ = std::filesystem::temp_directory_path() / ("flexmb_vtk_test_" + std::to_string(getpid()));
     std::filesystem::remove_all(dir_);
   }
@@ -170,6 +178,46 @@ TEST_F(VtkAnimation, NoShapesGiveValidEmptyFrames) {
   EXPECT_EQ(v.n_points, 0);
   EXPECT_EQ(v.n_cells, 0);
   EXPECT_TRUE(v.connectivity.empty());
+}
+
+TEST_F(VtkAnimation, FlexibleBodyMeshAtRhoPlusScaledModes) {
+  // the free bent bar (7 nodes, 6 beams) at a general pose with a known
+  // modal state: node k at r + R (rho_k + s H_k^t w), displacement H_k^t w
+  const auto reduced = testing::FreeBentBar(3, 3);
+  const int n = reduced->invariants.n;
+  FlexibleBodyData d;
+  d.reduced = reduced;
+  d.p_WB = Vec3(1, -2, 0.5);
+  d.R_WB = FromRollPitchYaw(Vec3(0.3, -0.2, 0.5));
+  d.w0 = 1e-3 * VecX::LinSpaced(n, 1.0, -2.0);
+  Model model;
+  model.AddBody(std::make_unique<FlexibleBody>("bar", d));
+  model.output.deformation_scale = 40.0;
+  model.Finalize();
+  VtkAnimationWriter w(dir_.string(), model);
+  w.WriteFrame(model.InitialState());
+  EXPECT_EQ(Python(kReadPvd, w.pvd_path()), "1\n0 frames/frame_00000.vtu\n");
+  const Vtu v = ReadVtu(w.FramePath(0));
+  const int nodes = static_cast<int>(reduced->mesh.nodes.size());
+  ASSERT_EQ(v.n_points, nodes);
+  ASSERT_EQ(v.n_cells, 6);
+  ASSERT_EQ(v.points.size(), 3u * nodes);
+  ASSERT_EQ(v.displacement.size(), 3u * nodes);
+  EXPECT_EQ(v.types, std::vector<int>(6, 3));
+  EXPECT_EQ(v.connectivity, (std::vector<int>{0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6}));
+  EXPECT_EQ(v.body_id, std::vector<int>(6, 1));
+  EXPECT_EQ(v.von_mises, std::vector<double>(6, 0.0));  // beams: none
+  double largest = 0.0;
+  for (int k = 0; k < nodes; ++k) {
+    const Vec3 u = reduced->modes.middleRows(6 * k, 3) * d.w0;
+    const Vec3 p = d.p_WB + d.R_WB * (reduced->mesh.nodes[k].x + 40.0 * u);
+    const Vec3 got(v.points[3 * k], v.points[3 * k + 1], v.points[3 * k + 2]);
+    const Vec3 disp(v.displacement[3 * k], v.displacement[3 * k + 1], v.displacement[3 * k + 2]);
+    EXPECT_LT((got - p).norm(), 1e-9) << "node " << k;
+    EXPECT_LT((disp - u).norm(), 1e-9 * u.norm() + 1e-15) << "node " << k;
+    largest = std::max(largest, 40.0 * u.norm());
+  }
+  EXPECT_GT(largest, 1e-3);  // the deformation is visible in the positions
 }
 
 // signed volume of the tetrahedron (a, b, c, d)

@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "flexmb/ancf/ancf_beam2d_body.h"
 #include "flexmb/bodies/rigid_body.h"
 #include "flexmb/model/model.h"
 #include "flexmb/model/workspace.h"
@@ -116,6 +117,40 @@ TEST(BodySensors, EnergiesAgainstHandComputedValues) {
   EXPECT_NEAR(out[0], ke_a + ke_b, 1e-12 * (ke_a + ke_b));
   EXPECT_NEAR(out[1], pe_a + pe_b + pe_s, 1e-12 * (pe_a + pe_b + pe_s));
   EXPECT_NEAR(out[2], ke_a + ke_b + pe_a + pe_b + pe_s, 1e-12 * (ke_a + ke_b + pe_a + pe_b + pe_s));
+}
+
+TEST(BodySensors, SystemEnergyCountsElasticEnergyOfEveryBodyType) {
+  // a planar ANCF beam stretched uniformly by eps: axial strain eps, no
+  // bending, strain energy E A eps^2 L / 2 (Body::ElasticEnergy, no cast);
+  // a rigid body beside it adds none
+  auto model = std::make_unique<Model>();
+  model->gravity_W.setZero();
+  ancf::AncfBeam2dData d;
+  d.length = 1.5;
+  d.elements = 3;
+  d.section.E = 2.0e11;
+  d.section.A = 1.0e-4;
+  d.section.I = 1.0e-9;
+  d.section.rho = 7800.0;
+  const int beam = model->AddBody(std::make_unique<ancf::AncfBeam2dBody>("beam", d));
+  const int rigid = model->AddBody(std::make_unique<RigidBody>("a", BodyA()));
+  model->Finalize();
+  State s = model->InitialState();
+  const double eps = 1e-3, h = d.length / d.elements;
+  const Body& b = *model->bodies[beam];
+  for (int k = 0; k <= d.elements; ++k) {
+    double* e = s.q.data() + b.q_offset + 4 * k;
+    e[0] = (1.0 + eps) * k * h, e[1] = 0.0, e[2] = 1.0 + eps, e[3] = 0.0;
+  }
+  Workspace ws;
+  InitWorkspace(*model, ws);
+  EvaluateMarkers(*model, s, ws);
+  const double strain = 0.5 * d.section.E * d.section.A * eps * eps * d.length;
+  EXPECT_NEAR(b.ElasticEnergy(s.q.data() + b.q_offset), strain, 1e-9 * strain);
+  EXPECT_EQ(model->bodies[rigid]->ElasticEnergy(s.q.data() + model->bodies[rigid]->q_offset), 0.0);
+  double out[3];
+  SystemEnergySensor("sys").Evaluate(*model, s, ws, out);
+  EXPECT_NEAR(out[1], strain, 1e-9 * strain);
 }
 
 TEST(BodySensors, SystemEnergyIsConserved) {

@@ -8,10 +8,12 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <cstdlib>
 #include <new>
 #include <vector>
 
+#include "flexmb/ancf/ancf_cable3d_body.h"
 #include "flexmb/bodies/flexible_body.h"
 #include "flexmb/bodies/rigid_body.h"
 #include "flexmb/forces/spring_damper.h"
@@ -188,6 +190,32 @@ TEST(NoAllocation, CounterSeesAllocations) {
   if (FLEXMB_COUNT_MALLOC) EXPECT_GE(k.mallocs(), 1);
 }
 
+TEST(NoAllocation, DenseLuRefactorAndSolve) {
+  // SparseLu's dense path (large, mostly dense matrix): after the first
+  // factorization sizes it, refactorizations and solves allocate nothing
+  if (!FLEXMB_COUNT_ALLOCATIONS) GTEST_SKIP() << "allocation counting is off under AddressSanitizer";
+  const int n = 2 * SparseLu::kDenseMinRows;
+  SparseMat A(n, n);
+  A.reserve(Eigen::VectorXi::Constant(n, n));
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) A.insert(i, j) = (i == j ? 3.0 * n : 0.0) + std::sin(1.0 + i + 7.0 * j);
+  A.makeCompressed();
+  SparseLu lu;
+  ASSERT_TRUE(lu.Factorize(A));
+  ASSERT_TRUE(lu.dense());
+  VecX b = VecX::Ones(n);
+  AllocationCount c;
+  for (int k = 0; k < 3; ++k) {
+    A.valuePtr()[k] += 0.5;
+    ASSERT_TRUE(lu.Factorize(A));
+    lu.Solve(b);
+  }
+  c.stop();
+  EXPECT_GT(b.norm(), 0.0);
+  EXPECT_EQ(c.news(), 0) << "operator new calls in dense refactorizations and solves";
+  EXPECT_EQ(c.mallocs(), 0) << "malloc/calloc/realloc calls in dense refactorizations and solves";
+}
+
 TEST(NoAllocation, GeneralizedAlphaAcceptedSteps) {
   if (!FLEXMB_COUNT_ALLOCATIONS) GTEST_SKIP() << "allocation counting is off under AddressSanitizer";
   auto model = MakeModel();
@@ -267,6 +295,43 @@ TEST(NoAllocation, FlexibleBodySteps) {
   EXPECT_EQ(sim.stats().steps - steps0, 100);
   EXPECT_EQ(c.news(), 0) << "operator new calls in 100 steps with a flexible body";
   EXPECT_EQ(c.mallocs(), 0) << "malloc/calloc/realloc calls in 100 steps with a flexible body";
+}
+
+TEST(NoAllocation, AncfCableSteps) {
+  // a 3D ANCF cable (sparse body blocks, node markers) on a spherical pin,
+  // a damper on its end node
+  if (!FLEXMB_COUNT_ALLOCATIONS) GTEST_SKIP() << "allocation counting is off under AddressSanitizer";
+  Model m;
+  ancf::AncfCable3dData d;
+  d.length = 1.2;
+  d.elements = 6;
+  d.section.E = 0.7e6;
+  d.section.A = 0.0018;
+  d.section.I = 1.215e-8;
+  d.section.rho = 5540.0;
+  d.section.damping = 0.01;
+  m.gravity_W = Vec3(0, -9.81, 0);
+  const int b = m.AddBody(std::make_unique<ancf::AncfCable3dBody>("cable", d));
+  m.AddJoint(std::make_unique<SphericalJoint>("pivot"), m.AddMarker(0, "pivot", Vec3::Zero(), Mat3::Identity()),
+             m.AddMarker(b, "pivot", Vec3::Zero(), Mat3::Identity(), 0));
+  SpringDamperLaw law;
+  law.free_length = 0.5;
+  law.stiffness = 50.0;
+  law.damping = 0.5;
+  m.AddForce(std::make_unique<SpringDamper>("spring", law), m.AddMarker(0, "anchor", Vec3(0.8, 0.5, 1.0), Mat3::Identity()),
+             m.AddMarker(b, "tip", Vec3(0, 0.01, 0), Mat3::Identity(), 6));
+  m.solver.dt = 1e-3;
+  m.Finalize();
+  Simulator sim(m);
+  sim.Initialize();
+  sim.Run(0.005, 0.0, nullptr);
+  const long steps0 = sim.stats().steps;
+  AllocationCount c;
+  sim.Run(0.105, 0.0, Observer());
+  c.stop();
+  EXPECT_EQ(sim.stats().steps - steps0, 100);
+  EXPECT_EQ(c.news(), 0) << "operator new calls in 100 steps with an ANCF cable";
+  EXPECT_EQ(c.mallocs(), 0) << "malloc/calloc/realloc calls in 100 steps with an ANCF cable";
 }
 
 }  // namespace

@@ -1,0 +1,281 @@
+#include "flexmb/ancf/ancf_cable3d_body.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "flexmb/common/error.h"
+#include "flexmb/math/rotation.h"
+
+namespace flexmb::ancf {
+namespace {
+
+using CableElVec = AncfCable3d::Vec;
+using CableElMat = AncfCable3d::Mat;
+
+// value and directional derivative (forward-mode dual numbers) of a scalar
+// and of a 3-vector: the exact derivatives of the node-frame rate
+struct Ds {
+  double v, d;
+};
+struct Dv {
+  Vec3 v, d;
+};
+
+Ds Dot(const Dv& a, const Dv& b) { return {a.v.dot(b.v), a.d.dot(b.v) + a.v.dot(b.d)}; }
+Dv Cross(const Dv& a, const Dv& b) { return {a.v.cross(b.v), a.d.cross(b.v) + a.v.cross(b.d)}; }
+Dv Scale(const Ds& s, const Dv& a) { return {s.v * a.v, s.d * a.v + s.v * a.d}; }
+Dv Sub(const Dv& a, const Dv& b) { return {a.v - b.v, a.d - b.d}; }
+Dv Add(const Dv& a, const Dv& b) { return {a.v + b.v, a.d + b.d}; }
+
+// angular velocity of Rmin(t0 -> a/|a|) for the slope rate ad:
+// w = 2 (w_p cd - wd_p c + c x cd) / |p|^2 with p = (1 + t0.t, t0 x t)
+Dv Rate(const Vec3& t0, const Dv& a, const Dv& ad) {
+  const Dv T0{t0, Vec3::Zero()};
+  const Ds aa = Dot(a, a);
+  const double la = std::sqrt(aa.v);
+  const Ds inv{1.0 / la, -0.5 * aa.d / (la * aa.v)};
+  const Dv t = Scale(inv, a);
+  const Dv td = Scale(inv, Sub(ad, Scale(Dot(t, ad), t)));
+  const Ds w{1.0 + Dot(T0, t).v, Dot(T0, t).d};
+  const Dv c = Cross(T0, t);
+  const Ds wd = Dot(T0, td);
+  const Dv cd = Cross(T0, td);
+  const Ds p2{w.v * w.v + c.v.squaredNorm(), 2.0 * w.v * w.d + 2.0 * c.v.dot(c.d)};
+  const Ds f{2.0 / p2.v, -2.0 * p2.d / (p2.v * p2.v)};
+  return Scale(f, Add(Sub(Scale(w, cd), Scale(wd, c)), Cross(c, cd)));
+}
+
+AncfCable3d MakeElement(const std::string& name, const AncfCable3dData& d) {
+  const ErrorContext ctx{"", 0, "body '" + name + "'"};
+  if (!(d.length > 0.0) || !std::isfinite(d.length))
+    throw InputError("ANCF cable length must be positive, got " + std::to_string(d.length), ctx);
+  if (d.elements <= 0)
+    throw InputError("ANCF cable element count must be positive, got " + std::to_string(d.elements), ctx);
+  try {
+    return AncfCable3d(d.length / d.elements, d.section, d.order);
+  } catch (const InputError& e) {
+    throw InputError(e.message(), ctx);
+  }
+}
+
+}  // namespace
+
+AncfCable3dBody::AncfCable3dBody(std::string name, const AncfCable3dData& data)
+    : Body(std::move(name)), data_(data), n_el_(data.elements), element_(MakeElement(this->name(), data)) {
+  const ErrorContext ctx{"", 0, "body '" + this->name() + "'"};
+  if (!data_.direction_W.allFinite() || !(data_.direction_W.norm() > 0.0))
+    throw InputError("ANCF cable direction must be a non-zero vector", ctx);
+  if (!data_.normal_W.allFinite() || !data_.load_per_length_W.allFinite() ||
+      !data_.start_W.allFinite() || !data_.angular_velocity_W.allFinite())
+    throw InputError("ANCF cable start, normal, load and angular velocity must be finite", ctx);
+  t0_ = data_.direction_W.normalized();
+  Vec3 n = data_.normal_W;
+  if (n.norm() == 0.0) n = std::abs(t0_.z()) < 1.0 - 1e-6 ? Vec3::UnitZ() : Vec3::UnitX();
+  const Vec3 z = n - t0_ * t0_.dot(n);
+  if (!(z.norm() > 1e-6 * n.norm()))
+    throw InputError("ANCF cable normal must not be parallel to its direction", ctx);
+  R_W0_.col(0) = t0_;
+  R_W0_.col(2) = z.normalized();
+  R_W0_.col(1) = R_W0_.col(2).cross(t0_);
+  const int nv = this->nv();
+  mass_.setZero(nv, nv);
+  for (int i = 0; i < n_el_; ++i) mass_.block<12, 12>(6 * i, 6 * i) += element_.MassMatrix();
+}
+
+void AncfCable3dBody::InitialCoordinates(double* q, double* v) const {
+  const double h = element_.length();
+  const Vec3& w = data_.angular_velocity_W;
+  for (int i = 0; i <= n_el_; ++i) {
+    const Vec3 r = data_.start_W + (i * h) * t0_;
+    Eigen::Map<Vec3>(q + 6 * i) = r;
+    Eigen::Map<Vec3>(q + 6 * i + 3) = t0_;
+    Eigen::Map<Vec3>(v + 6 * i) = w.cross(r - data_.start_W);
+    Eigen::Map<Vec3>(v + 6 * i + 3) = w.cross(t0_);
+  }
+}
+
+void AncfCable3dBody::Retract(const double* q, const double* dx, double* q_out) const {
+  for (int j = 0; j < nq(); ++j) q_out[j] = q[j] + dx[j];
+}
+
+void AncfCable3dBody::MassMatrix(const double*, MatX& M) const { M = mass_; }
+
+void AncfCable3dBody::AddForces(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q,
+                                Eigen::Ref<MatX> dQdq, Eigen::Ref<MatX> dQdv) const {
+  const BeamSection& sec = element_.section();
+  const CableElVec Qf = element_.DistributedLoad(sec.rho * sec.A * g_W + data_.load_per_length_W);
+  for (int i = 0; i < n_el_; ++i) {
+    const Eigen::Map<const CableElVec> e(q + 6 * i), edot(v + 6 * i);
+    CableElVec Qe = Qf;
+    CableElMat K = CableElMat::Zero(), C = CableElMat::Zero();
+    element_.AddInternalForces(e, edot, Qe, K, C);
+    Q.segment<12>(6 * i) += Qe;
+    dQdq.block<12, 12>(6 * i, 6 * i) += K;
+    dQdv.block<12, 12>(6 * i, 6 * i) += C;
+  }
+}
+
+int AncfCable3dBody::NodeOf(const Marker& m) const {
+  if (m.node < 0 || m.node > n_el_)
+    throw InputError("marker on node " + std::to_string(m.node) + ", but the cable has nodes 0.." +
+                         std::to_string(n_el_),
+                     {"", 0, "marker '" + m.name + "'"});
+  return m.node;
+}
+
+Mat3 AncfCable3dBody::NodeFrame(const Vec3& a, const std::string& marker) const {
+  const double la = a.norm();
+  const Vec3 t = a / la;
+  const double w = 1.0 + t0_.dot(t);
+  if (!(la > 0.0) || !(w > 1e-8))
+    throw NumericalError("the slope of the ANCF cable at marker '" + marker + "'" +
+                         " vanished or turned back against its reference direction (the node "
+                         "frame rule is singular there)",
+                         {"", 0, "body '" + name() + "'"});
+  const Vec3 c = t0_.cross(t);
+  const Eigen::Quaterniond p(w, c.x(), c.y(), c.z());
+  return p.normalized().toRotationMatrix() * R_W0_;
+}
+
+Mat3 AncfCable3dBody::RateMatrix(const Vec3& a, const Marker& m) const {
+  NodeFrame(a, m.name);
+  Mat3 G;
+  for (int j = 0; j < 3; ++j) G.col(j) = Rate(t0_, {a, Vec3::Zero()}, {Vec3::Unit(j), Vec3::Zero()}).v;
+  return G;
+}
+
+Mat3 AncfCable3dBody::RateDerivative(const Vec3& a, const Vec3& u) const {
+  Mat3 H;
+  for (int j = 0; j < 3; ++j) H.col(j) = Rate(t0_, {a, Vec3::Unit(j)}, {u, Vec3::Zero()}).d;
+  return H;
+}
+
+Mat3 AncfCable3dBody::RateTransposeDerivative(const Vec3& a, const Vec3& y) const {
+  Mat3 W;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) W(i, j) = y.dot(Rate(t0_, {a, Vec3::Unit(j)}, {Vec3::Unit(i), Vec3::Zero()}).d);
+  return W;
+}
+
+bool AncfCable3dBody::BlockPattern(std::vector<std::pair<int, int>>& entries) const {
+  for (int e = 0; e < n_el_; ++e)
+    for (int j = 0; j < 12; ++j)
+      for (int i = 0; i < 12; ++i) entries.emplace_back(6 * e + i, 6 * e + j);
+  return true;
+}
+
+void AncfCable3dBody::EvaluateMarker(const double* q, const double* v, const Marker& m,
+                                     MarkerState& out) const {
+  const int k = NodeOf(m);
+  const Eigen::Map<const Vec3> r(q + 6 * k), a(q + 6 * k + 3), rd(v + 6 * k), ad(v + 6 * k + 3);
+  const Mat3 R_WN = NodeFrame(a, m.name);
+  const Mat3 G = RateMatrix(a, m);
+  const Vec3 s = R_WN * m.p_BM;
+  const Vec3 w = G * ad;
+  out.p_WM = r + s;
+  out.R_WM = R_WN * m.R_BM;
+  out.v_WM = rd + w.cross(s);
+  out.w_WM = w;
+  out.J.setZero(6, nv());
+  out.J.block<3, 3>(0, 6 * k).setIdentity();
+  out.J.block<3, 3>(0, 6 * k + 3) = -Skew(s) * G;
+  out.J.block<3, 3>(3, 6 * k + 3) = G;
+  out.v_offset = v_offset;
+  out.nv = nv();
+}
+
+Vec6 AncfCable3dBody::MarkerAccelerationBias(const double* q, const double* v, const Marker& m) const {
+  const int k = NodeOf(m);
+  const Eigen::Map<const Vec3> a(q + 6 * k + 3), ad(v + 6 * k + 3);
+  const Vec3 s = NodeFrame(a, m.name) * m.p_BM;
+  const Vec3 w = RateMatrix(a, m) * ad;
+  const Vec3 alpha = RateDerivative(a, ad) * ad;
+  Vec6 b;
+  b.head<3>() = alpha.cross(s) + w.cross(w.cross(s));
+  b.tail<3>() = alpha;
+  return b;
+}
+
+void AncfCable3dBody::AddMarkerWrenchTangent(const double* q, const Marker& m, const Vec6& wrench_W,
+                                             Eigen::Ref<MatX> dQdq) const {
+  // Q_slope = G^T (m + s x f); s turns with the node frame: ds = (G da) x s
+  const int k = NodeOf(m);
+  const Eigen::Map<const Vec3> a(q + 6 * k + 3);
+  const Vec3 s = NodeFrame(a, m.name) * m.p_BM;
+  const Mat3 G = RateMatrix(a, m);
+  const Vec3 f = wrench_W.head<3>(), mom = wrench_W.tail<3>();
+  dQdq.block<3, 3>(6 * k + 3, 6 * k + 3) +=
+      RateTransposeDerivative(a, mom + s.cross(f)) + G.transpose() * Skew(f) * Skew(s) * G;
+}
+
+void AncfCable3dBody::MarkerTwistTangent(const double* q, const double* v, const Marker& m,
+                                         Eigen::Ref<MatX> out) const {
+  const int k = NodeOf(m);
+  const Eigen::Map<const Vec3> a(q + 6 * k + 3), ad(v + 6 * k + 3);
+  const Vec3 s = NodeFrame(a, m.name) * m.p_BM;
+  const Mat3 G = RateMatrix(a, m);
+  const Mat3 H = RateDerivative(a, ad);
+  const Vec3 w = G * ad;
+  out.setZero();
+  out.block<3, 3>(0, 6 * k + 3) = -Skew(s) * H - Skew(w) * Skew(s) * G;
+  out.block<3, 3>(3, 6 * k + 3) = H;
+}
+
+double AncfCable3dBody::KineticEnergy(const double*, const double* v) const {
+  double T = 0.0;
+  for (int i = 0; i < n_el_; ++i) {
+    const Eigen::Map<const CableElVec> ve(v + 6 * i);
+    T += 0.5 * ve.dot(element_.MassMatrix() * ve);
+  }
+  return T;
+}
+
+double AncfCable3dBody::GravityPotential(const double* q, const Vec3& g_W) const {
+  const BeamSection& sec = element_.section();
+  const CableElVec Qg = element_.DistributedLoad(sec.rho * sec.A * g_W);
+  double V = 0.0;
+  for (int i = 0; i < n_el_; ++i) V -= Eigen::Map<const CableElVec>(q + 6 * i).dot(Qg);
+  return V;
+}
+
+double AncfCable3dBody::ElasticEnergy(const double* q) const {
+  double W = 0.0;
+  for (int i = 0; i < n_el_; ++i) W += element_.StrainEnergy(Eigen::Map<const CableElVec>(q + 6 * i));
+  return W;
+}
+
+Vec6 AncfCable3dBody::Momentum(const double* q, const double* v) const {
+  // M = m (x) I3 per element: p = sum m_ab v_b, L = sum m_ab r_a x v_b
+  const CableElMat& M = element_.MassMatrix();
+  Vec3 p = Vec3::Zero(), L = Vec3::Zero();
+  for (int i = 0; i < n_el_; ++i) {
+    for (int a = 0; a < 4; ++a) {
+      for (int b = 0; b < 4; ++b) {
+        const double mab = M(3 * a, 3 * b);
+        const Eigen::Map<const Vec3> ra(q + 6 * i + 3 * a), vb(v + 6 * i + 3 * b);
+        const double sa = a % 2 == 0 ? 1.0 : 0.0;
+        p += (sa * mab) * vb;
+        L += mab * ra.cross(vb);
+      }
+    }
+  }
+  Vec6 out;
+  out << p, L;
+  return out;
+}
+
+void AncfCable3dBody::BodyFramePose(const double*, Vec3& p_WB, Mat3& R_WB) const {
+  p_WB = data_.start_W;
+  R_WB = R_W0_;
+}
+
+Vec3 AncfCable3dBody::PositionAt(const double* q, double s) const {
+  const double h = element_.length();
+  const int i = std::min(n_el_ - 1, std::max(0, static_cast<int>(std::floor(s / h))));
+  const double xi = std::min(1.0, std::max(0.0, (s - i * h) / h));
+  return element_.Position(Eigen::Map<const CableElVec>(q + 6 * i), xi);
+}
+
+}  // namespace flexmb::ancf

@@ -1,0 +1,95 @@
+#pragma once
+/// \file ladder_frame.h
+/// A parametric truck ladder frame of 4-node shells: two C-channel rails
+/// along x (web in an x-z plane, flanges pointing inwards), joined by flat
+/// cross members (plates in y-z planes sharing the rails' web nodes),
+/// steel, free-free; named interface nodes placed on existing mesh nodes
+/// nearest to given attachment points. Coordinates: the vehicle frame (x
+/// forward, y left, z up) [m]. The values of the truck are in
+/// examples/truck_lane_change/README.md.
+
+#include <string>
+#include <vector>
+
+#include "flexmb/fe/mesh.h"
+
+namespace flexmb::vehicle {
+
+/// Geometry, material and mass of the ladder frame.
+struct LadderFrameData {
+  double front_x = 1.2;            ///< x of the rails' front end [m]
+  double length = 8.0;             ///< rail length (rails run from front_x to front_x - length) [m]
+  double half_spacing = 0.43;      ///< y of the rails' web mid-surfaces, +-half_spacing [m]
+  double web_height = 0.27;        ///< channel web height (mid-surface of the flanges) [m]
+  double flange_width = 0.085;     ///< channel flange width, from the web inwards [m]
+  double thickness = 0.007;        ///< rail plate thickness [m]
+  double bottom_z = 0.8;           ///< z of the bottom flange [m]
+  std::vector<double> cross_members = {1.2, 0.7, -0.8, -2.2, -3.5, -5.2, -6.8};  ///< x of the cross members [m]
+  double cross_member_thickness = 0.006;  ///< [m]
+  double element_size = 0.04;      ///< target element edge length [m]
+  double E = 2.1e11;               ///< Young's modulus [Pa]
+  double nu = 0.3;                 ///< Poisson's ratio
+  double rho = 7850.0;             ///< density [kg/m^3]
+  /// Total mass of the frame [kg] including non-structural mass (platform,
+  /// brackets, fuel tank...) smeared on the rails as a non-structural mass
+  /// per area; 0: steel only. Must not be below the steel mass.
+  double total_mass = 0.0;
+  /// Radius of the rigid spiders (RBE2) that spread each interface node's
+  /// load over the nodes around it, as a bracket does [m] (AddSpiders).
+  double spider_radius = 0.1;
+};
+
+/// A wanted attachment point of the frame.
+struct FrameAttachment {
+  std::string name;               ///< e.g. "spring_seat_front_left"
+  fe::Vec3 point = fe::Vec3::Zero();  ///< attachment coordinates, vehicle frame [m]
+};
+
+/// The generated frame.
+struct LadderFrame {
+  fe::Mesh mesh;                   ///< shells, one steel material; sections 0 rails, 1 cross members
+  std::vector<std::string> names;  ///< interface names, in the order of the attachments
+  std::vector<int> nodes;          ///< interface node index per name (the node nearest to the point)
+  double steel_mass = 0.0;         ///< mass of the steel alone [kg]
+  double nsm = 0.0;                ///< non-structural mass per area of the rails [kg/m^2]
+};
+
+/// Mass properties of a body: total mass, centre of mass and the inertia
+/// tensor about it, vehicle axes.
+struct MassProperties3 {
+  double mass = 0.0;                  ///< [kg]
+  fe::Vec3 cg = fe::Vec3::Zero();     ///< [m]
+  fe::Mat3 inertia = fe::Mat3::Zero();  ///< about cg [kg m^2]
+};
+
+/// Generates the frame and places the interface nodes: each attachment
+/// point gets the mesh node nearest to it (a node may serve several
+/// attachments). Throws InputError for non-positive dimensions, an element
+/// size that leaves fewer than one element across the flange, a cross
+/// member outside the rails, or a total mass below the steel mass.
+LadderFrame GenerateLadderFrame(const LadderFrameData& data, const std::vector<FrameAttachment>& attachments);
+
+/// Index of the mesh node nearest to `point` (the first of equals).
+int NearestNode(const fe::Mesh& mesh, const fe::Vec3& point);
+
+/// Adds a rigid link (RBE2, all six DOF) from each of `nodes` to every other
+/// node within `radius` of it [m], so that the loads of an attachment are
+/// spread over a patch instead of one shell node (a point load on a shell
+/// is singular). A node already dependent, or itself in `nodes`, is left
+/// out. No mass is added.
+void AddSpiders(fe::Mesh& mesh, const std::vector<int>& nodes, double radius);
+
+/// Adds a rigid bracket (RBE2, all six DOF) from `node` to the nodes within
+/// `radius` of each of `points` [m] and of the node itself (nodes already
+/// dependent are left out): an attachment whose loads reach the frame at
+/// several places, e.g. an axle-arm pivot on a cross member whose loads the
+/// springs take to both rails.
+void AddBracket(fe::Mesh& mesh, int node, const std::vector<fe::Vec3>& points, double radius);
+
+/// Mass, centre of mass and inertia of a mesh of flat 4-node shells (steel
+/// and non-structural mass) by 2 x 2 Gauss quadrature over each element's
+/// bilinear surface (exact for the mass, first and second moments of flat
+/// elements); the thickness's own rotary inertia (order t^2) is neglected.
+MassProperties3 ShellMassProperties(const fe::Mesh& mesh);
+
+}  // namespace flexmb::vehicle

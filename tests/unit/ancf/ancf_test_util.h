@@ -1,0 +1,193 @@
+#pragma once
+// Fixtures shared by the ANCF element and body unit tests: sections, the
+// element force at a state, central-difference checks of the element
+// tangents and of the force against the strain-energy gradient, and of a
+// body's marker kinematics and force tangents.
+#include <gtest/gtest.h>
+
+#include "flexmb/ancf/line_element.h"
+#include "flexmb/bodies/body.h"
+#include "flexmb/math/rotation.h"
+
+namespace flexmb::ancf::test_util {
+
+/// A section with the given E [Pa], A [m^2], I [m^4], rho [kg/m^3], damping [s].
+inline BeamSection MakeSection(double E, double A, double I, double rho, double damping) {
+  BeamSection s;
+  s.E = E;
+  s.A = A;
+  s.I = I;
+  s.rho = rho;
+  s.damping = damping;
+  return s;
+}
+
+/// Elastic and damping force of element `el` at (e, edot).
+template <class El>
+typename El::Vec Forces(const El& el, const typename El::Vec& e, const typename El::Vec& edot) {
+  typename El::Vec Q = El::Vec::Zero();
+  typename El::Mat K = El::Mat::Zero(), C = El::Mat::Zero();
+  el.AddInternalForces(e, edot, Q, K, C);
+  return Q;
+}
+
+/// Checks dQ/de and dQ/dedot of `el` at (e, edot) against central
+/// differences (relative 1e-6); returns dQ/de.
+template <class El>
+typename El::Mat ExpectTangentsMatchCentralDifferences(const El& el, const typename El::Vec& e,
+                                                       const typename El::Vec& edot) {
+  using Vec = typename El::Vec;
+  using Mat = typename El::Mat;
+  Vec Q = Vec::Zero();
+  Mat K = Mat::Zero(), C = Mat::Zero();
+  el.AddInternalForces(e, edot, Q, K, C);
+  const double h = 1e-6;
+  Mat Kfd, Cfd;
+  for (int j = 0; j < El::kDof; ++j) {
+    Vec ep = e, em = e, vp = edot, vm = edot;
+    ep(j) += h;
+    em(j) -= h;
+    vp(j) += h;
+    vm(j) -= h;
+    Kfd.col(j) = (Forces(el, ep, edot) - Forces(el, em, edot)) / (2 * h);
+    Cfd.col(j) = (Forces(el, e, vp) - Forces(el, e, vm)) / (2 * h);
+  }
+  EXPECT_LT((K - Kfd).norm(), 1e-6 * K.norm());
+  EXPECT_LT((C - Cfd).norm(), 1e-6 * C.norm());
+  return K;
+}
+
+/// Checks that the elastic force (no velocity) of `el` at e is minus the
+/// central-difference gradient of its strain energy (relative 1e-6).
+template <class El>
+void ExpectForceIsMinusEnergyGradient(const El& el, const typename El::Vec& e) {
+  using Vec = typename El::Vec;
+  const Vec Q = Forces(el, e, Vec::Zero());
+  const double h = 1e-6;
+  Vec g;
+  for (int j = 0; j < El::kDof; ++j) {
+    Vec ep = e, em = e;
+    ep(j) += h;
+    em(j) -= h;
+    g(j) = (el.StrainEnergy(ep) - el.StrainEnergy(em)) / (2 * h);
+  }
+  EXPECT_LT((Q + g).norm(), 1e-6 * Q.norm());
+}
+
+/// Checks the marker Jacobian of `m` on `b` at (q, v): J v against the
+/// marker twist, and its columns against central differences of the
+/// marker position and orientation (absolute 1e-7).
+inline void ExpectMarkerJacobianMatchesCentralDifferences(const Body& b, const VecX& q, const VecX& v,
+                                                          const Marker& m) {
+  MarkerState ms;
+  b.EvaluateMarker(q.data(), v.data(), m, ms);
+  EXPECT_LT((ms.J.topRows<3>() * v - ms.v_WM).norm(), 1e-12);
+  EXPECT_LT((ms.J.bottomRows<3>() * v - ms.w_WM).norm(), 1e-12);
+  const double h = 1e-6;
+  MarkerState mp, mm;
+  for (int j = 0; j < b.nv(); ++j) {
+    VecX qp = q, qm = q;
+    qp(j) += h;
+    qm(j) -= h;
+    b.EvaluateMarker(qp.data(), v.data(), m, mp);
+    b.EvaluateMarker(qm.data(), v.data(), m, mm);
+    const Vec3 dp = (mp.p_WM - mm.p_WM) / (2 * h);
+    const Vec3 dth = LogSO3(mp.R_WM * mm.R_WM.transpose()) / (2 * h);
+    EXPECT_LT((dp - ms.J.block<3, 1>(0, j)).norm(), 1e-7) << j;
+    EXPECT_LT((dth - ms.J.block<3, 1>(3, j)).norm(), 1e-7) << j;
+  }
+}
+
+/// Checks J acc + bias against the central-difference time derivative of
+/// the marker twist along q + t v + t^2/2 acc (relative 1e-6).
+inline void ExpectMarkerBiasMatchesCentralDifferences(const Body& b, const VecX& q, const VecX& v,
+                                                      const VecX& acc, const Marker& m) {
+  const double h = 1e-5;
+  auto twist = [&](double t) {
+    const VecX qt = q + t * v + 0.5 * t * t * acc;
+    const VecX vt = v + t * acc;
+    MarkerState ms;
+    b.EvaluateMarker(qt.data(), vt.data(), m, ms);
+    Vec6 tw;
+    tw << ms.v_WM, ms.w_WM;
+    return tw;
+  };
+  const Vec6 fd = (twist(h) - twist(-h)) / (2 * h);
+  MarkerState ms;
+  b.EvaluateMarker(q.data(), v.data(), m, ms);
+  const Vec6 pred = ms.J * acc + b.MarkerAccelerationBias(q.data(), v.data(), m);
+  EXPECT_LT((fd - pred).norm(), 1e-6 * pred.norm());
+}
+
+/// Checks the marker wrench tangent (for wrench w) and twist tangent against
+/// central differences of J^T w and J v (relative 1e-6).
+inline void ExpectMarkerTangentsMatchCentralDifferences(const Body& b, const VecX& q, const VecX& v,
+                                                        const Marker& m, const Vec6& w) {
+  MatX K = MatX::Zero(b.nv(), b.nv());
+  b.AddMarkerWrenchTangent(q.data(), m, w, K);
+  MatX T(6, b.nv());
+  b.MarkerTwistTangent(q.data(), v.data(), m, T);
+  const double h = 1e-6;
+  MarkerState mp, mm;
+  for (int j = 0; j < b.nv(); ++j) {
+    VecX qp = q, qm = q;
+    qp(j) += h;
+    qm(j) -= h;
+    b.EvaluateMarker(qp.data(), v.data(), m, mp);
+    b.EvaluateMarker(qm.data(), v.data(), m, mm);
+    const VecX dQ = (mp.J.transpose() * w - mm.J.transpose() * w) / (2 * h);
+    const Vec6 dtw = (mp.J * v - mm.J * v) / (2 * h);
+    EXPECT_LT((dQ - K.col(j)).norm(), 1e-6 * (1.0 + K.norm())) << j;
+    EXPECT_LT((dtw - T.col(j)).norm(), 1e-6 * (1.0 + T.norm())) << j;
+  }
+}
+
+/// Checks the body's dQ/dq and dQ/dv at (q, v) under gravity g against
+/// central differences (relative 1e-6).
+inline void ExpectBodyForceTangentsMatchCentralDifferences(const Body& b, const VecX& q, const VecX& v,
+                                                           const Vec3& g) {
+  const int n = b.nv();
+  auto forces = [&](const VecX& qq, const VecX& vv) {
+    VecX Q = VecX::Zero(n);
+    MatX K = MatX::Zero(n, n), C = MatX::Zero(n, n);
+    b.AddForces(qq.data(), vv.data(), g, Q, K, C);
+    return Q;
+  };
+  VecX Q = VecX::Zero(n);
+  MatX K = MatX::Zero(n, n), C = MatX::Zero(n, n);
+  b.AddForces(q.data(), v.data(), g, Q, K, C);
+  const double h = 1e-6;
+  for (int j = 0; j < n; ++j) {
+    VecX qp = q, qm = q, vp = v, vm = v;
+    qp(j) += h;
+    qm(j) -= h;
+    vp(j) += h;
+    vm(j) -= h;
+    EXPECT_LT(((forces(qp, v) - forces(qm, v)) / (2 * h) - K.col(j)).norm(), 1e-6 * K.norm()) << j;
+    EXPECT_LT(((forces(q, vp) - forces(q, vm)) / (2 * h) - C.col(j)).norm(), 1e-6 * C.norm()) << j;
+  }
+}
+
+/// Checks that the gravity part of the body's force is minus the gradient of
+/// GravityPotential and the rest minus that of ElasticEnergy (body without
+/// damping or distributed load).
+inline void ExpectBodyForcesArePotentialGradients(const Body& b, const VecX& q, const Vec3& g) {
+  const int n = b.nv();
+  const VecX v = VecX::Zero(n);
+  VecX Qg = VecX::Zero(n), Qe = VecX::Zero(n);
+  MatX K = MatX::Zero(n, n), C = MatX::Zero(n, n);
+  b.AddForces(q.data(), v.data(), g, Qg, K, C);
+  b.AddForces(q.data(), v.data(), Vec3::Zero(), Qe, K, C);
+  const double h = 1e-6;
+  for (int j = 0; j < n; ++j) {
+    VecX qp = q, qm = q;
+    qp(j) += h;
+    qm(j) -= h;
+    const double dV = (b.GravityPotential(qp.data(), g) - b.GravityPotential(qm.data(), g)) / (2 * h);
+    const double dW = (b.ElasticEnergy(qp.data()) - b.ElasticEnergy(qm.data())) / (2 * h);
+    EXPECT_NEAR(Qg(j) - Qe(j), -dV, 1e-6 * (1.0 + Qg.norm())) << j;
+    EXPECT_NEAR(Qe(j), -dW, 1e-6 * Qe.norm()) << j;
+  }
+}
+
+}  // namespace flexmb::ancf::test_util

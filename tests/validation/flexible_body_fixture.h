@@ -1,0 +1,53 @@
+#pragma once
+/// \file flexible_body_fixture.h
+/// Setup shared by the floating-frame flexible body validation tests
+/// (tests/validation/flexible_body_*_test.cc): FE models built in code, their
+/// Craig-Bampton reduction, the reference integrator settings.
+
+#include <memory>
+#include <vector>
+
+#include "flexmb/bodies/flexible_body.h"
+#include "flexmb/model/model.h"
+#include "flexmb/reduction/craig_bampton.h"
+#include "tests/unit/bodies/flexible_test_bodies.h"
+#include "tests/unit/fe/fe_test_models.h"
+
+namespace flexmb::testing {
+
+/// A straight beam of round section (radius [m]) along the basic x axis:
+/// `elements` 2-node beams from x = 0 to `length` [m], element y axis along
+/// basic y; node indices 0 .. elements (ids 1 .. elements + 1). Material E
+/// [Pa], nu, rho [kg/m^3].
+inline fe::FeModel RoundBeamAlongX(int elements, double length, double radius, double E, double rho,
+                                   double nu = 0.3) {
+  fe::FeModel model;
+  fe::Mesh& mesh = model.mesh;
+  mesh.source = "beam.bdf";
+  const int mat = fe::testing::AddMaterial(mesh, E, nu, rho);
+  const int sec = fe::testing::AddRoundBar(mesh, mat, radius);
+  for (int k = 0; k <= elements; ++k) fe::testing::AddNode(mesh, fe::Vec3(length * k / elements, 0, 0));
+  for (int k = 0; k < elements; ++k) fe::testing::AddBeam(mesh, sec, k, k + 1, fe::Vec3(0, 1, 0));
+  return model;
+}
+
+/// Craig-Bampton reduction of `model` with the interface `nodes` (indices)
+/// and `normal` fixed-interface modes (free body: rigid modes removed).
+inline std::shared_ptr<reduction::ReducedBody> Reduced(const fe::FeModel& model, std::vector<int> nodes,
+                                                       int normal) {
+  reduction::ReductionOptions o;
+  o.interface_nodes = std::move(nodes);
+  o.normal_modes = normal;
+  return std::make_shared<reduction::ReducedBody>(reduction::ReduceCraigBampton(model, o));
+}
+
+/// Integrator of the reference runs: step h [s], no numerical dissipation
+/// (rho_inf = 1: the trapezoidal rule for a linear system), tight Newton
+/// tolerance.
+inline void UseReferenceIntegrator(Model& m, double h) {
+  m.solver.dt = h;
+  m.solver.rho_inf = 1.0;
+  m.solver.newton_tol = 1e-12;
+}
+
+}  // namespace flexmb::testing

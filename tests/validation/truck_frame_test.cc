@@ -1,0 +1,185 @@
+// The truck's elastic ladder frame (issue 7): the Craig-Bampton body of the
+// generated shell frame against the full FE model of the same mesh.
+// 1. Static sag: the frame clamped at its four spring seats under its own
+//    weight and the cab, powertrain and cargo weights at their mount nodes
+//    (lever-rule shares, as the mounts' preloads). Reduced solution from the
+//    body file alone (modes, reduced stiffness, inertia invariants; rigid-
+//    body motions added back, supports as constraints) against the direct
+//    sparse solution of the full clamped FE model (independent reference).
+//    The mount loads act on interface nodes, where the static modes make the
+//    reduced solution exact; the self weight is carried by the 10
+//    fixed-interface modes only approximately.
+// 2. The rigid frame's mass properties (ShellMassProperties, by quadrature)
+//    equal the reduced body's inertia invariants (from the FE mass matrix),
+//    and the steel mass equals the plates' areas times thickness and density.
+// docs/validation.md, "Truck elastic frame".
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <cstdio>
+#include <filesystem>
+
+#include "flexmb/fe/assembly.h"
+#include "flexmb/fe/sparse_cholesky.h"
+#include "flexmb/io/body_file.h"
+#include "truck_harness.h"
+
+namespace flexmb::vehicle::testing {
+namespace {
+
+constexpr double kG = 9.81;
+
+struct Fixture {
+  TruckData d;
+  reduction::ReducedBody body;  // read back from the body file
+  std::vector<int> seats;       // spring-seat nodes
+  std::vector<std::pair<int, double>> loads;  // node, downward force [N]
+};
+
+const Fixture& Frame() {
+  static const Fixture f = [] {
+    Fixture x;
+    x.d = LoadLaneChangeTruck(TruckFile());
+    const auto reduced = ReduceTruckFrame(x.d, FrameReductionData{});
+    const std::string path = (std::filesystem::temp_directory_path() / "flexmb_truck_frame_test.h5").string();
+    io::WriteBody(*reduced, path);
+    x.body = io::ReadBody(path);
+    std::filesystem::remove(path);
+    // part weights shared by the lever rule over their mounts, as BuildTruck's preloads
+    for (const FrameAttachment& a : FrameAttachments(x.d, kG)) {
+      const int node = NearestNode(x.body.mesh, a.point);
+      if (a.name.rfind("spring_seat", 0) == 0) x.seats.push_back(node);
+    }
+    for (const auto& [name, part, mounts] :
+         {std::tuple<std::string, const PartData*, const MountData*>{"cab", &x.d.cab, &x.d.cab_mounts},
+          {"powertrain", &x.d.powertrain, &x.d.powertrain_mounts},
+          {"cargo", &x.d.cargo, &x.d.cargo_mounts}}) {
+      const double n = 2.0 * static_cast<double>(mounts->x.size());
+      double xm = 0, sxx = 0;
+      for (double xs : mounts->x) xm += 2 * xs / n;
+      for (double xs : mounts->x) sxx += 2 * (xs - xm) * (xs - xm);
+      const double top = x.d.ladder.bottom_z + x.d.ladder.web_height;
+      for (double xs : mounts->x)
+        for (double side : {1.0, -1.0}) {
+          const double share = 1.0 / n + (sxx > 0 ? (part->cg.x() - xm) * (xs - xm) / sxx : 0.0);
+          x.loads.emplace_back(NearestNode(x.body.mesh, Vec3(xs, side * x.d.ladder.half_spacing, top)),
+                               share * part->mass * kG);
+        }
+    }
+    return x;
+  }();
+  return f;
+}
+
+// z displacement of every node [m]: full FE, clamped seats, direct solution
+Eigen::VectorXd FullSag(const Fixture& f) {
+  fe::AssemblyOptions o;
+  o.extra_fixed_nodes = f.seats;
+  const fe::AssembledModel a = fe::Assemble(f.body.mesh, o);
+  // gravity: M_full times the unit z translation of every node, to the free DOF
+  Eigen::VectorXd ez = Eigen::VectorXd::Zero(a.M_full.rows());
+  for (const auto& dofs : a.dofs.full)
+    if (dofs[2] >= 0) ez(dofs[2]) = 1.0;
+  Eigen::VectorXd f_full = -kG * (a.M_full * ez);
+  for (const auto& [node, force] : f.loads) f_full(a.dofs.full[static_cast<size_t>(node)][2]) -= force;
+  const Eigen::VectorXd rhs = a.T.transpose() * f_full;
+  fe::SparseCholesky chol;
+  chol.Factorize(a.K, "K");
+  const Eigen::VectorXd u_free = chol.Solve(rhs);
+  const Eigen::VectorXd u_full = a.T * u_free;
+  Eigen::VectorXd uz = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(f.body.mesh.nodes.size()));
+  for (size_t k = 0; k < f.body.mesh.nodes.size(); ++k)
+    if (a.dofs.full[k][2] >= 0) uz(static_cast<Eigen::Index>(k)) = u_full(a.dofs.full[k][2]);
+  return uz;
+}
+
+// the same from the body file: coordinates (translation, rotation about the
+// origin, modal), supports as Lagrange constraints
+Eigen::VectorXd ReducedSag(const Fixture& f) {
+  const reduction::ReducedBody& b = f.body;
+  const reduction::InertiaInvariants& inv = b.invariants;
+  const int n = inv.n, nc = 6 + n;
+  const Vec3 g(0, 0, -kG);
+  // node k's 6 displacements per unit coordinate
+  auto basis = [&](int k) {
+    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(6, nc);
+    const Vec3 x = b.mesh.nodes[static_cast<size_t>(k)].x;
+    B.block<3, 3>(0, 0).setIdentity();
+    Mat3 sk;
+    sk << 0, -x.z(), x.y(), x.z(), 0, -x.x(), -x.y(), x.x(), 0;
+    B.block<3, 3>(0, 3) = -sk;
+    B.block<3, 3>(3, 3).setIdentity();
+    B.block(0, 6, 6, n) = b.modes.block(6 * k, 0, 6, n);
+    return B;
+  };
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(nc + 6 * static_cast<int>(f.seats.size()), nc + 6 * static_cast<int>(f.seats.size()));
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(K.rows());
+  K.block(6, 6, n, n) = b.stiffness;
+  rhs.segment<3>(0) = inv.mvv * g;
+  rhs.segment<3>(3) = inv.mvo0.transpose() * g;
+  rhs.segment(6, n) = inv.mvw.transpose() * g;
+  for (const auto& [node, force] : f.loads) rhs.head(nc) += basis(node).topRows<3>().transpose() * Vec3(0, 0, -force);
+  // constraint rows scaled to the stiffness (the modes are mass-normalized)
+  const double scale = std::sqrt(b.stiffness.diagonal().maxCoeff());
+  for (size_t s = 0; s < f.seats.size(); ++s) {
+    const Eigen::MatrixXd B = scale * basis(f.seats[s]);
+    K.block(nc + 6 * static_cast<int>(s), 0, 6, nc) = B;
+    K.block(0, nc + 6 * static_cast<int>(s), nc, 6) = B.transpose();
+  }
+  const Eigen::VectorXd q = K.partialPivLu().solve(rhs).head(nc);
+  Eigen::VectorXd uz(static_cast<Eigen::Index>(b.mesh.nodes.size()));
+  for (int k = 0; k < static_cast<int>(b.mesh.nodes.size()); ++k) uz(k) = basis(k).row(2).dot(q);
+  return uz;
+}
+
+TEST(TruckFrameValidation, StaticSagFromBodyFileEqualsFullFe) {
+  const Fixture& f = Frame();
+  ASSERT_EQ(f.seats.size(), 4u);
+  const Eigen::VectorXd full = FullSag(f), red = ReducedSag(f);
+  Eigen::Index kmax = 0;
+  const double sag = full.cwiseAbs().maxCoeff(&kmax);
+  const double err = (full - red).cwiseAbs().maxCoeff();
+  double err_mounts = 0;
+  for (const auto& [node, force] : f.loads) err_mounts = std::max(err_mounts, std::abs(full(node) - red(node)));
+  std::printf("static sag: full FE %.4f mm at node %d (x = %.2f m), reduced %.4f mm; max difference %.2e mm "
+              "(mount nodes %.2e mm)\n",
+              sag * 1e3, f.body.mesh.nodes[static_cast<size_t>(kmax)].id,
+              f.body.mesh.nodes[static_cast<size_t>(kmax)].x.x(), red(kmax) * 1e3, err * 1e3, err_mounts * 1e3);
+  std::printf("(signed: full FE %.4f mm)\n", full(kmax) * 1e3);
+  for (int k : f.seats) EXPECT_LT(std::abs(red(k)), 1e-9) << "seat node " << k;
+  EXPECT_GT(sag, 1e-4);  // a real sag, not a clamped nothing
+  // the self weight inside the frame: 10 fixed-interface modes (measured 0.34 %)
+  EXPECT_LT(err, 0.01 * sag);
+  // the loaded nodes are interface nodes: exact up to round-off
+  EXPECT_LT(err_mounts, 1e-6 * sag);
+}
+
+TEST(TruckFrameValidation, RigidFrameMassPropertiesEqualTheReducedBody) {
+  const Fixture& f = Frame();
+  const reduction::InertiaInvariants& inv = f.body.invariants;
+  const double m = inv.mvv(0, 0);
+  // mvo0 = -m skew(c)
+  const Vec3 c(inv.mvo0(2, 1) / -m, inv.mvo0(0, 2) / -m, inv.mvo0(1, 0) / -m);
+  const Mat3 Ic = inv.moo0 - m * (c.squaredNorm() * Mat3::Identity() - c * c.transpose());
+  const PartData& p = f.d.frame;
+  Mat3 Ip = p.inertia.asDiagonal();
+  Ip(0, 1) = Ip(1, 0) = p.products.x();
+  Ip(0, 2) = Ip(2, 0) = p.products.y();
+  Ip(1, 2) = Ip(2, 1) = p.products.z();
+  std::printf("frame: %.2f kg (steel and non-structural), cg (%.4f, %.4f, %.4f) m, inertia %.1f %.1f %.1f kg m^2\n", m,
+              c.x(), c.y(), c.z(), Ic(0, 0), Ic(1, 1), Ic(2, 2));
+  // the steel alone against the plates' areas by hand: two channels and the flat cross members
+  const LadderFrameData& l = f.d.ladder;
+  const double steel = l.rho * (2 * l.length * (l.web_height + 2 * l.flange_width) * l.thickness +
+                                static_cast<double>(l.cross_members.size()) * 2 * l.half_spacing * l.web_height *
+                                    l.cross_member_thickness);
+  EXPECT_NEAR(GenerateLadderFrame(l, {}).steel_mass, steel, 1e-9 * steel);
+  EXPECT_NEAR(p.mass, m, 1e-9 * m);
+  EXPECT_NEAR(p.mass, f.d.ladder.total_mass, 1e-9 * m);
+  EXPECT_LT((p.cg - c).norm(), 1e-9);
+  // the quadrature leaves out the plates' own rotary inertia (order m t^2)
+  EXPECT_LT((Ip - Ic).norm(), 1e-4 * Ic.norm());
+}
+
+}  // namespace
+}  // namespace flexmb::vehicle::testing
