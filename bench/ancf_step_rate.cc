@@ -19,6 +19,7 @@
 #include <cstring>
 #include <string>
 
+#include "bench/bench_clock.h"
 #include "flexmb/io/model_file.h"
 #include "flexmb/solver/assembler.h"
 #include "flexmb/solver/simulator.h"
@@ -30,13 +31,6 @@ using namespace flexmb;
 
 constexpr double kDt = 1e-3;
 constexpr int kWarmupSteps = 10;
-
-// thread CPU time [s]: robust against other processes on a shared machine
-double Now() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
 
 // the pendulum as model-file text: planar beam or 3D cable with N elements
 std::string Model(bool cable, int n) {
@@ -77,9 +71,9 @@ Result Measure(bool cable, int n, int steps) {
   sim.Initialize();
   sim.Run(kWarmupSteps * kDt, 0.0, nullptr);
   const long it0 = sim.stats().newton_iterations;
-  const double t0 = Now();
+  const double t0 = flexmb::bench::ThreadCpuNow();
   sim.Run((kWarmupSteps + steps) * kDt, 0.0, nullptr);
-  const double wall = Now() - t0;
+  const double wall = flexmb::bench::ThreadCpuNow() - t0;
   Result r;
   r.nv = model->nv;
   r.steps_per_s = steps / wall;
@@ -91,9 +85,9 @@ Result Measure(bool cable, int n, int steps) {
   const int reps = n >= 128 ? 3 : 20;
   double best = 1e30;
   for (int k = 0; k < reps; ++k) {
-    const double f0 = Now();
+    const double f0 = flexmb::bench::ThreadCpuNow();
     lu.Factorize(ws.S);
-    best = std::min(best, Now() - f0);
+    best = std::min(best, flexmb::bench::ThreadCpuNow() - f0);
   }
   r.factor_ms = 1e3 * best;
   return r;

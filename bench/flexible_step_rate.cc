@@ -44,6 +44,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_clock.h"
 #include "flexmb/bodies/flexible_body.h"
 #include "flexmb/bodies/rigid_body.h"
 #include "flexmb/math/rotation.h"
@@ -57,16 +58,6 @@ using namespace flexmb;
 constexpr double kDt = 1e-4;
 constexpr int kWarmupSteps = 20;
 const Vec3 kSpin(1.0, 2.0, 5.0);  // initial angular velocity, world [rad/s]
-
-double WallNow() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-double CpuNow() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
 
 // steel round bar r = 2 cm: material and section 0 of the mesh
 void SteelRoundBar(fe::Mesh& mesh) {
@@ -207,7 +198,7 @@ int Conservation() {
     const double S0 = body.ElasticEnergy(sim.state().q.data() + body.q_offset);
     const Vec6 p0 = momentum(sim.state());
     double dE = 0, dL = 0, dH = 0, smax = 0;
-    const double w0 = WallNow();
+    const double w0 = bench::WallNow();
     sim.Run(10.0, 0.0, [&](const State& st, const Workspace&) {
       const Vec6 p = momentum(st);
       dE = std::max(dE, std::abs(energy(st) - E0) / E0);
@@ -216,7 +207,7 @@ int Conservation() {
       smax = std::max(smax, body.ElasticEnergy(st.q.data() + body.q_offset));
     });
     std::printf("| %.1e | %ld | %.4f | %.4f / %.4f | %.2e | %.2e | %.2e | %.1f |\n", h, sim.stats().steps, E0, S0,
-                smax, dE, dL, dH, WallNow() - w0);
+                smax, dE, dL, dH, bench::WallNow() - w0);
     std::fflush(stdout);
   }
   return 0;
@@ -225,14 +216,14 @@ int Conservation() {
 // the beam of `nodes` nodes, or with nx > 0 the nx x ny grid
 std::shared_ptr<const reduction::ReducedBody> Reduced(int nodes, int modes, double* seconds, int nx = 0,
                                                       int ny = 0) {
-  const double t0 = WallNow();
+  const double t0 = bench::WallNow();
   const fe::FeModel model = nx > 0 ? Grid(nx, ny) : Beam(nodes);
   if (nx > 0) nodes = nx * ny;
   reduction::ReductionOptions o;
   o.interface_nodes = {0, nodes - 1};
   o.normal_modes = modes - 6;
   auto r = std::make_shared<reduction::ReducedBody>(reduction::ReduceCraigBampton(model, o));
-  *seconds = WallNow() - t0;
+  *seconds = bench::WallNow() - t0;
   if (r->invariants.n != modes) {
     std::fprintf(stderr, "reduction gave %d modes, expected %d\n", r->invariants.n, modes);
     std::exit(1);
@@ -287,9 +278,9 @@ Rate Measure(const std::function<std::unique_ptr<Model>()>& make, int steps, dou
     sim.Initialize();
     sim.Run(kWarmupSteps * kDt, 0.0, nullptr);
     const IntegratorStats s0 = sim.stats();
-    const double w0 = WallNow(), c0 = CpuNow();
+    const double w0 = bench::WallNow(), c0 = bench::ThreadCpuNow();
     sim.Run((kWarmupSteps + steps) * kDt, 0.0, nullptr);
-    const double w1 = WallNow(), c1 = CpuNow();
+    const double w1 = bench::WallNow(), c1 = bench::ThreadCpuNow();
     const IntegratorStats& s1 = sim.stats();
     const long n = s1.steps - s0.steps;
     total += w1 - w0;

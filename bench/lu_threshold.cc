@@ -12,15 +12,10 @@
 #include <random>
 #include <vector>
 
+#include "bench/bench_clock.h"
 #include "flexmb/solver/sparse_lu.h"
 
 namespace {
-
-double CpuSeconds() {
-  timespec t;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return t.tv_sec + 1e-9 * t.tv_nsec;
-}
 
 flexmb::SparseMat RandomMatrix(int n, double fill, unsigned seed) {
   std::mt19937 gen(seed);
@@ -42,13 +37,13 @@ double Time(flexmb::SparseLu::Path path, flexmb::SparseMat A, int reps) {
   lu.Factorize(A);
   double best = 1e300;
   for (int r = 0; r < 5; ++r) {
-    const double t0 = CpuSeconds();
+    const double t0 = flexmb::bench::ThreadCpuNow();
     for (int k = 0; k < reps; ++k) {
       A.valuePtr()[0] += 1e-3;
       if (!lu.Factorize(A)) std::fprintf(stderr, "singular\n");
       lu.Solve(b);
     }
-    best = std::min(best, (CpuSeconds() - t0) / reps * 1e6);
+    best = std::min(best, (flexmb::bench::ThreadCpuNow() - t0) / reps * 1e6);
   }
   return best;
 }

@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_clock.h"
 #include "flexmb/bodies/rigid_body.h"
 #include "flexmb/common/log.h"
 #include "flexmb/joints/revolute.h"
@@ -46,16 +47,6 @@ constexpr double kRho = 0.8;
 constexpr int kWarmupSteps = 20;
 // axial moment of inertia of the "slender" rods [kg m^2] (must be > 0)
 constexpr double kAxialInertia = 1e-4;
-
-double WallNow() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-double CpuNow() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
 
 // "prefix<i>" (std::string operator+ trips GCC 12's -Wrestrict false positive)
 std::string Name(const char* prefix, int i) {
@@ -152,18 +143,18 @@ RateResult MeasureRate(const std::string& name, const std::function<std::unique_
   for (int rep = 0; rep < 30 && (rep < 3 || total < min_seconds); ++rep) {
     auto model = make();
     Simulator sim(*model);
-    const double i0 = WallNow();
+    const double i0 = bench::WallNow();
     const ConstraintReport& rep_c = sim.Initialize();
-    r.init = std::min(r.init, WallNow() - i0);
+    r.init = std::min(r.init, bench::WallNow() - i0);
     r.nv = model->nv;
     r.removed = static_cast<int>(rep_c.redundant.size());
     r.active = sim.workspace().n_active;
     sim.Run(kWarmupSteps * kDt, 0.0, nullptr);
     const IntegratorStats s0 = sim.stats();
     const double t_end = (kWarmupSteps + steps) * kDt;
-    const double w0 = WallNow(), c0 = CpuNow();
+    const double w0 = bench::WallNow(), c0 = bench::ThreadCpuNow();
     sim.Run(t_end, 0.0, nullptr);
-    const double w1 = WallNow(), c1 = CpuNow();
+    const double w1 = bench::WallNow(), c1 = bench::ThreadCpuNow();
     const IntegratorStats& s1 = sim.stats();
     const long n = s1.steps - s0.steps;
     total += w1 - w0;
@@ -181,17 +172,17 @@ double TimePerCall(const std::function<void()>& f) {
   f();
   long batch = 1;
   for (;;) {
-    const double t0 = WallNow();
+    const double t0 = bench::WallNow();
     for (long i = 0; i < batch; ++i) f();
-    const double dt = WallNow() - t0;
+    const double dt = bench::WallNow() - t0;
     if (dt >= 0.02 || batch > (1L << 24)) break;
     batch *= 2;
   }
   double best = INFINITY;
   for (int rep = 0; rep < 5; ++rep) {
-    const double t0 = WallNow();
+    const double t0 = bench::WallNow();
     for (long i = 0; i < batch; ++i) f();
-    best = std::min(best, (WallNow() - t0) / batch);
+    best = std::min(best, (bench::WallNow() - t0) / batch);
   }
   return best;
 }
@@ -376,13 +367,13 @@ int main(int argc, char** argv) {
   if (profile > 0) {
     auto model = Chain(profile);
     Simulator sim(*model);
-    const double i0 = WallNow();
+    const double i0 = bench::WallNow();
     sim.Initialize();
-    std::printf("Initialize: %.3f s\n", WallNow() - i0);
+    std::printf("Initialize: %.3f s\n", bench::WallNow() - i0);
     std::fflush(stdout);
-    const double w0 = WallNow();
+    const double w0 = bench::WallNow();
     sim.Run(steps * kDt, 0.0, nullptr);
-    const double w = WallNow() - w0;
+    const double w = bench::WallNow() - w0;
     std::printf("chain N = %d: %ld steps in %.3f s (%.1f steps/s), %.2f Newton it/step\n", profile,
                 sim.stats().steps, w, sim.stats().steps / w, double(sim.stats().newton_iterations) / sim.stats().steps);
     return 0;
