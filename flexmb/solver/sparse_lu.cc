@@ -55,18 +55,26 @@ bool SparseLu::Impl::FactorizeDense(const SparseMat& A, int& singular_column, do
   const double tol = n * std::numeric_limits<double>::epsilon();
   const auto& U = lu.matrixLU();
   double umin = std::numeric_limits<double>::infinity(), umax = 0.0;
+  int kmin = -1;
   for (int k = 0; k < n; ++k) {
     const double u = std::abs(U(k, k));
-    if (u <= tol * col_max(k)) {
+    // written so that a NaN pivot (a NaN or Inf entry in A) is singular too
+    if (!(u > tol * col_max(k))) {
       singular_column = k;
+      rcond = 0.0;
       return false;
     }
-    umin = std::min(umin, u);
+    if (u < umin) {
+      umin = u;
+      kmin = k;
+    }
     umax = std::max(umax, u);
   }
   rcond = umax > 0.0 ? umin / umax : 0.0;
-  if (std::isnan(U.diagonal().sum())) rcond = std::numeric_limits<double>::quiet_NaN();
-  if (rcond < 1e-16) return false;
+  if (!(rcond >= 1e-16)) {
+    singular_column = kmin;
+    return false;
+  }
   dense_ok = true;
   return true;
 }

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <random>
 
 #include "flexmb/solver/sparse_lu.h"
@@ -86,6 +87,23 @@ TEST(SparseLu, DensePathReportsTheSingularColumnLikeKlu) {
   SetColumn(A, col, D.col(col));
   EXPECT_TRUE(dense.Factorize(A));
   EXPECT_EQ(dense.singular_column(), -1);
+}
+
+TEST(SparseLu, DensePathRefusesNaNAndInfinity) {
+  // a NaN or an infinite entry (a force element gone bad) must not give a
+  // factorization: singular, with a column named, like KLU
+  const int n = 70;
+  Eigen::MatrixXd D;
+  for (double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    SparseMat A = RandomDense(n, 13, D);
+    A.coeffRef(40, 25) = bad;
+    SparseLu dense;
+    EXPECT_FALSE(dense.Factorize(A)) << bad;
+    EXPECT_TRUE(dense.dense());
+    EXPECT_GE(dense.singular_column(), 0) << bad;
+    EXPECT_LT(dense.singular_column(), n) << bad;
+    EXPECT_EQ(dense.rcond(), 0.0) << bad;
+  }
 }
 
 TEST(SparseLu, SmallOrSparseMatricesStayOnKlu) {
