@@ -1,98 +1,43 @@
 #pragma once
 /// \file ladder_frame.h
 /// A generated truck ladder frame of 4-node shells for the benchmarks
-/// (bench/fe_modes.cc, bench/reduce.cc): two C-channel rails along x (6 m,
+/// (bench/fe_modes.cc, bench/reduce.cc) and the reduction tests: two C-channel rails along x (6 m,
 /// web 0.3 m in the x-z plane at y = +-0.45 m, flanges 0.08 m pointing
 /// inwards, t = 6 mm) joined by eight flat cross members (t = 5 mm) in y-z
 /// planes sharing the rails' web nodes; steel, free-free. About 5,500 nodes
 /// / 33,000 DOF at the default element size 0.04 m.
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <limits>
-#include <map>
-#include <tuple>
 #include <vector>
 
 #include "flexmb/fe/mesh.h"
+#include "flexmb/vehicle/ladder_frame.h"
 
 namespace flexmb::bench {
 
-/// The ladder frame with element size about h [m].
+/// The ladder frame with element size about h [m]: the library's
+/// generator (flexmb/vehicle/ladder_frame.h) with the bench's dimensions,
+/// steel only, no interface nodes.
 inline fe::Mesh LadderFrame(double h) {
-  using fe::Element;
-  using fe::ElementType;
-  using fe::Mesh;
-  using fe::Vec3;
-  const double length = 6.0, b = 0.9, web = 0.3, flange = 0.08;
-  const int nx = std::max(1, static_cast<int>(std::lround(length / h)));
-  const int nz = std::max(1, static_cast<int>(std::lround(web / h)));
-  const int nf = std::max(1, static_cast<int>(std::lround(flange / h)));
-  const int ny = std::max(2, static_cast<int>(std::lround(b / h)));
-  Mesh mesh;
+  vehicle::LadderFrameData d;
+  d.front_x = 6.0;
+  d.length = 6.0;
+  d.half_spacing = 0.45;
+  d.web_height = 0.3;
+  d.flange_width = 0.08;
+  d.thickness = 0.006;
+  d.cross_member_thickness = 0.005;
+  d.bottom_z = -0.15;
+  d.element_size = h;
+  d.cross_members.clear();
+  for (int k = 0; k < 8; ++k) d.cross_members.push_back(0.25 + k * 5.5 / 7);
+  fe::Mesh mesh = vehicle::GenerateLadderFrame(d, {}).mesh;
   mesh.source = "generated ladder frame";
-  flexmb::fe::Material steel;
-  steel.id = 1;
-  steel.E = 2.1e11;
-  steel.nu = 0.3;
-  steel.G = steel.E / 2.6;
-  steel.rho = 7850.0;
-  mesh.materials.push_back(steel);
-  for (double t : {0.006, 0.005}) {
-    flexmb::fe::ShellSection s;
-    s.id = static_cast<int>(mesh.shell_sections.size()) + 1;
-    s.material = 0;
-    s.thickness = t;
-    mesh.shell_sections.push_back(s);
-  }
-  std::map<std::tuple<long, long, long>, int> index;
-  auto node = [&](const Vec3& x) {
-    const auto key = std::make_tuple(std::lround(x.x() * 1e6), std::lround(x.y() * 1e6), std::lround(x.z() * 1e6));
-    auto it = index.find(key);
-    if (it != index.end()) return it->second;
-    flexmb::fe::Node n;
-    n.id = static_cast<int>(mesh.nodes.size()) + 1;
-    n.x = x;
-    mesh.nodes.push_back(n);
-    index[key] = n.id - 1;
-    return n.id - 1;
-  };
-  auto quad = [&](int property, int a, int c, int d, int e) {
-    Element el;
-    el.id = static_cast<int>(mesh.elements.size()) + 1;
-    el.type = ElementType::kQuad4;
-    el.property = property;
-    el.nodes = {a, c, d, e};
-    mesh.elements.push_back(el);
-  };
-  // a structured patch p(u, v), u in [0, nu], v in [0, nv]
-  auto patch = [&](int property, int nu, int nv, auto p) {
-    for (int i = 0; i < nu; ++i)
-      for (int j = 0; j < nv; ++j) {
-        quad(property, node(p(i, j)), node(p(i + 1, j)), node(p(i + 1, j + 1)), node(p(i, j + 1)));
-      }
-  };
-  const double dx = length / nx, dz = web / nz, df = flange / nf;
-  for (double side : {-1.0, 1.0}) {
-    const double y = side * b / 2;
-    patch(0, nx, nz, [&](int i, int j) { return Vec3(i * dx, y, -web / 2 + j * dz); });
-    for (double zf : {-web / 2, web / 2}) {
-      patch(0, nx, nf, [&](int i, int j) { return Vec3(i * dx, y - side * j * df, zf); });
-    }
-  }
-  const int n_cross = 8;
-  const double dy = b / ny;
-  for (int k = 0; k < n_cross; ++k) {
-    const double x = std::round((0.25 + k * (length - 0.5) / (n_cross - 1)) / dx) * dx;
-    patch(1, ny, nz, [&](int i, int j) { return Vec3(x, -b / 2 + i * dy, -web / 2 + j * dz); });
-  }
-  mesh.IndexNodes();
   return mesh;
 }
-
 
 /// Interface nodes of the frame: `per_rail` stations evenly spaced along
 /// each rail (x from 0 to 6 m), at mid-height of the web (z = 0), the
