@@ -284,8 +284,11 @@ ReducedBody ReduceBasis(const fe::FeModel& model, const fe::AssembledModel& a, c
                          "a mechanism (parts joined only through interface nodes, or a joint-like rigid link?)",
                          {mesh.source, 0, "reduced body"});
   }
-  Eigen::MatrixXd y = z * eig.y.leftCols(nk);
-  const Eigen::VectorXd lambda = ReorthonormalizeModes(basis.mass, basis.stiffness, y);
+  // all flexible modes are orthonormalized together, so that the kept ones
+  // do not depend on how many are kept
+  Eigen::MatrixXd y_all = z * eig.y;
+  const Eigen::VectorXd lambda = ReorthonormalizeModes(basis.mass, basis.stiffness, y_all).head(nk);
+  const Eigen::MatrixXd y = y_all.leftCols(nk);
 
   // modes: 6 rows per node, every node, through T (dependent nodes included)
   const Eigen::MatrixXd h_free = basis.Expand(y);

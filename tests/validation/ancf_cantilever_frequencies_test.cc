@@ -11,7 +11,7 @@
 #include "flexmb/ancf/ancf_beam2d_body.h"
 
 namespace flexmb::ancf {
-namespace {
+namespace ancf_cantilever_frequencies_test {
 
 // roots of 1 + cos(bL) cosh(bL) = 0
 constexpr double kBetaL[4] = {1.875104068711961, 4.694091132974175, 7.854757438237613,
@@ -81,5 +81,5 @@ TEST(AncfCantileverFrequencies, EulerBernoulliAndConvergence) {
   }
 }
 
-}  // namespace
+}  // namespace ancf_cantilever_frequencies_test
 }  // namespace flexmb::ancf

@@ -14,7 +14,7 @@
 #include "flexmb/ancf/ancf_statics.h"
 
 namespace flexmb::ancf {
-namespace {
+namespace ancf_catenary_test {
 
 // elastic catenary: unstretched length L0, weight w [N/m of unstretched
 // length], axial stiffness EA, supports a span S apart at equal height; s is
@@ -154,5 +154,5 @@ TEST(AncfCatenary, Cable3dHangsOnTheCatenaryInASkewPlane) {
   EXPECT_LT(terr, 1e-6);
 }
 
-}  // namespace
+}  // namespace ancf_catenary_test
 }  // namespace flexmb::ancf

@@ -12,7 +12,7 @@
 #include "flexmb/ancf/ancf_statics.h"
 
 namespace flexmb::ancf {
-namespace {
+namespace ancf_elastica_test {
 
 // Mattiasson (1981), Table 1: tip deflection w/L and axial shortening u/L
 // (reproduced to 6 digits by scripts/ancf_elastica_reference.py)
@@ -112,5 +112,5 @@ TEST(AncfElastica, Cable3dInASkewPlane) {
   EXPECT_LT(off_plane, 1e-10);
 }
 
-}  // namespace
+}  // namespace ancf_elastica_test
 }  // namespace flexmb::ancf

@@ -19,7 +19,7 @@
 #include "flexmb/solver/statics.h"
 
 namespace flexmb::ancf {
-namespace {
+namespace ancf_engine_statics_test {
 
 // model-file text of a 1 m cantilever of 8 elements of `type` (EI = 1 N m^2,
 // EA/EI = 1200) named `name`, clamped to the ground by a fixed joint at its
@@ -113,5 +113,5 @@ TEST(AncfEngineStatics, ClampedCable3dThroughJointsAndForces) {
   for (int j = 0; j < cable.nq(); ++j) EXPECT_NEAR(q[j], qd(j), 1e-8) << j;
 }
 
-}  // namespace
+}  // namespace ancf_engine_statics_test
 }  // namespace flexmb::ancf

@@ -24,7 +24,7 @@
 #include "flexmb/solver/simulator.h"
 
 namespace flexmb::ancf {
-namespace {
+namespace ancf_pendulum_test {
 
 std::string PendulumModel(int elements, double dt) {
   return "name: ancf_pendulum\n"
@@ -175,5 +175,5 @@ TEST(AncfPendulum, Cable3dEnergyAndAngularMomentum) {
   EXPECT_GT(coarse.max_lz_drift / fine.max_lz_drift, 3.0);
 }
 
-}  // namespace
+}  // namespace ancf_pendulum_test
 }  // namespace flexmb::ancf

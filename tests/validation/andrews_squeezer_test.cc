@@ -12,7 +12,7 @@
 #include "example_model.h"
 
 namespace flexmb::validation {
-namespace {
+namespace andrews_squeezer_test {
 
 constexpr const char* kAngles[7] = {"beta", "Theta", "gamma", "Phi", "delta", "Omega", "epsilon"};
 // y(1..7) at t = 0.03 s from andsoln
@@ -95,5 +95,5 @@ TEST(IftommA03, AndrewsSqueezerAgainstTestSet) {
               max_err, h, max_extrap, fine.max_dw, coarse.max_dw);
 }
 
-}  // namespace
+}  // namespace andrews_squeezer_test
 }  // namespace flexmb::validation

@@ -12,7 +12,7 @@
 #include "flexmb/common/log.h"
 
 namespace flexmb::validation {
-namespace {
+namespace bricard_a04_test {
 
 TEST(IftommA04, BricardMobilityAndEnergy) {
   auto model = LoadExample("bricard");
@@ -80,5 +80,5 @@ TEST(IftommA04, BricardUndampedStaysBounded) {
   EXPECT_LT(max_de, 2e-5);  // measured 4.0e-6 J
 }
 
-}  // namespace
+}  // namespace bricard_a04_test
 }  // namespace flexmb::validation

@@ -20,7 +20,7 @@
 
 #include "cli_runner.h"
 
-namespace {
+namespace cli_test {
 
 namespace fs = std::filesystem;
 constexpr const char* kPython = "/usr/bin/python3";
@@ -328,4 +328,4 @@ TEST_F(Cli, InterruptedRunKeepsFlushedRows) {
   EXPECT_EQ(std::stol(s.at("rows")), static_cast<long>(rows.size()) - 1);
 }
 
-}  // namespace
+}  // namespace cli_test

@@ -23,7 +23,7 @@
 #include "tests/validation/fe_validation.h"
 
 namespace flexmb::fe::validation {
-namespace {
+namespace fe_beam_test {
 
 constexpr double kE = 2.1e11, kNu = 0.3, kRho = 7850.0;
 
@@ -163,5 +163,5 @@ TEST(FeBeamValidation, SkewFreeFreeBeamIn3D) {
   }
 }
 
-}  // namespace
+}  // namespace fe_beam_test
 }  // namespace flexmb::fe::validation

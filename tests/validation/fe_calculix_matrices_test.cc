@@ -27,7 +27,7 @@
 #include "flexmb/io/imported_matrices.h"
 
 namespace flexmb {
-namespace {
+namespace fe_calculix_matrices_test {
 
 namespace fs = std::filesystem;
 
@@ -268,5 +268,5 @@ TEST(FeCalculixMatrices, ShellExpansionIsRejectedWithAClearMessage) {
   }
 }
 
-}  // namespace
+}  // namespace fe_calculix_matrices_test
 }  // namespace flexmb

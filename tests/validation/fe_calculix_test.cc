@@ -29,7 +29,7 @@
 #include "flexmb/io/abaqus_reader.h"
 
 namespace flexmb::fe {
-namespace {
+namespace fe_calculix_test {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kE = 2.1e11, kNu = 0.3, kRho = 7850.0;
@@ -448,5 +448,5 @@ TEST(FeCalculix, ShellPlateVsS4AndLeissa) {
   EXPECT_LT(MaxRelDiff(tria, leissa), 0.01);
 }
 
-}  // namespace
+}  // namespace fe_calculix_test
 }  // namespace flexmb::fe

@@ -21,7 +21,7 @@
 #include "cli_strip.h"
 #include "json_reader.h"
 
-namespace {
+namespace fe_cli_test {
 
 namespace fs = std::filesystem;
 constexpr double kPi = 3.14159265358979323846;
@@ -301,4 +301,4 @@ TEST_F(FeCli, ZeroMassMechanismIsANumericalError) {
       << r.err;
 }
 
-}  // namespace
+}  // namespace fe_cli_test

@@ -23,7 +23,7 @@
 #include "tests/validation/fe_validation.h"
 
 namespace flexmb::fe::validation {
-namespace {
+namespace fe_plate_test {
 
 constexpr double kA = 1.0, kT = 0.01, kE = 2e11, kNu = 0.3, kRho = 7850.0;
 
@@ -202,5 +202,5 @@ TEST(FePlateValidation, CantileverAndFreeFreeStrips) {
   }
 }
 
-}  // namespace
+}  // namespace fe_plate_test
 }  // namespace flexmb::fe::validation

@@ -15,7 +15,7 @@
 #include "tests/validation/fe_validation.h"
 
 namespace flexmb::fe::validation {
-namespace {
+namespace fe_shell_test {
 
 // Scordelis-Lo roof, quarter model: x along the axis (0 = midspan, L/2 =
 // diaphragm), angle from the crown 0..40 degrees; gravity 90 per area;
@@ -155,5 +155,5 @@ TEST(FeShellValidation, TwistedBeam) {
   }
 }
 
-}  // namespace
+}  // namespace fe_shell_test
 }  // namespace flexmb::fe::validation

@@ -24,7 +24,7 @@
 #include "tests/validation/fe_validation.h"
 
 namespace flexmb::fe::validation {
-namespace {
+namespace fe_solid_test {
 
 constexpr double kH = 0.02, kW = 2.0 * kH, kL = 20.0 * kH;  // depth (z), width (y), length (x)
 constexpr double kE = 2.1e11, kRho = 7850.0;
@@ -162,5 +162,5 @@ TEST(FeSolidValidation, Hex8FreeFreeBar) { CheckBar("hex8 bar", false, {1, 2, 4}
 // quadratic tetrahedra: frequency error O(h^4); we ask for at least O(h^3)
 TEST(FeSolidValidation, Tet10FreeFreeBar) { CheckBar("tet10 bar", true, {1, 2}, 8.0); }
 
-}  // namespace
+}  // namespace fe_solid_test
 }  // namespace flexmb::fe::validation

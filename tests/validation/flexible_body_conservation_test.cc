@@ -19,7 +19,7 @@
 #include "tests/validation/flexible_body_fixture.h"
 
 namespace flexmb {
-namespace {
+namespace flexible_body_conservation_test {
 
 struct Drift {
   double E0 = 0, L0 = 0, H0 = 0, strain0 = 0, dE = 0, dL = 0, dH = 0, strain_max = 0;
@@ -92,5 +92,5 @@ TEST(FlexibleBodyConservation, FreeElasticBodyKeepsEnergyAndMomentum) {
   EXPECT_NEAR(a.dH / b.dH, 4.0, 0.6);
 }
 
-}  // namespace
+}  // namespace flexible_body_conservation_test
 }  // namespace flexmb

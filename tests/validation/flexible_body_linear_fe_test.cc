@@ -34,7 +34,7 @@
 #include "tests/validation/flexible_body_fixture.h"
 
 namespace flexmb {
-namespace {
+namespace flexible_body_linear_fe_test {
 
 constexpr int kElements = 4;
 constexpr double kLength = 1.0, kRadius = 0.01, kE = 2.1e11, kRho = 7850.0;
@@ -129,5 +129,5 @@ TEST(FlexibleBodyLinearFe, ClampedBodyMatchesNewmarkOnTheFullModel) {
   EXPECT_NEAR(diff[1] / diff[0], 1000.0, 50.0);
 }
 
-}  // namespace
+}  // namespace flexible_body_linear_fe_test
 }  // namespace flexmb

@@ -23,7 +23,7 @@
 #include "tests/validation/flexible_body_fixture.h"
 
 namespace flexmb {
-namespace {
+namespace flexible_body_rigid_limit_test {
 
 constexpr int kPerLeg = 3;
 constexpr int kPivot = 2, kTip = 2 * kPerLeg;  // node indices
@@ -97,5 +97,5 @@ TEST(FlexibleBodyRigidLimit, BodyWithoutModesMovesAsTheRigidBody) {
   EXPECT_NEAR(d1 / d2, 4.0, 0.2);
 }
 
-}  // namespace
+}  // namespace flexible_body_rigid_limit_test
 }  // namespace flexmb

@@ -26,7 +26,7 @@
 #include "tests/validation/flexible_body_fixture.h"
 
 namespace flexmb {
-namespace {
+namespace flexible_body_stress_test {
 
 constexpr int kNx = 10, kNy = 2;
 constexpr double kL = 1.0, kB = 0.2, kT = 0.01, kF = 10.0;
@@ -176,5 +176,5 @@ TEST(FlexibleBodyStress, SensorsMatchFullFeRecoveryOfAStaticDeflection) {
   }
 }
 
-}  // namespace
+}  // namespace flexible_body_stress_test
 }  // namespace flexmb

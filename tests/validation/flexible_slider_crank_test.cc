@@ -30,7 +30,7 @@
 #include "tests/validation/flexible_body_fixture.h"
 
 namespace flexmb {
-namespace {
+namespace flexible_slider_crank_test {
 
 constexpr double kCrank = 0.15, kRod = 0.30, kD = 0.006, kE = 2.0e11, kRho = 7870.0, kOmega = 150.0;
 constexpr double kSliderMass = 0.076;  // [kg] (see docs/validation.md)
@@ -199,5 +199,5 @@ TEST(FlexibleSliderCrank, MatchesAncfWhenTheAxialForceIsSmall) {
   EXPECT_LT(MaxDifference(ffr, ancf), 0.15 * ffr.peak);
 }
 
-}  // namespace
+}  // namespace flexible_slider_crank_test
 }  // namespace flexmb

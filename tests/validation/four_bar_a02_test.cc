@@ -11,7 +11,7 @@
 #include "example_model.h"
 
 namespace flexmb::validation {
-namespace {
+namespace four_bar_a02_test {
 
 constexpr int kN = 2;
 
@@ -87,5 +87,5 @@ TEST(IftommA02, TwoFourBarsEnergyAndReducedModel) {
               a.max_de, b.max_de, a.max_dpos, b.max_dpos);
 }
 
-}  // namespace
+}  // namespace four_bar_a02_test
 }  // namespace flexmb::validation

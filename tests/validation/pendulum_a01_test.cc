@@ -15,7 +15,7 @@
 #include "example_model.h"
 
 namespace flexmb::validation {
-namespace {
+namespace pendulum_a01_test {
 
 // x, y of P1 [m] from the official A01_solution_data.txt (6 digits), copied
 // from the notes in docs/notes/benchmark-references.md section 1.
@@ -149,5 +149,5 @@ TEST(IftommA01, CommandLineResults) {
   EXPECT_NE(summary.str().find("\"ok\""), std::string::npos) << summary.str();
 }
 
-}  // namespace
+}  // namespace pendulum_a01_test
 }  // namespace flexmb::validation

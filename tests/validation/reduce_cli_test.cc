@@ -26,7 +26,7 @@
 #include "cli_strip.h"
 #include "json_reader.h"
 
-namespace {
+namespace reduce_cli_test {
 
 namespace fs = std::filesystem;
 using flexmb::testing::CliResult;
@@ -298,4 +298,4 @@ TEST_F(ReduceCli, BadInput) {
   ExpectFailure("body info", 2, {"file"});
 }
 
-}  // namespace
+}  // namespace reduce_cli_test

@@ -27,7 +27,7 @@
 #include "tests/unit/reduction/reduction_test_models.h"
 
 namespace flexmb::reduction {
-namespace {
+namespace reduction_cb_test {
 
 using testing::CoarseLadder;
 using testing::FreeRows;
@@ -420,5 +420,5 @@ TEST(ReductionCB, ImportedMatricesGiveTheSameBody) {
   EXPECT_TRUE(b.stress.shell.elements.empty());
 }
 
-}  // namespace
+}  // namespace reduction_cb_test
 }  // namespace flexmb::reduction

@@ -24,7 +24,7 @@
 #include "tests/unit/fe/fe_test_models.h"
 
 namespace flexmb::reduction {
-namespace {
+namespace reduction_invariants_test {
 
 using fe::testing::AddBeam;
 using fe::testing::AddMaterial;
@@ -206,5 +206,5 @@ TEST(ReductionInvariants, CantileverAgainstEulerBernoulliModes) {
   }
 }
 
-}  // namespace
+}  // namespace reduction_invariants_test
 }  // namespace flexmb::reduction

@@ -32,7 +32,7 @@
 #include "tests/validation/cli_runner.h"
 
 namespace flexmb {
-namespace {
+namespace rotating_beam_test {
 
 using rotating_beam::Frame;
 using rotating_beam::Result;
@@ -155,5 +155,5 @@ TEST_F(RotatingBeamCli, ReduceStoresTheGeometricStiffnessAndBodyInfoShowsIt) {
   EXPECT_NE(shells.err.find("no geometric stiffness"), std::string::npos) << shells.err;
 }
 
-}  // namespace
+}  // namespace rotating_beam_test
 }  // namespace flexmb

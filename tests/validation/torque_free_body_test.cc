@@ -15,7 +15,7 @@
 #include "flexmb/solver/simulator.h"
 
 namespace flexmb {
-namespace {
+namespace torque_free_body_test {
 
 const Vec3 kInertia(1.0, 2.0, 3.0);   // principal moments [kg m^2]
 const Vec3 kOmega0(0.05, 1.0, 0.05);  // initial angular velocity [rad/s], body = world at t = 0
@@ -128,5 +128,5 @@ TEST(TorqueFreeBody, IntermediateAxisFlipConservesEnergyAndMomentum) {
               a.period, exact, rk_period, a.dL / a.L0, a.dT / a.T0, b.dL / b.L0, b.dT / b.T0);
 }
 
-}  // namespace
+}  // namespace torque_free_body_test
 }  // namespace flexmb

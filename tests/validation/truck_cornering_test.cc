@@ -9,7 +9,7 @@
 #include "truck_harness.h"
 
 namespace flexmb::vehicle::testing {
-namespace {
+namespace truck_cornering_test {
 
 struct SteadyState {
   double speed = 0, yaw_rate = 0, ay = 0, roll = 0;
@@ -56,5 +56,5 @@ TEST(TruckValidation, SteadyStateCornering) {
   EXPECT_LT(roll_gradient, 12.0);
 }
 
-}  // namespace
+}  // namespace truck_cornering_test
 }  // namespace flexmb::vehicle::testing

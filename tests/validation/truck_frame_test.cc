@@ -25,7 +25,7 @@
 #include "truck_harness.h"
 
 namespace flexmb::vehicle::testing {
-namespace {
+namespace truck_frame_test {
 
 constexpr double kG = 9.81;
 
@@ -181,5 +181,5 @@ TEST(TruckFrameValidation, RigidFrameMassPropertiesEqualTheReducedBody) {
   EXPECT_LT((Ip - Ic).norm(), 1e-4 * Ic.norm());
 }
 
-}  // namespace
+}  // namespace truck_frame_test
 }  // namespace flexmb::vehicle::testing

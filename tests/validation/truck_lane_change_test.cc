@@ -11,7 +11,7 @@
 #include "truck_harness.h"
 
 namespace flexmb::vehicle::testing {
-namespace {
+namespace truck_lane_change_test {
 
 LaneChangeResult RunAt(double kmh, const char* frame, std::optional<double> stop = std::nullopt) {
   LaneChangeOptions o;
@@ -55,5 +55,5 @@ TEST(TruckValidation, LaneChangeAt55KmhRunsToTheEnd) { RunAt(55.0, "rigid"); }
 TEST(TruckValidation, ElasticFrameLaneChangeAt30Kmh) { ElasticAgainstRigid(30.0); }
 TEST(TruckValidation, ElasticFrameLaneChangeAt55Kmh) { ElasticAgainstRigid(55.0); }
 
-}  // namespace
+}  // namespace truck_lane_change_test
 }  // namespace flexmb::vehicle::testing

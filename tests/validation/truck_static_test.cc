@@ -6,7 +6,7 @@
 #include "truck_harness.h"
 
 namespace flexmb::vehicle::testing {
-namespace {
+namespace truck_static_test {
 
 TEST(TruckValidation, StaticAxleLoadsEqualMassDistribution) {
   const TruckData d = LoadLaneChangeTruck(TruckFile());
@@ -41,5 +41,5 @@ TEST(TruckValidation, StaticAxleLoadsEqualMassDistribution) {
   EXPECT_LT(front / W, 0.40);
 }
 
-}  // namespace
+}  // namespace truck_static_test
 }  // namespace flexmb::vehicle::testing
