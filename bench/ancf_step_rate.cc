@@ -2,8 +2,10 @@
 /// ancf_bench: steps per second of the generalized-alpha integrator on the
 /// flexible pendulum of Berzeri and Shabana (L = 1.2 m, A = 0.0018 m^2,
 /// I = 1.215e-8 m^4, rho = 5540 kg/m^3, E = 0.7 MPa, released horizontal)
-/// as a planar ANCF beam (`ancf_beam`, revolute pin) and as a 3D ANCF cable
-/// (`ancf_cable`, spherical pin), with N = 8, 32, 128 elements (issue 6).
+/// as a planar ANCF beam (`ancf_beam`, revolute pin), as a 3D ANCF cable
+/// (`ancf_cable`, spherical pin) and as a 3D ANCF beam with torsion
+/// (`ancf_beam3d`, Iy = Iz = I, J = 2 I, nu = 0.3, spherical pin), with
+/// N = 8, 32, 128 elements (issue 6).
 /// For each model it also reports the non-zeros of the iteration matrix and
 /// the time of one KLU factorization of it, to show how the linear solve
 /// scales. Prints a markdown table; see docs/PERFORMANCE.md, "ANCF step
@@ -32,8 +34,9 @@ using namespace flexmb;
 constexpr double kDt = 1e-3;
 constexpr int kWarmupSteps = 10;
 
-// the pendulum as model-file text: planar beam or 3D cable with N elements
-std::string Model(bool cable, int n) {
+// the pendulum as model-file text: planar beam (kind 0), 3D cable (1) or 3D beam with torsion (2)
+std::string Model(int kind, int n) {
+  const bool cable = kind > 0;
   std::string text =
       "name: ancf_pendulum\n"
       "gravity: [0, -9.81, 0]\n"
@@ -42,11 +45,13 @@ std::string Model(bool cable, int n) {
       "    - {name: pivot, position: [0, 0, 0]}\n"
       "bodies:\n"
       "  - name: beam\n";
-  text += cable ? "    type: ancf_cable\n" : "    type: ancf_beam\n";
+  text += kind == 2 ? "    type: ancf_beam3d\n" : cable ? "    type: ancf_cable\n" : "    type: ancf_beam\n";
   text += "    length: 1.2\n    elements: " + std::to_string(n) + "\n";
+  text += kind == 2 ? "    section: {area: 0.0018, Iy: 1.215e-8, Iz: 1.215e-8, J: 2.43e-8}\n"
+                      "    material: {E: 0.7e6, nu: 0.3, rho: 5540}\n"
+                    : "    section: {area: 0.0018, inertia: 1.215e-8}\n"
+                      "    material: {E: 0.7e6, rho: 5540}\n";
   text +=
-      "    section: {area: 0.0018, inertia: 1.215e-8}\n"
-      "    material: {E: 0.7e6, rho: 5540}\n"
       "    direction: [1, 0, 0]\n"
       "    markers:\n"
       "      - {name: pin, end: start}\n"
@@ -65,8 +70,8 @@ struct Result {
   double factor_ms = 0.0;
 };
 
-Result Measure(bool cable, int n, int steps) {
-  auto model = LoadModelString(Model(cable, n), "ancf_bench.yaml");
+Result Measure(int kind, int n, int steps) {
+  auto model = LoadModelString(Model(kind, n), "ancf_bench.yaml");
   Simulator sim(*model);
   sim.Initialize();
   sim.Run(kWarmupSteps * kDt, 0.0, nullptr);
@@ -107,12 +112,13 @@ int main(int argc, char** argv) {
   }
   std::printf("| model | N | nv | steps/s | ms/step | ms/step/element | Newton it./step | nnz(S) | KLU factor [ms] |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
-  for (bool cable : {false, true}) {
+  const char* names[3] = {"2D beam", "3D cable", "3D beam"};
+  for (int kind : {0, 1, 2}) {
     for (int n : {8, 32, 128}) {
-      const Result r = Measure(cable, n, steps);
+      const Result r = Measure(kind, n, steps);
       const double ms = 1e3 / r.steps_per_s;
       std::printf("| %s | %d | %d | %.1f | %.3f | %.4f | %.2f | %ld | %.3f |\n",
-                  cable ? "3D cable" : "2D beam", n, r.nv, r.steps_per_s, ms, ms / n, r.newton_per_step,
+                  names[kind], n, r.nv, r.steps_per_s, ms, ms / n, r.newton_per_step,
                   r.nnz, r.factor_ms);
       std::fflush(stdout);
     }

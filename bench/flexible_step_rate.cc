@@ -25,11 +25,15 @@
 /// largest relative deviation of the energy and of the linear and angular
 /// momentum over 10 s at three step sizes (docs/validation.md).
 ///
-/// Usage: flexible_step_rate_bench [--steps S] [--min-seconds T] [--no-large]
+/// Every flexible body runs twice: with full Newton (the default) and with
+/// SolverSettings::jacobian_reuse (modified Newton).
+///
+/// Usage: flexible_step_rate_bench [--steps S] [--min-seconds T] [--no-large] [--modes a,b,...]
 ///        flexible_step_rate_bench --conservation
 ///   S: timed steps per repetition (default 2000)
-///   T: minimum total timed wall time per body [s] (default 1.0)
+///   T: minimum total timed wall time per body and setting [s] (default 1.0)
 ///   --no-large: skip the 100,000-node model (its reduction takes a while)
+///   --modes: only the bar with these mode counts (no grids), e.g. for perf
 
 #include <time.h>
 
@@ -231,7 +235,7 @@ std::shared_ptr<const reduction::ReducedBody> Reduced(int nodes, int modes, doub
   return r;
 }
 
-std::unique_ptr<Model> FlexibleModel(const std::shared_ptr<const reduction::ReducedBody>& reduced) {
+std::unique_ptr<Model> FlexibleModel(const std::shared_ptr<const reduction::ReducedBody>& reduced, bool reuse) {
   auto m = std::make_unique<Model>();
   m->gravity_W = Vec3::Zero();
   FlexibleBodyData d;
@@ -245,6 +249,7 @@ std::unique_ptr<Model> FlexibleModel(const std::shared_ptr<const reduction::Redu
   m->AddBody(std::make_unique<FlexibleBody>("body", d));
   m->solver.dt = kDt;
   m->solver.rho_inf = 0.8;
+  m->solver.jacobian_reuse = reuse;
   m->Finalize();
   return m;
 }
@@ -266,6 +271,7 @@ std::unique_ptr<Model> RigidModel() {
 
 struct Rate {
   double wall = INFINITY, cpu = INFINITY, newton = 0.0;  // per step [s], iterations per step
+  double factorizations = 0.0;                            // per step
   int reps = 0;
 };
 
@@ -287,6 +293,7 @@ Rate Measure(const std::function<std::unique_ptr<Model>()>& make, int steps, dou
     r.wall = std::min(r.wall, (w1 - w0) / n);
     r.cpu = std::min(r.cpu, (c1 - c0) / n);
     r.newton = double(s1.newton_iterations - s0.newton_iterations) / n;
+    r.factorizations = double(s1.factorizations - s0.factorizations) / n;
     r.reps = rep + 1;
   }
   return r;
@@ -297,7 +304,8 @@ Rate Measure(const std::function<std::unique_ptr<Model>()>& make, int steps, dou
 int main(int argc, char** argv) {
   int steps = 2000;
   double min_seconds = 1.0;
-  bool large = true;
+  bool large = true, grids = true;
+  std::vector<int> mode_list = {8, 20, 50, 100, 160};
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--conservation")) return Conservation();
     if (!std::strcmp(argv[i], "--steps") && i + 1 < argc) {
@@ -306,31 +314,50 @@ int main(int argc, char** argv) {
       min_seconds = std::atof(argv[++i]);
     } else if (!std::strcmp(argv[i], "--no-large")) {
       large = false;
+    } else if (!std::strcmp(argv[i], "--modes") && i + 1 < argc) {
+      mode_list.clear();
+      for (const char* p = argv[++i]; *p;) {
+        char* end = nullptr;
+        mode_list.push_back(static_cast<int>(std::strtol(p, &end, 10)));
+        p = *end == ',' ? end + 1 : end;
+      }
+      grids = false;
     } else {
-      std::fprintf(stderr, "usage: %s [--steps S] [--min-seconds T] [--no-large] | --conservation\n", argv[0]);
+      std::fprintf(stderr,
+                   "usage: %s [--steps S] [--min-seconds T] [--no-large] [--modes a,b,...] | --conservation\n",
+                   argv[0]);
       return 2;
     }
   }
-  std::printf("fixed step %g s, rho_inf 0.8, %d warm-up + %d timed steps per repetition, best of >= 3\n\n",
+  std::printf("fixed step %g s, rho_inf 0.8, %d warm-up + %d timed steps per repetition, best of >= 3\n"
+              "full: full Newton (default); reuse: SolverSettings::jacobian_reuse (modified Newton)\n\n",
               kDt, kWarmupSteps, steps);
   const Rate rigid = Measure(RigidModel, steps, min_seconds);
-  std::printf("| body | FE nodes | modes n | nv | us/step (wall) | us/step (CPU) | steps/s | Newton it./step "
-              "| ratio to rigid (wall) | reps | reduction [s] |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
-  std::printf("| rigid | - | 0 | 6 | %.2f | %.2f | %.0f | %.2f | 1.00 | %d | - |\n", 1e6 * rigid.wall, 1e6 * rigid.cpu,
-              1.0 / rigid.wall, rigid.newton, rigid.reps);
+  std::printf("| body | FE nodes | modes n | nv | full: us/step (wall) | full: us/step (CPU) | full: steps/s (CPU) "
+              "| full: Newton it./step | reuse: us/step (wall) | reuse: us/step (CPU) | reuse: steps/s (CPU) "
+              "| reuse: Newton it./step | reuse: LU/step | reuse / full (CPU) | full / rigid (CPU) "
+              "| reuse / rigid (CPU) | reduction [s] |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| rigid | - | 0 | 6 | %.2f | %.2f | %.0f | %.2f | | | | | | | 1.00 | | - |\n", 1e6 * rigid.wall,
+              1e6 * rigid.cpu, 1.0 / rigid.cpu, rigid.newton);
   std::fflush(stdout);
   auto row = [&](int nodes, int modes, int nx = 0, int ny = 0) {
     double red = 0.0;
     const auto reduced = Reduced(nodes, modes, &red, nx, ny);
     if (nx > 0) nodes = nx * ny;
-    const Rate r = Measure([&] { return FlexibleModel(reduced); }, steps, min_seconds);
-    std::printf("| flexible | %d | %d | %d | %.2f | %.2f | %.0f | %.2f | %.2f | %d | %.1f |\n", nodes, modes, 6 + modes,
-                1e6 * r.wall, 1e6 * r.cpu, 1.0 / r.wall, r.newton, r.wall / rigid.wall, r.reps, red);
+    const Rate f = Measure([&] { return FlexibleModel(reduced, false); }, steps, min_seconds);
+    const Rate r = Measure([&] { return FlexibleModel(reduced, true); }, steps, min_seconds);
+    std::printf("| flexible | %d | %d | %d | %.2f | %.2f | %.0f | %.2f | %.2f | %.2f | %.0f | %.2f | %.3f | %.3f | %.1f "
+                "| %.1f | %.1f |\n",
+                nodes, modes, 6 + modes, 1e6 * f.wall, 1e6 * f.cpu, 1.0 / f.cpu, f.newton, 1e6 * r.wall,
+                1e6 * r.cpu, 1.0 / r.cpu, r.newton, r.factorizations, r.cpu / f.cpu, f.cpu / rigid.cpu,
+                r.cpu / rigid.cpu, red);
     std::fflush(stdout);
   };
-  for (int modes : {8, 20, 50, 100, 160}) row(1000, modes);
+  for (int modes : mode_list) row(1000, modes);
+  if (!grids) return 0;
   // node count at fixed modes: plane beam grids of the same size
-  std::printf("| (grids below: 1 m x 0.5 m plane grids of r = 1 mm beams) | | | | | | | | | | |\n");
+  std::printf("| (grids below: 1 m x 0.5 m plane grids of r = 1 mm beams) | | | | | | | | | | | | | | | | |\n");
   row(0, 20, 40, 25);
   row(0, 20, 125, 80);
   if (large) row(0, 20, 400, 250);

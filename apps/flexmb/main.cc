@@ -91,6 +91,10 @@ int main(int argc, char** argv) {
   std::optional<std::string> frame;
   run->add_option("--speed", speed, "lane-change files only: entry speed [km/h] (default: the file's)");
   run->add_option("--frame", frame, "lane-change files only: frame model, rigid or elastic (default: the file's)");
+  std::optional<double> animation_fps;
+  run->add_option("--animation-fps", animation_fps,
+                  "lane-change files only: write the animation at this many frames per second of simulated time "
+                  "(default: the file's animation_fps, 25)");
 
   CLI::App* truck = app.add_subcommand("truck", "truck lane-change test tools");
   truck->require_subcommand(1);
@@ -152,7 +156,10 @@ int main(int argc, char** argv) {
                      "use the static and normal modes of this modes file (modes.mtx of an exchange set) instead of "
                      "computing them; the interface is the file's");
   reduce->add_flag("--geometric-stiffening", reduce_opt.geometric_stiffening,
-                   "also store the centrifugal geometric stiffness (beam models only)");
+                   "also store the centrifugal geometric stiffness (beams, shells, solids)");
+  reduce->add_option("--units", reduce_opt.units,
+                     "unit system of the FE model, recorded in the body file: SI (default), mm-t-s, mm-kg-ms, "
+                     "mm-kg-s, mm-g-ms, cm-g-s, in-lbf-s; models use SI body files only");
   reduce->add_option("--output,-o", reduce_opt.output, "body file to write (.h5)")->required();
   reduce->add_flag("--json", reduce_opt.json, "print one JSON object instead of text");
 
@@ -176,6 +183,8 @@ int main(int argc, char** argv) {
   if (run->parsed() && flexmb::vehicle::IsLaneChangeFile(model)) {
     return Guarded([&] {
       flexmb::vehicle::LaneChangeOptions o{model, out, speed, frame, dt, false, quiet ? nullptr : stdout};
+      if (animation) o.animation = true;
+      o.animation_fps = animation_fps;
       const flexmb::vehicle::LaneChangeResult r = flexmb::vehicle::RunLaneChange(o);
       if (!r.completed && !r.rolled_over) std::fprintf(stderr, "error: lane change did not complete: %s\n", r.message.c_str());
       return r.completed || r.rolled_over ? 0 : 1;

@@ -3,8 +3,9 @@
 /// Static equilibrium of one ANCF body (planar beam or 3D cable) under large deflection:
 /// Newton's method with load stepping (and optional backtracking). Boundary conditions are held
 /// coordinates (e.g. a clamp holds x, y, x', y' of node 0; a pin x, y).
-/// The engine's SolveStatics (solver/statics.h) needs joints for supports and
-/// has no load stepping; this solver is the direct tool for beam problems.
+/// The engine's SolveStatics (solver/statics.h) works on whole models (joints
+/// as supports, force elements as loads) with automatic load stepping; this
+/// solver is the direct tool for one body with held coordinates.
 
 #include <vector>
 

@@ -62,6 +62,16 @@ class Body {
   virtual void AddForces(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q,
                          Eigen::Ref<MatX> dQdq, Eigen::Ref<MatX> dQdv) const = 0;
 
+  /// Adds the generalized forces of AddForces to Q (nv) without their
+  /// derivatives, for Newton iterations that keep an earlier iteration
+  /// matrix (SolverSettings::jacobian_reuse), and returns true. The default
+  /// adds nothing and returns false: the caller then uses AddForces (worth
+  /// overriding where the derivatives cost more than the forces).
+  virtual bool AddForceVector(const double* /*q*/, const double* /*v*/, const Vec3& /*g_W*/,
+                              Eigen::Ref<VecX> /*Q*/) const {
+    return false;
+  }
+
   /// Sparsity of the body's own nv x nv blocks (mass matrix, and dQdq, dQdv
   /// of AddForces): appends the structurally non-zero (row, column) pairs, in
   /// the body's velocity indices, to `entries` (duplicates allowed) and

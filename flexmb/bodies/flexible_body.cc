@@ -9,7 +9,6 @@
 namespace flexmb {
 namespace {
 
-Quat QuatOf(const double* q) { return Quat(q[3], q[4], q[5], q[6]); }
 
 // the reduced body, checked before the members that refer to it are built
 const reduction::InertiaInvariants& CheckedInvariants(const std::string& name, const FlexibleBodyData& d) {
@@ -66,6 +65,25 @@ FlexibleBody::FlexibleBody(std::string name, FlexibleBodyData data)
   theta_cols_.setZero(6 + n_, 3);
   nu_.setZero(6 + n_);
   stiffening_ = MakeGeometricStiffening(this->name(), *data_.reduced, data_.geometric_stiffening);
+  const auto diagonal = [](const MatX& a) {
+    MatX off = a;
+    off.diagonal().setZero();
+    return (off.array() == 0.0).all();
+  };
+  if (diagonal(data_.reduced->stiffness)) stiffness_diag_ = data_.reduced->stiffness.diagonal();
+  if (diagonal(damping_)) damping_diag_ = damping_.diagonal();
+}
+
+void FlexibleBody::AddElasticAndDamping(const double* w, const double* wd, Eigen::Ref<VecX> Q) const {
+  const Eigen::Map<const VecX> wv(w, n_), wdv(wd, n_);
+  if (stiffness_diag_.size() == n_ && n_ > 0)
+    Q.tail(n_).array() -= stiffness_diag_.array() * wv.array();
+  else
+    Q.tail(n_).noalias() -= data_.reduced->stiffness * wv;
+  if (damping_diag_.size() == n_ && n_ > 0)
+    Q.tail(n_).array() -= damping_diag_.array() * wdv.array();
+  else
+    Q.tail(n_).noalias() -= damping_ * wdv;
 }
 
 Eigen::Block<const MatX, 3, Eigen::Dynamic> FlexibleBody::Ht(int node) const {
@@ -123,7 +141,7 @@ void FlexibleBody::InitialCoordinates(double* q, double* v) const {
 
 void FlexibleBody::Retract(const double* q, const double* dx, double* q_out) const {
   for (int k = 0; k < 3; ++k) q_out[k] = q[k] + dx[k];
-  Quat r = QuatOf(q) * ExpQuat(Vec3(dx[3], dx[4], dx[5]));
+  Quat r = BodyQuat(q) * ExpQuat(Vec3(dx[3], dx[4], dx[5]));
   r.normalize();
   q_out[3] = r.w(), q_out[4] = r.x(), q_out[5] = r.y(), q_out[6] = r.z();
   for (int i = 0; i < n_; ++i) q_out[7 + i] = q[7 + i] + dx[6 + i];
@@ -134,7 +152,7 @@ void FlexibleBody::MassMatrix(const double* q, MatX& M) const {
   if (M.rows() != N || M.cols() != N) M.resize(N, N);
   inertia_.MassMatrix(q + 7, M);
   // M_W = T^T M_B T with nu_B = T nu_W, T = diag(R^T, I, I)
-  const Mat3 R = QuatOf(q).toRotationMatrix();
+  const Mat3 R = BodyQuat(q).toRotationMatrix();
   mass_rows_.noalias() = R * M.topRows<3>();
   M.topRows<3>() = mass_rows_;
   mass_cols_.noalias() = M.leftCols<3>() * R.transpose();
@@ -144,10 +162,9 @@ void FlexibleBody::MassMatrix(const double* q, MatX& M) const {
 void FlexibleBody::AddForces(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q,
                              Eigen::Ref<MatX> dQdq, Eigen::Ref<MatX> dQdv) const {
   const int n = n_, N = 6 + n_;
-  const Mat3 R = QuatOf(q).toRotationMatrix();
+  const Mat3 R = BodyQuat(q).toRotationMatrix();
   const Vec3 vW(v[0], v[1], v[2]), om(v[3], v[4], v[5]);
   const Vec3 vb = R.transpose() * vW, gb = R.transpose() * g_W;
-  const Eigen::Map<const VecX> w(q + 7, n), wd(v + 6, n);
   inertia_.Evaluate(vb, om, q + 7, v + 6, gb, true);
   const VecX& F = inertia_.F();
   const MatX& K = data_.reduced->stiffness;
@@ -155,8 +172,7 @@ void FlexibleBody::AddForces(const double* q, const double* v, const Vec3& g_W, 
   // forces: v rows turned to world
   Q.head<3>() += R * F.head<3>();
   Q.segment(3, N - 3) += F.tail(N - 3);
-  Q.tail(n).noalias() -= K * w;
-  Q.tail(n).noalias() -= damping_ * wd;
+  AddElasticAndDamping(q + 7, v + 6, Q);
 
   // d/dv: columns (v_W, om, wd); vb = R^T v_W
   const auto& Fvb = inertia_.dF_dvb();
@@ -183,12 +199,30 @@ void FlexibleBody::AddForces(const double* q, const double* v, const Vec3& g_W, 
   if (stiffening_) stiffening_->Add(om, q + 7, Q.tail(n), dQdv.block(6, 3, n, 3), dQdq.bottomRightCorner(n, n));
 }
 
+bool FlexibleBody::AddForceVector(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q) const {
+  const int n = n_, N = 6 + n_;
+  const Mat3 R = BodyQuat(q).toRotationMatrix();
+  const Vec3 vW(v[0], v[1], v[2]), om(v[3], v[4], v[5]);
+  inertia_.Evaluate(R.transpose() * vW, om, q + 7, v + 6, R.transpose() * g_W, false);
+  const VecX& F = inertia_.F();
+  Q.head<3>() += R * F.head<3>();
+  Q.segment(3, N - 3) += F.tail(N - 3);
+  AddElasticAndDamping(q + 7, v + 6, Q);
+  if (stiffening_) {
+    // -G(om) w, G in the mass scratch
+    auto G = mass_body_.topLeftCorner(n, n);
+    stiffening_->Matrix(om, G);
+    Q.tail(n).noalias() -= G * Eigen::Map<const VecX>(q + 7, n);
+  }
+  return true;
+}
+
 void FlexibleBody::EvaluateMarker(const double* q, const double* v, const Marker& m,
                                   MarkerState& out) const {
   const int n = n_;
   Vec3 s, theta;
   MarkerGeometry(m, q + 7, s, theta);
-  const Mat3 R = QuatOf(q).toRotationMatrix();
+  const Mat3 R = BodyQuat(q).toRotationMatrix();
   Vec3 ws, wn;
   MarkerBodyTwist(v, m, s, ws, wn);
   out.p_WM = Vec3(q[0], q[1], q[2]) + R * s;
@@ -211,7 +245,7 @@ void FlexibleBody::EvaluateMarker(const double* q, const double* v, const Marker
 Vec6 FlexibleBody::MarkerAccelerationBias(const double* q, const double* v, const Marker& m) const {
   Vec3 s, theta;
   MarkerGeometry(m, q + 7, s, theta);
-  const Mat3 R = QuatOf(q).toRotationMatrix();
+  const Mat3 R = BodyQuat(q).toRotationMatrix();
   const Vec3 om(v[3], v[4], v[5]);
   const Eigen::Map<const VecX> wd(v + 6, n_);
   Vec3 hwd = Hm_ * wd;
@@ -229,7 +263,7 @@ void FlexibleBody::AddMarkerWrenchTangent(const double* q, const Marker& m, cons
   const int n = n_;
   Vec3 s, theta;
   MarkerGeometry(m, q + 7, s, theta);
-  const Mat3 Rt = QuatOf(q).toRotationMatrix().transpose();
+  const Mat3 Rt = BodyQuat(q).toRotationMatrix().transpose();
   const Vec3 f_B = Rt * wrench_W.head<3>();
   const Vec3 m_B = Rt * wrench_W.tail<3>();
   const Mat3 Sf = Skew(f_B), Sm = Skew(m_B);
@@ -245,7 +279,7 @@ void FlexibleBody::MarkerTwistTangent(const double* q, const double* v, const Ma
   const int n = n_;
   Vec3 s, theta;
   MarkerGeometry(m, q + 7, s, theta);
-  const Mat3 R = QuatOf(q).toRotationMatrix();
+  const Mat3 R = BodyQuat(q).toRotationMatrix();
   const Vec3 om(v[3], v[4], v[5]);
   Vec3 y, wn;
   MarkerBodyTwist(v, m, s, y, wn);
@@ -263,7 +297,7 @@ double FlexibleBody::KineticEnergy(const double* q, const double* v) const {
 }
 
 double FlexibleBody::GravityPotential(const double* q, const Vec3& g_W) const {
-  const Mat3 R = QuatOf(q).toRotationMatrix();
+  const Mat3 R = BodyQuat(q).toRotationMatrix();
   const double m = data_.reduced->invariants.mvv.trace() / 3.0;
   Vec3 S = first_moment_;
   S.noalias() += data_.reduced->invariants.mvw * Eigen::Map<const VecX>(q + 7, n_);
@@ -275,7 +309,7 @@ Vec6 FlexibleBody::Momentum(const double* q, const double* v) const {
   MassMatrix(q, mass_body_);
   const Eigen::Map<const VecX> nu(v, 6 + n_);
   nu_.noalias() = mass_body_ * nu;
-  const Mat3 R = QuatOf(q).toRotationMatrix();
+  const Mat3 R = BodyQuat(q).toRotationMatrix();
   const Vec3 L = nu_.head<3>();
   Vec6 h;
   h.head<3>() = L;
@@ -284,7 +318,7 @@ Vec6 FlexibleBody::Momentum(const double* q, const double* v) const {
 }
 
 void FlexibleBody::BodyFramePose(const double* q, Vec3& p_WB, Mat3& R_WB) const {
-  R_WB = QuatOf(q).toRotationMatrix();
+  R_WB = BodyQuat(q).toRotationMatrix();
   p_WB = Vec3(q[0], q[1], q[2]);
 }
 
@@ -308,7 +342,7 @@ Vec3 FlexibleBody::NodePosition(const double* q, int node) const {
   CheckNode(node);
   Vec3 u = data_.reduced->mesh.nodes[node].x;
   u.noalias() += Ht(node) * Eigen::Map<const VecX>(q + 7, n_);
-  return Vec3(q[0], q[1], q[2]) + QuatOf(q).toRotationMatrix() * u;
+  return Vec3(q[0], q[1], q[2]) + BodyQuat(q).toRotationMatrix() * u;
 }
 
 Vec3 FlexibleBody::NodeVelocity(const double* q, const double* v, int node) const {
@@ -317,7 +351,7 @@ Vec3 FlexibleBody::NodeVelocity(const double* q, const double* v, int node) cons
   u.noalias() += Ht(node) * Eigen::Map<const VecX>(q + 7, n_);
   Vec3 ud = Vec3(v[3], v[4], v[5]).cross(u);
   ud.noalias() += Ht(node) * Eigen::Map<const VecX>(v + 6, n_);
-  return Vec3(v[0], v[1], v[2]) + QuatOf(q).toRotationMatrix() * ud;
+  return Vec3(v[0], v[1], v[2]) + BodyQuat(q).toRotationMatrix() * ud;
 }
 
 }  // namespace flexmb

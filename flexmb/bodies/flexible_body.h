@@ -71,6 +71,9 @@ class FlexibleBody final : public Body {
   bool HasConstantMass() const override { return false; }
   void AddForces(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q,
                  Eigen::Ref<MatX> dQdq, Eigen::Ref<MatX> dQdv) const override;
+  /// The forces of AddForces without their derivatives (no O(n^2) tangent
+  /// work); returns true.
+  bool AddForceVector(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q) const override;
   void EvaluateMarker(const double* q, const double* v, const Marker& m,
                       MarkerState& out) const override;
   Vec6 MarkerAccelerationBias(const double* q, const double* v, const Marker& m) const override;
@@ -109,6 +112,8 @@ class FlexibleBody final : public Body {
   bool HasGeometricStiffening() const { return stiffening_ != nullptr; }
 
  private:
+  // Q_w -= K w + D wd
+  void AddElasticAndDamping(const double* w, const double* wd, Eigen::Ref<VecX> Q) const;
   // H^t (3 x n), H^r (3 x n) of the marker's node and its offset point
   void MarkerGeometry(const Marker& m, const double* w, Vec3& s, Vec3& theta) const;
   // body-axes twist of the marker at point s (after MarkerGeometry, which
@@ -123,6 +128,9 @@ class FlexibleBody final : public Body {
   FlexibleBodyData data_;
   int n_ = 0;
   MatX damping_;
+  // diagonals of K and D when they are exactly diagonal (empty otherwise):
+  // K w and D wd then cost O(n)
+  VecX stiffness_diag_, damping_diag_;
   FlexibleInertia inertia_;
   Vec3 first_moment_ = Vec3::Zero();  // S0 = m c0 in body axes [kg m]
   mutable Eigen::Matrix3Xd Hm_;       // scratch: marker modal translation H^t - skew(d) H^r

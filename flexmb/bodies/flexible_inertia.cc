@@ -1,43 +1,111 @@
 #include "flexmb/bodies/flexible_inertia.h"
 
+#include <algorithm>
+
 namespace flexmb {
+namespace {
+
+// symmetric 3 x 3 matrix from row k of a stacked contraction (entries 00,
+// 11, 22, 10, 20, 21)
+Mat3 FlexInertiaUnpack(const Eigen::Matrix<double, Eigen::Dynamic, 6>& g, int k) {
+  Mat3 m;
+  m << g(k, 0), g(k, 3), g(k, 4), g(k, 3), g(k, 1), g(k, 5), g(k, 4), g(k, 5), g(k, 2);
+  return m;
+}
+
+}  // namespace
 
 FlexibleInertia::FlexibleInertia(const reduction::InertiaInvariants& inv) : inv_(inv), n_(inv.n) {
-  const int N = 6 + n_;
+  const int n = n_, N = 6 + n_;
   F_.setZero(N);
   Fvb_.setZero(N, 3);
   Fom_.setZero(N, 3);
   Fgb_.setZero(N, 3);
-  Fwd_.setZero(N, n_);
-  Fw_.setZero(N, n_);
-  Jk_.assign(n_, Mat3::Zero());
-  C_.setZero(3, n_);
-  Cdot_.setZero(3, n_);
-  Ako_.setZero(3, n_);
-  Ckd_.setZero(3, n_);
-  Z_.setZero(3, n_);
-  T_.setZero(3, n_);
-  Y_.setZero(n_, n_);
-  Wq_.setZero(n_, n_);
-  G_.setZero(9 * n_, n_);
-  for (int k = 0; k < n_; ++k) {
-    for (int j = 0; j < n_; ++j) {
-      const Mat3 P = inv_.moo2[static_cast<size_t>(k) * n_ + j] + inv_.moo2[static_cast<size_t>(j) * n_ + k];
-      G_.block<9, 1>(9 * k, j) = Eigen::Map<const Eigen::Matrix<double, 9, 1>>(P.data());
+  Fwd_.setZero(N, n);
+  Fw_.setZero(N, n);
+  Jk_.assign(n, Mat3::Zero());
+  C_.setZero(3, n);
+  Cdot_.setZero(3, n);
+  Ako_.setZero(3, n);
+  Ckd_.setZero(3, n);
+  Z_.setZero(3, n);
+  T_.setZero(3, n);
+  Y_.setZero(n, n);
+  GW_.setZero(n, 6);
+  GWd_.setZero(n, 6);
+  Cw_.setZero(3, n);
+  gw_at_.setZero(n);
+  P_.setZero(n, 6 * n);
+  for (int j = 0; j < n; ++j) {
+    for (int k = j; k < n; ++k) {
+      // P_kj = P_jk is symmetric (moo2[j n + k] = moo2[k n + j]^T)
+      const Mat3 P = inv_.moo2[static_cast<size_t>(k) * n + j] + inv_.moo2[static_cast<size_t>(j) * n + k];
+      P_(k, 6 * j + 0) = P(0, 0);
+      P_(k, 6 * j + 1) = P(1, 1);
+      P_(k, 6 * j + 2) = P(2, 2);
+      P_(k, 6 * j + 3) = 0.5 * (P(1, 0) + P(0, 1));
+      P_(k, 6 * j + 4) = 0.5 * (P(2, 0) + P(0, 2));
+      P_(k, 6 * j + 5) = 0.5 * (P(2, 1) + P(1, 2));
     }
   }
-  GW_.setZero(9 * n_, 2);
+  Mw_.setZero(3 * n, n);
+  for (int i = 0; i < n; ++i) Mw_.col(i) = Eigen::Map<const Eigen::VectorXd>(inv_.mow1[i].data(), 3 * n);
+}
+
+bool FlexibleInertia::HasContraction(const double* w) const {
+  return gw_valid_ && std::equal(w, w + n_, gw_at_.data());
+}
+
+void FlexibleInertia::ContractSecondOrder(const double* w, const double* wd, const Vec3& om, bool with_w,
+                                          bool with_wd) const {
+  const int n = n_;
+  const Eigen::Map<const Eigen::VectorXd> wv(w, n), wdv(wd, n);
+  // Wq weights: 1/2 om^T P om = sum_r c_r p_r
+  double c[6] = {0.5 * om(0) * om(0), 0.5 * om(1) * om(1), 0.5 * om(2) * om(2),
+                 om(1) * om(0),       om(2) * om(0),       om(2) * om(1)};
+  if (with_w) {
+    GW_.setZero();
+    gw_valid_ = false;
+  }
+  if (with_wd) GWd_.setZero();
+  auto Wq = Fw_.bottomRows(n);
+  // column j: the blocks P_kj, k >= j; the entries k > j act on row j too
+  for (int j = 0; j < n; ++j) {
+    const int len = n - j;
+    if (with_wd) Wq.col(j).segment(j, len).setZero();
+    for (int r = 0; r < 6; ++r) {
+      const auto x = P_.col(6 * j + r).segment(j, len);
+      if (with_w) {
+        GW_.col(r).segment(j, len).noalias() += w[j] * x;
+        GW_(j, r) += x.tail(len - 1).dot(wv.segment(j + 1, len - 1));
+      }
+      if (with_wd) {
+        GWd_.col(r).segment(j, len).noalias() += wd[j] * x;
+        GWd_(j, r) += x.tail(len - 1).dot(wdv.segment(j + 1, len - 1));
+        Wq.col(j).segment(j, len).noalias() += c[r] * x;
+      }
+    }
+  }
+  if (with_wd) {
+    // Wq is symmetric: mirror the lower part
+    for (int j = 0; j < n; ++j)
+      for (int k = j + 1; k < n; ++k) Wq(j, k) = Wq(k, j);
+  }
+  if (with_w) {
+    Eigen::Map<Eigen::VectorXd>(Cw_.data(), 3 * n).noalias() = Mw_ * wv;
+    gw_at_ = wv;
+    gw_valid_ = true;
+  }
 }
 
 void FlexibleInertia::MassMatrix(const double* w, Eigen::Ref<Eigen::MatrixXd> out) const {
   const int n = n_;
-  const Eigen::Map<const Eigen::VectorXd> wv(w, n);
-  // sum_ij w_i w_j moo2[i n + j] = 1/2 sum_k w_k sum_j w_j (G_ block k, j)
-  GW_.col(0).noalias() = G_ * wv;
+  // sum_ij w_i w_j moo2[i n + j] = 1/2 sum_k w_k sum_j w_j P_kj
+  if (!HasContraction(w)) ContractSecondOrder(w, nullptr, Vec3::Zero(), true, false);
   Mat3 mvo = inv_.mvo0, moo = inv_.moo0;
   for (int k = 0; k < n; ++k) {
     mvo += w[k] * inv_.mvo1[k];
-    moo += w[k] * (inv_.moo1[k] + 0.5 * Eigen::Map<const Mat3>(GW_.col(0).data() + 9 * k));
+    moo += w[k] * (inv_.moo1[k] + 0.5 * FlexInertiaUnpack(GW_, k));
   }
   out.block<3, 3>(0, 0) = inv_.mvv;
   out.block<3, 3>(0, 3) = mvo;
@@ -46,8 +114,7 @@ void FlexibleInertia::MassMatrix(const double* w, Eigen::Ref<Eigen::MatrixXd> ou
   if (n == 0) return;
   out.block(0, 6, 3, n) = inv_.mvw;
   auto ow = out.block(3, 6, 3, n);
-  ow = inv_.mow0;
-  for (int k = 0; k < n; ++k) ow += w[k] * inv_.mow1[k];
+  ow = inv_.mow0 + Cw_;
   out.block(6, 0, n, 3) = inv_.mvw.transpose();
   out.block(6, 3, n, 3) = ow.transpose();
   out.block(6, 6, n, n) = inv_.mww;
@@ -59,50 +126,43 @@ void FlexibleInertia::Evaluate(const Vec3& vb, const Vec3& om, const double* w, 
   const Mat3& Mvv = inv_.mvv;
   // blocks of M(w) and their rates: A = M_vo, J = M_oo, C = M_ow
   Mat3 A = inv_.mvo0, Adot = Mat3::Zero(), J = inv_.moo0;
-  C_ = inv_.mow0;
-  Cdot_.setZero();
   for (int i = 0; i < n; ++i) {
     A += w[i] * inv_.mvo1[i];
     Adot += wd[i] * inv_.mvo1[i];
     J += w[i] * inv_.moo1[i];
-    Jk_[i] = inv_.moo1[i];
-    C_.noalias() += w[i] * inv_.mow1[i];
-    Cdot_.noalias() += wd[i] * inv_.mow1[i];
   }
-  // moo2 sums through G_: Jk = dJ/dw_k = moo1[k] + sum_j w_j (P_kj + P_jk),
-  // J += 1/2 sum_k w_k (Jk - moo1[k]); with tangents T(:, k) = sum_i wd_i
-  // (P_ik + P_ki) om and Wq(k, j) = om^T P_kj om = 1/2 om^T (G_ block k, j) om
-  // one pass over G_ (column j: the n blocks k, j, kept in cache for the
-  // three uses) instead of one per product
-  const Mat3 oo = 0.5 * om * om.transpose();
-  const Eigen::Map<const Eigen::Matrix<double, 1, 9>> o9(oo.data());
-  GW_.setZero();
-  for (int j = 0; j < n; ++j) {
-    const auto g = G_.col(j);
-    GW_.col(0).noalias() += w[j] * g;
-    if (!tangents) continue;
-    GW_.col(1).noalias() += wd[j] * g;
-    Wq_.col(j).transpose().noalias() = o9 * Eigen::Map<const Eigen::Matrix<double, 9, Eigen::Dynamic>>(g.data(), 9, n);
-  }
+  // moo2 sums through the stacked P: Jk = dJ/dw_k = moo1[k] + sum_j w_j
+  // P_kj, J += 1/2 sum_k w_k (Jk - moo1[k]); with tangents T(:, k) =
+  // sum_i wd_i P_ik om and Wq(k, j) = 1/2 om^T P_kj om
+  const bool with_w = !HasContraction(w);
+  if (with_w || tangents) ContractSecondOrder(w, wd, om, with_w, tangents);
   for (int k = 0; k < n; ++k) {
-    const Eigen::Map<const Mat3> Gw(GW_.col(0).data() + 9 * k);
-    Jk_[k] += Gw;
+    const Mat3 Gw = FlexInertiaUnpack(GW_, k);
+    Jk_[k] = inv_.moo1[k] + Gw;
     J += (0.5 * w[k]) * Gw;
-    if (tangents) T_.col(k) = Eigen::Map<const Mat3>(GW_.col(1).data() + 9 * k) * om;
+    if (tangents) T_.col(k) = FlexInertiaUnpack(GWd_, k) * om;
   }
   Mat3 Jdot = Mat3::Zero();
   for (int i = 0; i < n; ++i) Jdot += wd[i] * Jk_[i];
+  // mow1 in one pass over the stacked Mw_ (C = mow0 + Cw_ is shared with
+  // MassMatrix): Cdot, Ckd(:, k) = mow1[k] wd and Y(:, k) = mow1[k]^T om
   const Eigen::Map<const Eigen::VectorXd> wdv(wd, n);
+  C_ = inv_.mow0 + Cw_;
+  Cdot_.setZero();
+  Eigen::Map<Eigen::VectorXd> cdv(Cdot_.data(), 3 * n);
+  for (int i = 0; i < n; ++i) {
+    const auto col = Mw_.col(i);
+    cdv.noalias() += wd[i] * col;
+    const Eigen::Map<const Eigen::Matrix3Xd> Xi(col.data(), 3, n);
+    Ckd_.col(i).noalias() = Xi * wdv;
+    if (tangents) Y_.col(i).noalias() = Xi.transpose() * om;
+  }
   const Eigen::MatrixXd& B = inv_.mvw;
 
   pv_ = Mvv * vb + A * om + B * wdv;
   po_ = A.transpose() * vb + J * om + C_ * wdv;
   const Vec3 oxv = om.cross(vb);
-  for (int k = 0; k < n; ++k) {
-    Ako_.col(k) = inv_.mvo1[k] * om;
-    Ckd_.col(k).noalias() = inv_.mow1[k] * wdv;
-    Y_.col(k).noalias() = inv_.mow1[k].transpose() * om;
-  }
+  for (int k = 0; k < n; ++k) Ako_.col(k) = inv_.mvo1[k] * om;
 
   // F = M (gb; 0; 0) + k + M (om x vb; 0; 0)
   F_.head<3>() = Mvv * gb - Adot * om - om.cross(pv_) + Mvv * oxv;
@@ -146,7 +206,7 @@ void FlexibleInertia::Evaluate(const Vec3& vb, const Vec3& om, const double* w, 
     const Mat3& Ak = inv_.mvo1[k];
     Fw_.block<3, 1>(3, k) = Ak.transpose() * gx - T_.col(k) - So * Z_.col(k) - Sv * Ako_.col(k);
   }
-  Fw_.bottomRows(n) = Wq_;
+  // Fw_'s modal rows hold Wq (ContractSecondOrder)
 }
 
 }  // namespace flexmb

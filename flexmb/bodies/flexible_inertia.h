@@ -4,9 +4,13 @@
 /// inertia invariants (THEORY sections 4 and 5), in body components, with
 /// their analytic partial derivatives. Cost O(n^2) in the number of modes n,
 /// independent of the FE mesh; no allocation per call (scratch is sized at
-/// construction). Keeps a stacked copy of the second-order invariants moo2
-/// (9 n^2 doubles, 1.8 MB at n = 160) so that each evaluation reads them in
-/// one pass.
+/// construction). Keeps stacked copies of the invariants so that each
+/// evaluation reads them in one pass: the second-order invariants moo2 as the
+/// six distinct entries of the symmetric blocks P_kj = moo2[k n + j] +
+/// moo2[j n + k] = P_jk, of which only k >= j are read (3 n^2 doubles, 0.6 MB
+/// at n = 160), and mow1 as one 3n x n matrix. The contraction G w of the
+/// second-order invariants with the modal coordinates is shared between
+/// MassMatrix and Evaluate at the same w.
 ///
 /// Variables: vb = R^T v_W (velocity of the frame origin, body components),
 /// om (angular velocity, body components), wd (modal velocities), w (modal
@@ -40,14 +44,15 @@ class FlexibleInertia {
   /// Number of modes.
   int n() const { return n_; }
 
-  /// Evaluates F (6 + n) and, with `tangents`, the partials below. Inputs are
+  /// Evaluates F (6 + n) and, with `tangents`, the partials below (without,
+  /// only F, p_v and p_o are updated). Inputs are
   /// body components (see the file comment); w and wd point to n values.
   void Evaluate(const Vec3& vb, const Vec3& om, const double* w, const double* wd, const Vec3& gb,
                 bool tangents) const;
 
   /// Mass matrix M(w) (6 + n square, body components, velocity blocks
   /// (vb, om, wd)) into `out`, equal to reduction::MassMatrix to round-off
-  /// but from the stacked symmetric moo2 (one matrix-vector product).
+  /// but from the stacked symmetric moo2 (one pass).
   void MassMatrix(const double* w, Eigen::Ref<Eigen::MatrixXd> out) const;
 
   /// Results of the last Evaluate call.
@@ -65,12 +70,24 @@ class FlexibleInertia {
   const Vec3& p_o() const { return po_; }
 
  private:
+  // GW_ (n x 6) = contraction of the stacked moo2 with w (column r: entry r
+  // of the symmetric 3 x 3 blocks, order 00, 11, 22, 10, 20, 21); with
+  // `with_wd` also GWd_ with wd and, into Fw_'s modal rows, Wq(k, j) =
+  // 1/2 om^T P_kj om; with `with_w` also Cw_; `with_w` false keeps GW_, Cw_
+  void ContractSecondOrder(const double* w, const double* wd, const Vec3& om, bool with_w, bool with_wd) const;
+  // true if GW_ holds the contraction with w
+  bool HasContraction(const double* w) const;
+
   const reduction::InertiaInvariants& inv_;
   int n_;
-  // G_(9 k + r, j) = (moo2[k n + j] + moo2[j n + k]) entry r (column-major
-  // 3 x 3): every sum over moo2 becomes one matrix product, O(9 n^2)
-  Eigen::MatrixXd G_;
-  mutable Eigen::MatrixXd GW_;          // G_ w, G_ wd
+  // P_(k, 6 j + r) = entry r of P_kj for k >= j (rows above j unused)
+  Eigen::MatrixXd P_;
+  // Mw_(3 j + r, i) = mow1[i](r, j): column i is mow1[i] column-major
+  Eigen::MatrixXd Mw_;
+  mutable Eigen::Matrix<double, Eigen::Dynamic, 6> GW_, GWd_;
+  mutable Eigen::Matrix3Xd Cw_;    // sum_i w_i mow1[i], with GW_
+  mutable Eigen::VectorXd gw_at_;  // the w of GW_ and Cw_
+  mutable bool gw_valid_ = false;
   // scratch, sized at construction
   mutable Eigen::VectorXd F_;
   mutable MatN3 Fvb_, Fom_, Fgb_;
@@ -79,7 +96,7 @@ class FlexibleInertia {
   mutable std::vector<Mat3> Jk_;          // dM_oo/dw_k
   mutable Eigen::Matrix3Xd C_, Cdot_;     // M_ow(w), sum_i wd_i mow1[i]
   mutable Eigen::Matrix3Xd Ako_, Ckd_, Z_, T_;  // mvo1[k] om, mow1[k] wd, dp_o/dw_k, sum_i wd_i (P_ik + P_ki) om
-  mutable Eigen::MatrixXd Y_, Wq_;        // Y(:, k) = mow1[k]^T om; Wq(i, k) = om^T P_ik om
+  mutable Eigen::MatrixXd Y_;             // Y(:, k) = mow1[k]^T om
 };
 
 }  // namespace flexmb

@@ -6,11 +6,6 @@
 #include "flexmb/common/error.h"
 
 namespace flexmb {
-namespace {
-
-Quat QuatOf(const double* q) { return Quat(q[3], q[4], q[5], q[6]); }
-
-}  // namespace
 
 Mat3 InertiaAboutCom(double mass, const Mat3& I_F, const Vec3& p_BF, const Mat3& R_BF,
                      const Vec3& c_B) {
@@ -52,7 +47,7 @@ void RigidBody::InitialCoordinates(double* q, double* v) const {
 
 void RigidBody::Retract(const double* q, const double* dx, double* q_out) const {
   for (int k = 0; k < 3; ++k) q_out[k] = q[k] + dx[k];
-  Quat r = QuatOf(q) * ExpQuat(Vec3(dx[3], dx[4], dx[5]));
+  Quat r = BodyQuat(q) * ExpQuat(Vec3(dx[3], dx[4], dx[5]));
   r.normalize();
   q_out[3] = r.w(), q_out[4] = r.x(), q_out[5] = r.y(), q_out[6] = r.z();
 }
@@ -75,7 +70,7 @@ void RigidBody::AddForces(const double*, const double* v, const Vec3& g_W, Eigen
 
 void RigidBody::EvaluateMarker(const double* q, const double* v, const Marker& m,
                                MarkerState& out) const {
-  const Mat3 R = QuatOf(q).toRotationMatrix();
+  const Mat3 R = BodyQuat(q).toRotationMatrix();
   const Vec3 s_W = R * m.p_BM;
   const Vec3 w_W = R * Vec3(v[3], v[4], v[5]);
   out.p_WM = Vec3(q[0], q[1], q[2]) + s_W;
@@ -92,7 +87,7 @@ void RigidBody::EvaluateMarker(const double* q, const double* v, const Marker& m
 }
 
 Vec6 RigidBody::MarkerAccelerationBias(const double* q, const double* v, const Marker& m) const {
-  const Mat3 R = QuatOf(q).toRotationMatrix();
+  const Mat3 R = BodyQuat(q).toRotationMatrix();
   const Vec3 w(v[3], v[4], v[5]);
   Vec6 b;
   b.head<3>() = R * w.cross(w.cross(m.p_BM));
@@ -103,7 +98,7 @@ Vec6 RigidBody::MarkerAccelerationBias(const double* q, const double* v, const M
 void RigidBody::AddMarkerWrenchTangent(const double* q, const Marker& m, const Vec6& wrench_W,
                                        Eigen::Ref<MatX> dQdq) const {
   // (J^T w)_rot = skew(s) R^T f + R^T m; d(R^T x)/dtheta_B = skew(R^T x)
-  const Mat3 Rt = QuatOf(q).toRotationMatrix().transpose();
+  const Mat3 Rt = BodyQuat(q).toRotationMatrix().transpose();
   const Vec3 f_B = Rt * wrench_W.head<3>();
   const Vec3 m_B = Rt * wrench_W.tail<3>();
   dQdq.bottomRightCorner<3, 3>() += Skew(m.p_BM) * Skew(f_B) + Skew(m_B);
@@ -112,7 +107,7 @@ void RigidBody::AddMarkerWrenchTangent(const double* q, const Marker& m, const V
 void RigidBody::MarkerTwistTangent(const double* q, const double* v, const Marker& m,
                                    Eigen::Ref<MatX> out) const {
   // v_M = v_C + R (w x s), w_W = R w; R <- R exp(dtheta)
-  const Mat3 R = QuatOf(q).toRotationMatrix();
+  const Mat3 R = BodyQuat(q).toRotationMatrix();
   const Vec3 w(v[3], v[4], v[5]);
   out.setZero();
   out.block<3, 3>(0, 3) = -R * Skew(w.cross(m.p_BM));
@@ -130,7 +125,7 @@ double RigidBody::GravityPotential(const double* q, const Vec3& g_W) const {
 
 Vec6 RigidBody::Momentum(const double* q, const double* v) const {
   const Vec3 p(q[0], q[1], q[2]), vc(v[0], v[1], v[2]), w(v[3], v[4], v[5]);
-  const Mat3 R = QuatOf(q).toRotationMatrix();
+  const Mat3 R = BodyQuat(q).toRotationMatrix();
   Vec6 h;
   h.head<3>() = data_.mass * vc;
   h.tail<3>() = p.cross(data_.mass * vc) + R * (data_.inertia_C * w);
@@ -138,7 +133,7 @@ Vec6 RigidBody::Momentum(const double* q, const double* v) const {
 }
 
 void RigidBody::BodyFramePose(const double* q, Vec3& p_WB, Mat3& R_WB) const {
-  R_WB = QuatOf(q).toRotationMatrix();
+  R_WB = BodyQuat(q).toRotationMatrix();
   p_WB = Vec3(q[0], q[1], q[2]) - R_WB * data_.c_B;
 }
 

@@ -1,9 +1,10 @@
-// Reads a model-file body of type ancf_beam or ancf_cable (docs/model-file.md,
+// Reads a model-file body of type ancf_beam, ancf_cable or ancf_beam3d (docs/model-file.md,
 // "ANCF beams"): name, type, length, elements, section {area, inertia} |
 // {diameter}, material {E, rho}, start [3], direction [3] (ancf_cable: or
 // end [3]), normal [3], damping, curvature (ancf_beam), angular_velocity [3]
 // (ancf_cable), load_per_length [3], markers [{name, node | end, position,
-// orientation}]
+// orientation}]; ancf_beam3d: section {area, Iy, Iz, J}, material {E, G | nu,
+// rho}, radius instead of curvature
 #include "flexmb/io/ancf_body_parser.h"
 
 #include <cmath>
@@ -11,6 +12,7 @@
 #include <numbers>
 
 #include "flexmb/ancf/ancf_beam2d_body.h"
+#include "flexmb/ancf/ancf_beam3d_body.h"
 #include "flexmb/ancf/ancf_cable3d_body.h"
 #include "flexmb/common/error.h"
 #include "flexmb/model/model.h"
@@ -115,12 +117,66 @@ void ParseCable(const YAML::Node& node, ParseContext& ctx, std::map<std::string,
   ParseNodeMarkers(node, b, nodes, ctx, lines);
 }
 
+// 3D beam with torsion: section {area, Iy, Iz, J}, material {E, G | nu, rho}
+void ParseBeam3d(const YAML::Node& node, ParseContext& ctx, std::map<std::string, int>& lines) {
+  ctx.CheckKeys(node, {"name", "type", "length", "elements", "section", "material", "start", "direction",
+                       "normal", "radius", "damping", "load_per_length", "markers"});
+  const std::string name = BodyName(node, ctx);
+  const std::string entity = "body '" + name + "'";
+  ctx.SetEntity(entity);
+  ancf::AncfBeam3dData d;
+  d.length = ctx.Positive(node, "length");
+  if (!node["elements"]) ctx.Fail(node, "missing key 'elements' (number of ANCF elements)");
+  d.elements = ctx.Integer(node, "elements", 0);
+  if (d.elements <= 0)
+    ctx.Fail(node["elements"], "'elements' must be a positive whole number, got " + std::to_string(d.elements));
+  const YAML::Node sec = node["section"];
+  if (!sec || !sec.IsMap()) ctx.Fail(sec ? sec : node, "expected 'section' as {area, Iy, Iz, J}");
+  ctx.CheckKeys(sec, {"area", "Iy", "Iz", "J"});
+  d.section.A = ctx.Positive(sec, "area");
+  d.section.Iy = ctx.Positive(sec, "Iy");
+  d.section.Iz = ctx.Positive(sec, "Iz");
+  d.section.J = ctx.Positive(sec, "J");
+  const YAML::Node mat = node["material"];
+  if (!mat || !mat.IsMap()) ctx.Fail(mat ? mat : node, "expected 'material' as {E, G or nu, rho}");
+  ctx.CheckKeys(mat, {"E", "G", "nu", "rho"});
+  d.section.E = ctx.Positive(mat, "E");
+  d.section.rho = ctx.Positive(mat, "rho");
+  if (mat["G"] && mat["nu"]) ctx.Fail(mat, "give either 'G' or 'nu', not both");
+  if (mat["G"]) {
+    d.section.G = ctx.Positive(mat, "G");
+  } else if (mat["nu"]) {
+    const double nu = ctx.Double(mat, "nu", 0.0);
+    if (!(nu > -1.0 && nu < 0.5)) ctx.Fail(mat["nu"], "'nu' must lie in (-1, 0.5)");
+    d.section.G = d.section.E / (2.0 * (1.0 + nu));
+  } else {
+    ctx.Fail(mat, "missing 'G' or 'nu' (shear modulus for the torsion stiffness)");
+  }
+  d.section.damping = ctx.Double(node, "damping", 0.0);
+  if (d.section.damping < 0.0) ctx.Fail(node["damping"], "'damping' must not be negative");
+  d.radius = ctx.Double(node, "radius", 0.0);
+  if (d.radius < 0.0) ctx.Fail(node["radius"], "'radius' must not be negative (0: straight)");
+  d.start_W = ctx.Vector3(node, "start", Vec3::Zero());
+  d.direction_W = ctx.Vector3(node, "direction", Vec3::UnitX());
+  if (!(d.direction_W.norm() > 0.0)) ctx.Fail(node["direction"], "'direction' must not be zero");
+  d.normal_W = ctx.Vector3(node, "normal", Vec3::Zero());
+  d.load_per_length_W = ctx.Vector3(node, "load_per_length", Vec3::Zero());
+  auto body = ctx.Guard(node, [&] { return std::make_unique<ancf::AncfBeam3dBody>(name, d); });
+  const int nodes = body->nodes();
+  const int b = ctx.Guard(node["name"], [&] { return ctx.model().AddBody(std::move(body)); });
+  lines[entity] = ParseContext::Line(node);
+  ParseNodeMarkers(node, b, nodes, ctx, lines);
+}
+
 }  // namespace
 
-bool IsAncfBodyType(const std::string& type) { return type == "ancf_beam" || type == "ancf_cable"; }
+bool IsAncfBodyType(const std::string& type) {
+  return type == "ancf_beam" || type == "ancf_cable" || type == "ancf_beam3d";
+}
 
 void ParseAncfBody(const YAML::Node& node, ParseContext& ctx, std::map<std::string, int>& lines) {
   if (node["type"].Scalar() == "ancf_cable") return ParseCable(node, ctx, lines);
+  if (node["type"].Scalar() == "ancf_beam3d") return ParseBeam3d(node, ctx, lines);
   ctx.CheckKeys(node, {"name", "type", "length", "elements", "section", "material", "start", "direction",
                        "normal", "damping", "curvature", "load_per_length", "markers"});
   const std::string name = BodyName(node, ctx);

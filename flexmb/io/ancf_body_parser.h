@@ -1,8 +1,8 @@
 #pragma once
 /// \file ancf_body_parser.h
 /// Model-file entries for ANCF bodies (reference: docs/model-file.md,
-/// "ANCF beams"): a body with `type: ancf_beam` (planar beam) or
-/// `type: ancf_cable` (3D cable).
+/// "ANCF beams"): a body with `type: ancf_beam` (planar beam),
+/// `type: ancf_cable` (3D cable) or `type: ancf_beam3d` (3D beam with torsion).
 
 #include <yaml-cpp/yaml.h>
 

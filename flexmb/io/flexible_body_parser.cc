@@ -9,11 +9,14 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "flexmb/bodies/flexible_body.h"
 #include "flexmb/common/error.h"
 #include "flexmb/common/log.h"
 #include "flexmb/io/body_file.h"
+#include "flexmb/io/unit_system.h"
 #include "flexmb/model/model.h"
 
 namespace flexmb {
@@ -85,6 +88,15 @@ void ParseFlexibleBody(const YAML::Node& node, ParseContext& ctx, std::map<std::
   } catch (const InputError& e) {
     ctx.Fail(node["file"], "cannot use body file " + Quote(path.string()) + ": " + e.what());
   }
+  // units: another system is an error, an unknown or implausible one a warning
+  std::vector<std::string> unit_warnings;
+  try {
+    unit_warnings = io::CheckBodyUnits(*reduced, path.string());
+  } catch (const InputError& e) {
+    ctx.Fail(node["file"], e.what());
+  }
+  for (const std::string& w : unit_warnings)
+    LogWarning(ctx.file() + ":" + std::to_string(ParseContext::Line(node["file"])) + ": " + entity + ": " + w);
   const int n = reduced->invariants.n;
 
   FlexibleBodyData d;

@@ -293,7 +293,7 @@ void ParseSolver(const YAML::Node& node, ParseContext& ctx) {
   ctx.SetEntity("solver");
   ctx.CheckKeys(node, {"t_end", "dt", "dt_min", "dt_max", "rho_inf", "adaptive", "rtol", "atol",
                        "newton_tol", "max_newton", "geometric_stiffness", "assembly_tol",
-                       "redundancy_tol"});
+                       "redundancy_tol", "jacobian_reuse", "jacobian_reuse_rate"});
   SolverSettings& s = ctx.model().solver;
   auto positive = [&](const char* key, double fallback) {
     const double x = ctx.Double(node, key, fallback);
@@ -318,6 +318,10 @@ void ParseSolver(const YAML::Node& node, ParseContext& ctx) {
   s.max_newton = ctx.Integer(node, "max_newton", s.max_newton);
   if (s.max_newton < 1) ctx.Fail(node["max_newton"], "'max_newton' must be at least 1");
   s.geometric_stiffness = ctx.Bool(node, "geometric_stiffness", s.geometric_stiffness);
+  s.jacobian_reuse = ctx.Bool(node, "jacobian_reuse", s.jacobian_reuse);
+  s.jacobian_reuse_rate = ctx.Double(node, "jacobian_reuse_rate", s.jacobian_reuse_rate);
+  if (!(s.jacobian_reuse_rate > 0.0 && s.jacobian_reuse_rate < 1.0))
+    ctx.Fail(node["jacobian_reuse_rate"], "'jacobian_reuse_rate' must lie in (0, 1)");
   s.assembly_tol = positive("assembly_tol", s.assembly_tol);
   s.redundancy_tol = positive("redundancy_tol", s.redundancy_tol);
   if (s.redundancy_tol >= 1.0) ctx.Fail(node["redundancy_tol"], "'redundancy_tol' must be below 1");

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "flexmb/common/error.h"
+#include "flexmb/common/log.h"
 #include "flexmb/fe/assembly.h"
 #include "flexmb/fe/fe_model.h"
 #include "flexmb/io/command_support.h"
@@ -21,6 +22,7 @@
 #include "flexmb/io/json_text.h"
 #include "flexmb/io/matrix_text.h"
 #include "flexmb/io/modes_file.h"
+#include "flexmb/io/unit_system.h"
 #include "flexmb/reduction/craig_bampton.h"
 #include "flexmb/reduction/craig_bampton_basis.h"
 
@@ -111,6 +113,8 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
     throw InputError("give either --rayleigh or --damping-ratio, not both");
   }
 
+  const UnitSystem& units = ParseUnitsOption(opt.units);
+
   reduction::ReductionOptions ro;
   ro.normal_modes = opt.modes >= 0 ? opt.modes : 10;
   ro.cutoff_hz = opt.cutoff_hz;
@@ -160,7 +164,7 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
   const Clock::time_point t1 = Clock::now();
 
   reduction::ReductionTimings t;
-  const reduction::ReducedBody body = InFile(path, [&] {
+  reduction::ReducedBody body = InFile(path, [&] {
     if (!imported_modes) return reduction::ReduceCraigBampton(model, ro, &t);
     const Clock::time_point ta = Clock::now();
     const fe::AssembledModel a = fe::BuildMatrices(model, fe::AssemblyOptions{});
@@ -169,6 +173,11 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
     return reduction::ReduceBasis(model, a, basis, ro, &t);
   });
   const Clock::time_point t2 = Clock::now();
+  // the FE model's units as given; numbers that do not look like them (SI only) warn
+  body.units = units.attribute;
+  if (&units == &SiUnits()) {
+    for (const std::string& w : UnitPlausibilityWarnings(body, opt.output)) LogWarning(w);
+  }
   InFile(opt.output, [&] { WriteBody(body, opt.output); });
   const Clock::time_point t3 = Clock::now();
 

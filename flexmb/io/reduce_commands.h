@@ -36,9 +36,13 @@ struct ReduceOptions {
   /// set it was written with). Then `interface`, `modes`, `cutoff_hz` and
   /// `fix` must not be given. Empty: compute the basis.
   std::string modes_file;
-  /// Also compute the centrifugal geometric stiffness (beam models only;
-  /// reduction/geometric_stiffness.h).
+  /// Also compute the centrifugal geometric stiffness (beams, shells and
+  /// solids; reduction/geometric_stiffness.h).
   bool geometric_stiffening = false;
+  /// Unit system of the FE model, recorded in the body file (a key of
+  /// KnownUnitSystems, io/unit_system.h; default SI). A model file uses
+  /// only SI body files; the others are refused when loaded.
+  std::string units = "SI";
   std::string output;      ///< body file to write (.h5), required
   bool json = false;       ///< one JSON object instead of text
 };

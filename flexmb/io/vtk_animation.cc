@@ -137,6 +137,19 @@ ShapeMesh MakeShapeMesh(const Model& model, int body, int segments) {
   return m;
 }
 
+ShapeMesh MakeMeshShape(int body, const fe::Mesh& mesh) {
+  ShapeMesh m;
+  m.body = body;
+  m.points_B.reserve(mesh.nodes.size());
+  for (const fe::Node& n : mesh.nodes) m.points_B.push_back(n.x);
+  for (const fe::Element& e : mesh.elements) {
+    m.cell_types.push_back(CellType(e.type));
+    m.cell_sizes.push_back(static_cast<int>(e.nodes.size()));
+    m.connectivity.insert(m.connectivity.end(), e.nodes.begin(), e.nodes.end());
+  }
+  return m;
+}
+
 VtkAnimationWriter::VtkAnimationWriter(const std::string& dir, const Model& model)
     : model_(model), dir_(dir), pvd_((std::filesystem::path(dir) / "anim.pvd").string()) {
   std::error_code ec;
@@ -190,6 +203,29 @@ VtkAnimationWriter::~VtkAnimationWriter() {
   if (pvd_file_) std::fclose(pvd_file_);
 }
 
+void VtkAnimationWriter::AddShapeMesh(ShapeMesh mesh) {
+  const ErrorContext ctx{pvd_, 0, "animation mesh"};
+  if (frames() > 0) throw InputError("a mesh cannot be added after the first frame", ctx);
+  if (mesh.body < 0 || mesh.body >= static_cast<int>(model_.bodies.size()))
+    throw InputError("body index " + std::to_string(mesh.body) + " out of range", ctx);
+  if (mesh.cell_sizes.size() != mesh.cell_types.size())
+    throw InputError("cell sizes and types differ in number", ctx);
+  size_t conn = 0;
+  for (int size : mesh.cell_sizes) {
+    if (size <= 0) throw InputError("cell without vertices", ctx);
+    conn += static_cast<size_t>(size);
+  }
+  if (conn != mesh.connectivity.size()) throw InputError("connectivity does not match the cell sizes", ctx);
+  const int n = static_cast<int>(mesh.points_B.size());
+  for (int v : mesh.connectivity)
+    if (v < 0 || v >= n) throw InputError("vertex index " + std::to_string(v) + " out of range", ctx);
+  if (mesh.points_B.empty()) return;
+  n_points_ += n;
+  n_cells_ += static_cast<int>(mesh.cell_types.size());
+  n_conn_ += static_cast<int>(mesh.connectivity.size());
+  meshes_.push_back(std::move(mesh));
+}
+
 std::string VtkAnimationWriter::FramePath(int i) const {
   char name[32];
   std::snprintf(name, sizeof(name), "frame_%05d.vtu", i);
@@ -205,17 +241,9 @@ void VtkAnimationWriter::UpdateFlexMesh(FlexMesh& m, const double* w) {
   for (int t = 0; t < 2; ++t) {
     const reduction::StressTable& table = *tables[t];
     if (table.elements.empty() || table.modes.cols() != n) continue;
-    m.stress[t].noalias() = table.modes * wv;
-    const int nc = table.Components();
-    for (size_t k = 0; k < table.elements.size(); ++k) {
-      double vm = 0.0;
-      for (int l = 0; l < table.Locations(); ++l) {
-        const auto point = m.stress[t].segment(table.Row(static_cast<int>(k), l, 0), nc);
-        vm = std::max(vm, nc == 3 ? reduction::VonMises(Vec3(point))
-                                  : reduction::VonMises(Eigen::Matrix<double, 6, 1>(point)));
-      }
-      m.von_mises[m.cell_of_element[table.elements[k]]] = vm;
-    }
+    reduction::ElementVonMises(table, wv, m.stress[t], m.element_von_mises[t]);
+    for (size_t k = 0; k < table.elements.size(); ++k)
+      m.von_mises[m.cell_of_element[table.elements[k]]] = m.element_von_mises[t](static_cast<Eigen::Index>(k));
   }
 }
 

@@ -33,6 +33,9 @@ namespace flexmb {
 class Model;
 struct State;
 class FlexibleBody;
+namespace fe {
+struct Mesh;
+}
 
 /// Vertices and cells of one body's shape in the user's body frame.
 struct ShapeMesh {
@@ -48,6 +51,12 @@ struct ShapeMesh {
 /// Throws InputError naming the body if a size is not positive.
 ShapeMesh MakeShapeMesh(const Model& model, int body, int segments = 24);
 
+/// The elements of an FE mesh as the cells of a shape of body `body` (cell
+/// types as for flexible bodies' meshes), vertices at the nodes' positions
+/// in the mesh's basic frame taken as the user's body frame: the undeformed
+/// mesh moving with the body, e.g. a rigid body standing for an FE part.
+ShapeMesh MakeMeshShape(int body, const fe::Mesh& mesh);
+
 /// Writer of the frames and the .pvd collection of one run.
 class VtkAnimationWriter {
  public:
@@ -57,6 +66,13 @@ class VtkAnimationWriter {
   ~VtkAnimationWriter();
   VtkAnimationWriter(const VtkAnimationWriter&) = delete;
   VtkAnimationWriter& operator=(const VtkAnimationWriter&) = delete;
+
+  /// Adds a mesh fixed to body mesh.body (vertices in its user's body
+  /// frame), drawn like a shape (body_id, zero displacement and stress),
+  /// e.g. MakeMeshShape of a rigid part or road markings on the ground.
+  /// Before the first frame only; throws InputError otherwise, or for a body
+  /// index, vertex index or cell size out of range.
+  void AddShapeMesh(ShapeMesh mesh);
 
   /// Writes frame number frames() at time state.t [s] with the body poses of
   /// `state`, then appends it to anim.pvd.
@@ -80,6 +96,7 @@ class VtkAnimationWriter {
     std::vector<int> cell_of_element;       // mesh element -> cell
     VecX u;                                 // scratch: modes * w, 6 per node
     VecX stress[2];                         // scratch: shell, solid table values
+    VecX element_von_mises[2];              // scratch: per element of the shell, solid table
     std::vector<double> von_mises;          // scratch: per cell
   };
   void AppendToPvd(double t);

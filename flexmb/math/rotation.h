@@ -17,6 +17,10 @@ using Quat = Eigen::Quaterniond;
 /// Skew-symmetric matrix with skew(a) * b = a x b.
 Mat3 Skew(const Vec3& a);
 
+/// The orientation quaternion of a body's position coordinates q = (p, quat
+/// wxyz) (rigid and flexible bodies alike): Quat(q[3], q[4], q[5], q[6]).
+inline Quat BodyQuat(const double* q) { return Quat(q[3], q[4], q[5], q[6]); }
+
 /// Exponential map: unit quaternion of the rotation vector `phi` [rad].
 /// Exact for all angles; uses a Taylor series below 1e-4 rad.
 Quat ExpQuat(const Vec3& phi);

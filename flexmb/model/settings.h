@@ -17,6 +17,15 @@ struct SolverSettings {
   double newton_tol = 1e-10;   ///< Newton tolerance on the scaled correction and constraints
   int max_newton = 12;         ///< Newton iterations before the step is cut
   bool geometric_stiffness = true;  ///< include d(B^T lambda)/dq in the iteration matrix
+  /// Modified Newton: keep the factorized iteration matrix over Newton
+  /// iterations and steps while the iteration contracts fast (rate <=
+  /// jacobian_reuse_rate); a fresh matrix when it does not, when the step size
+  /// changes, or when an attempt fails (which is then repeated with full
+  /// Newton). Same convergence test (newton_tol) as full Newton.
+  bool jacobian_reuse = false;
+  /// Largest contraction ||dx_k|| / ||dx_k-1|| accepted with a reused
+  /// iteration matrix, in (0, 1); above it the matrix is refreshed.
+  double jacobian_reuse_rate = 0.2;
   double assembly_tol = 1e-10; ///< position assembly tolerance on ||Phi|| [m]
   double redundancy_tol = 1e-8; ///< relative rank tolerance for redundant constraints
 };

@@ -39,8 +39,8 @@ struct ReductionOptions {
   EigenSolver eigen_solver = EigenSolver::kBlockLanczos;
   /// Also compute the geometric stiffness of the centrifugal load cases
   /// (reduction/geometric_stiffness.h), held at `fixed_nodes` or, without
-  /// them, at the interface nodes. Beam elements only (InputError
-  /// otherwise).
+  /// them, at the interface nodes. Every element type (beams, shells,
+  /// solids); not for imported matrices (InputError).
   bool geometric_stiffening = false;
 };
 

@@ -2,10 +2,17 @@
 
 #include <Eigen/Dense>
 #include <string>
+#include <vector>
 
 #include "flexmb/common/error.h"
 #include "flexmb/fe/assembly.h"
 #include "flexmb/fe/elements/beam2.h"
+#include "flexmb/fe/elements/element_common.h"
+#include "flexmb/fe/elements/shell_quad4.h"
+#include "flexmb/fe/elements/shell_tria3.h"
+#include "flexmb/fe/elements/solid_hex8.h"
+#include "flexmb/fe/elements/solid_tet10.h"
+#include "flexmb/fe/elements/solid_tet4.h"
 #include "flexmb/fe/sparse_cholesky.h"
 
 namespace flexmb::reduction {
@@ -27,6 +34,110 @@ Vec3 CentrifugalAcceleration(int c, const Vec3& x) {
   return a;
 }
 
+namespace {
+
+// the element's node coordinates (into x), section and material, checked
+fe::ElementInput GsResolveElement(const fe::Mesh& mesh, const fe::Element& e, std::vector<fe::Vec3>& x) {
+  const ErrorContext ctx = fe::ElementContext(e);
+  if (static_cast<int>(e.nodes.size()) != fe::NodeCount(e.type))
+    throw InputError("has " + std::to_string(e.nodes.size()) + " nodes, expected " + std::to_string(fe::NodeCount(e.type)),
+                     ctx);
+  x.clear();
+  for (int node : e.nodes) {
+    if (node < 0 || node >= static_cast<int>(mesh.nodes.size()))
+      throw InputError("refers to a node that does not exist (index " + std::to_string(node) + ")", ctx);
+    x.push_back(mesh.nodes[node].x);
+  }
+  fe::ElementInput in;
+  in.element = &e;
+  in.x = x.data();
+  auto section = [&](const auto& list, const char* family) {
+    if (e.property < 0 || e.property >= static_cast<int>(list.size()))
+      throw InputError(std::string("has no ") + family + " section", ctx);
+    return &list[e.property];
+  };
+  int material = -1;
+  switch (e.type) {
+    case fe::ElementType::kQuad4:
+    case fe::ElementType::kTria3:
+      in.shell = section(mesh.shell_sections, "shell");
+      material = in.shell->material;
+      break;
+    case fe::ElementType::kBeam2:
+      in.beam = section(mesh.beam_sections, "beam");
+      material = in.beam->material;
+      break;
+    default: material = section(mesh.solid_sections, "solid")->material; break;
+  }
+  if (material < 0 || material >= static_cast<int>(mesh.materials.size()))
+    throw InputError("its section has no material", ctx);
+  in.material = &mesh.materials[material];
+  return in;
+}
+
+}  // namespace
+
+void ElementGeometricStiffness(const fe::ElementInput& in, const Eigen::VectorXd& u, MatX& KG, double* axial_force) {
+  const fe::Element& e = *in.element;
+  const int nd = fe::NodeCount(e.type) * fe::DofsPerNode(e.type);
+  if (u.size() != nd)
+    throw InputError("prestress displacement has " + std::to_string(u.size()) + " values, expected " + std::to_string(nd),
+                     fe::ElementContext(e));
+  if (axial_force != nullptr) *axial_force = 0.0;
+  switch (e.type) {
+    case fe::ElementType::kBeam2: {
+      MatX S;
+      Eigen::Matrix3d axes;
+      fe::Beam2SectionForces(in, S, axes);
+      const double N = 0.5 * (S.row(0).dot(u) + S.row(6).dot(u));
+      if (axial_force != nullptr) *axial_force = N;
+      fe::Beam2GeometricStiffness(in, N, KG);
+      break;
+    }
+    case fe::ElementType::kQuad4: fe::ShellQuad4GeometricStiffness(in, u, KG); break;
+    case fe::ElementType::kTria3: fe::ShellTria3GeometricStiffness(in, u, KG); break;
+    case fe::ElementType::kTet4: fe::SolidTet4GeometricStiffness(in, u, KG); break;
+    case fe::ElementType::kTet10: fe::SolidTet10GeometricStiffness(in, u, KG); break;
+    case fe::ElementType::kHex8: fe::SolidHex8GeometricStiffness(in, u, KG); break;
+  }
+}
+
+fe::SparseMat AssembleGeometricStiffness(const fe::Mesh& mesh, const fe::DofMap& dofs, const Eigen::VectorXd& u_full) {
+  if (u_full.size() != dofs.n_full)
+    throw InputError("prestress displacement has " + std::to_string(u_full.size()) + " values, expected " +
+                         std::to_string(dofs.n_full),
+                     {mesh.source, 0, "geometric stiffness"});
+  std::vector<Eigen::Triplet<double>> trip;
+  std::vector<fe::Vec3> x;
+  std::vector<int> idx;
+  MatX KG;
+  Eigen::VectorXd ue;
+  for (const fe::Element& e : mesh.elements) {
+    const fe::ElementInput in = GsResolveElement(mesh, e, x);
+    const int dpn = fe::DofsPerNode(e.type);
+    const int nd = static_cast<int>(e.nodes.size()) * dpn;
+    idx.assign(nd, -1);
+    ue.setZero(nd);
+    for (size_t a = 0; a < e.nodes.size(); ++a) {
+      for (int c = 0; c < dpn; ++c) {
+        const int f = dofs.full[e.nodes[a]][c];
+        idx[dpn * a + c] = f;
+        if (f >= 0) ue(dpn * a + c) = u_full(f);
+      }
+    }
+    ElementGeometricStiffness(in, ue, KG);
+    for (int i = 0; i < nd; ++i) {
+      if (idx[i] < 0) continue;
+      for (int j = 0; j < nd; ++j) {
+        if (idx[j] >= 0 && KG(i, j) != 0.0) trip.emplace_back(idx[i], idx[j], KG(i, j));
+      }
+    }
+  }
+  fe::SparseMat kg(dofs.n_full, dofs.n_full);
+  kg.setFromTriplets(trip.begin(), trip.end());
+  return kg;
+}
+
 std::vector<MatX> ComputeGeometricStiffness(const fe::Mesh& mesh, const MatX& modes,
                                             const std::vector<int>& support_nodes, fe::MassForm mass_form,
                                             GeometricStiffnessInfo* info) {
@@ -37,14 +148,6 @@ std::vector<MatX> ComputeGeometricStiffness(const fe::Mesh& mesh, const MatX& mo
     throw InputError("mode matrix has " + std::to_string(modes.rows()) + " rows, expected 6 x " +
                          std::to_string(nn) + " nodes",
                      ctx);
-  for (const fe::Element& e : mesh.elements) {
-    if (e.type != fe::ElementType::kBeam2) {
-      throw InputError(std::string("element ") + std::to_string(e.id) + " is of type " + fe::TypeName(e.type) +
-                           ", which has no geometric stiffness yet (only beam elements do): reduce without "
-                           "geometric stiffening",
-                       {e.origin.file, e.origin.line, "geometric stiffening"});
-    }
-  }
   if (support_nodes.empty() && mesh.constraints.empty()) {
     throw InputError("the static load cases need a support: give interface or fixed nodes", ctx);
   }
@@ -91,33 +194,28 @@ std::vector<MatX> ComputeGeometricStiffness(const fe::Mesh& mesh, const MatX& mo
     info->support_nodes = support_nodes;
     for (auto& v : info->axial_force) v.assign(mesh.elements.size(), 0.0);
   }
-  MatX S, KG, He(12, n);
-  Eigen::Matrix<double, 12, 1> ue;
-  Eigen::Matrix3d axes;
-  fe::Vec3 x[2];
+  MatX KG, He;
+  Eigen::VectorXd ue;
+  std::vector<fe::Vec3> x;
   for (size_t ei = 0; ei < mesh.elements.size(); ++ei) {
     const fe::Element& e = mesh.elements[ei];
-    const fe::BeamSection& sec = mesh.beam_sections.at(e.property);
-    fe::ElementInput in;
-    in.element = &e;
-    x[0] = mesh.nodes[e.nodes[0]].x;
-    x[1] = mesh.nodes[e.nodes[1]].x;
-    in.x = x;
-    in.beam = &sec;
-    in.material = &mesh.materials.at(sec.material);
-    fe::Beam2SectionForces(in, S, axes);
-    for (int end = 0; end < 2; ++end) He.middleRows(6 * end, 6) = modes.middleRows(6 * e.nodes[end], 6);
+    const fe::ElementInput in = GsResolveElement(mesh, e, x);
+    const int dpn = fe::DofsPerNode(e.type);
+    const int nen = static_cast<int>(e.nodes.size());
+    He.resize(dpn * nen, n);
+    for (int k = 0; k < nen; ++k) He.middleRows(dpn * k, dpn) = modes.middleRows(6 * e.nodes[k], dpn);
+    ue.resize(dpn * nen);
     for (int c = 0; c < kCentrifugalCases; ++c) {
-      for (int end = 0; end < 2; ++end) {
-        for (int i = 0; i < 6; ++i) {
-          const int f = a.dofs.full[e.nodes[end]][i];
-          ue(6 * end + i) = f >= 0 ? u_full(f, c) : 0.0;
+      for (int k = 0; k < nen; ++k) {
+        for (int i = 0; i < dpn; ++i) {
+          const int f = a.dofs.full[e.nodes[k]][i];
+          ue(dpn * k + i) = f >= 0 ? u_full(f, c) : 0.0;
         }
       }
-      const double N = 0.5 * (S.row(0).dot(ue) + S.row(6).dot(ue));
+      if (ue.isZero(0.0)) continue;
+      double N = 0.0;
+      ElementGeometricStiffness(in, ue, KG, &N);
       if (info != nullptr) info->axial_force[c][ei] = N;
-      if (N == 0.0) continue;
-      fe::Beam2GeometricStiffness(in, N, KG);
       kg[c].noalias() += He.transpose() * (KG * He);
     }
   }

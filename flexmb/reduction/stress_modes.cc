@@ -170,6 +170,33 @@ VecX PointVonMises(const StressTable& table, const VecX& v) {
   return out;
 }
 
+void ElementVonMises(const StressTable& table, const Eigen::Ref<const VecX>& w, VecX& values, VecX& von_mises) {
+  const int c = table.Components();
+  if ((c != 3 && c != 6) || table.components.front() != "sxx")
+    throw InputError("von Mises: the " + table.name +
+                     " table does not hold stress vectors (sxx syy sxy or sxx ... szx)");
+  const Eigen::Index elements = static_cast<Eigen::Index>(table.elements.size());
+  const int locations = table.Locations();
+  if (w.size() != table.modes.cols())
+    throw InputError("von Mises: " + std::to_string(w.size()) + " modal coordinates for the " + table.name +
+                     " table of " + std::to_string(table.modes.cols()) + " modes");
+  if (table.modes.rows() != elements * locations * c)
+    throw InputError("von Mises: the " + table.name + " table has " + std::to_string(table.modes.rows()) +
+                     " rows, expected " + std::to_string(elements * locations * c));
+  if (values.size() != table.modes.rows()) values.resize(table.modes.rows());
+  if (von_mises.size() != elements) von_mises.resize(elements);
+  values.noalias() = table.modes * w;
+  for (Eigen::Index k = 0; k < elements; ++k) {
+    double vm = 0.0;
+    for (int l = 0; l < locations; ++l) {
+      const Eigen::Index row = table.Row(static_cast<int>(k), l, 0);
+      vm = std::max(vm, c == 3 ? VonMises(Eigen::Vector3d(values.segment<3>(row)))
+                               : VonMises(Eigen::Matrix<double, 6, 1>(values.segment<6>(row))));
+    }
+    von_mises(k) = vm;
+  }
+}
+
 double BeamNormalStress(const Eigen::Matrix<double, 6, 1>& f, const fe::BeamSection& section,
                         double y, double z) {
   const double det = section.Iy * section.Iz - section.Iyz * section.Iyz;

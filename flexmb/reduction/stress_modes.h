@@ -41,6 +41,19 @@ double VonMises(const Eigen::Matrix<double, 6, 1>& s);
 /// size.
 VecX PointVonMises(const StressTable& table, const VecX& v);
 
+/// Largest von Mises stress of each element of a shell or solid table at
+/// the modal coordinates w [Pa]: values = table.modes * w, then
+/// von_mises(k) = max over the element's recovery points (shells: bottom
+/// and top surface; solids: centroid) for the k-th of table.elements. The
+/// one evaluation used by the animation (io/vtk_animation.h) and the truck's
+/// stress hot spots (vehicle/lane_change_test.h). `values` and `von_mises`
+/// are scratch and result, resized only when their size differs (no
+/// allocation on repeated calls). Throws InputError naming the table if
+/// its points are not stress vectors, if w.size() differs from
+/// table.modes.cols() or table.modes has not elements * locations *
+/// components rows.
+void ElementVonMises(const StressTable& table, const Eigen::Ref<const VecX>& w, VecX& values, VecX& von_mises);
+
 /// Normal stress sigma_xx [Pa] at the point (y, z) of a beam section
 /// (element frame, from the section's centroid) from the section forces
 /// f = (N, Vy, Vz, T, My, Mz) (StressModes::beam components), by

@@ -70,6 +70,40 @@ void AddCoupling(SparseMat& S, const MarkerState& ma, const Cols& ca, const Mark
   AddBlock(S, ma.v_offset + ca.first, mb.v_offset + cb.first, b, scale);
 }
 
+/// Checks Body::BlockPattern's contract for the sparse body k: its mass
+/// block at the initial state and its force derivatives there, at rest
+/// velocities and at a perturbed velocity, are zero outside the declared
+/// pattern (the assembler would drop such entries silently). Needs ws.S.
+void CheckBodyPattern(const Model& model, const State& s0, Workspace& ws, int k) {
+  const Body& b = *model.bodies[k];
+  const int n = b.nv();
+  Eigen::Matrix<char, Eigen::Dynamic, Eigen::Dynamic> in = Eigen::Matrix<char, Eigen::Dynamic, Eigen::Dynamic>::Zero(n, n);
+  ForBlockEntries(ws.S, b.v_offset, n, [&in](int, int i, int j) { in(i, j) = 1; });
+  const double* q = s0.q.data() + b.q_offset;
+  VecX Q = VecX::Zero(n);
+  const auto check = [&](const MatX& blk, const char* what) {
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        if (!in(i, j) && blk(i, j) != 0.0)
+          throw InputError(std::string("the body writes entry (") + std::to_string(i) + ", " + std::to_string(j) +
+                               ") of its " + what + " outside its declared block pattern (Body::BlockPattern)",
+                           {"", 0, "body '" + b.name() + "'"});
+  };
+  check(ws.mass[k], "mass matrix");
+  for (int pass = 0; pass < 2; ++pass) {
+    VecX v = s0.v.segment(b.v_offset, n);
+    if (pass == 1)
+      for (int i = 0; i < n; ++i) v(i) += 0.1 * (1 + i % 3);
+    ws.dQdq[k].setZero();
+    ws.dQdv[k].setZero();
+    b.AddForces(q, v.data(), model.gravity_W, Q, ws.dQdq[k], ws.dQdv[k]);
+    check(ws.dQdq[k], "force derivative dQ/dq");
+    check(ws.dQdv[k], "force derivative dQ/dv");
+  }
+  ws.dQdq[k].setZero();
+  ws.dQdv[k].setZero();
+}
+
 }  // namespace
 
 void InitWorkspace(const Model& model, Workspace& ws, const std::vector<int>& removed) {
@@ -189,6 +223,8 @@ void InitWorkspace(const Model& model, Workspace& ws, const std::vector<int>& re
   ws.S.setFromTriplets(ts.begin(), ts.end());
   ws.S.makeCompressed();
   ws.rhs.setZero(nv + ws.n_active);
+  for (int k = 0; k < nb; ++k)
+    if (ws.body_sparse[k]) CheckBodyPattern(model, s0, ws, k);
 }
 
 void EvaluateMarkers(const Model& model, const State& s, Workspace& ws) {
@@ -243,6 +279,10 @@ void EvaluateForces(const Model& model, const State& s, Workspace& ws, bool tang
     if (b.nv() == 0) continue;
     const double* q = s.q.data() + b.q_offset;
     if (!b.HasConstantMass()) b.MassMatrix(q, ws.mass[k]);
+    // without tangents a body that can skips its derivative blocks (left as
+    // they are: the next evaluation with tangents zeroes them first)
+    if (!tangents && b.AddForceVector(q, s.v.data() + b.v_offset, model.gravity_W, ws.Q.segment(b.v_offset, b.nv())))
+      continue;
     if (ws.body_sparse[k]) {
       // the body writes only its pattern entries: zero just those
       MatX& dq = ws.dQdq[k];
@@ -280,7 +320,6 @@ void EvaluateForces(const Model& model, const State& s, Workspace& ws, bool tang
           mj.J.middleCols(cj.first, cj.second).transpose() * e.wrench.tail<6>();
     }
   }
-  (void)tangents;
 }
 
 void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
@@ -297,6 +336,20 @@ void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
     const MatX& Kv = ws.dQdv[k];
     const MatX& Kq = ws.dQdq[k];
     double* val = S.valuePtr();
+    if (!ws.body_sparse[k]) {
+      // dense block: each column's rows are consecutive entries
+      const int n = b.nv(), off = b.v_offset;
+      const int* outer = S.outerIndexPtr();
+      const int* inner = S.innerIndexPtr();
+      for (int j = 0; j < n; ++j) {
+        const int* p = std::lower_bound(inner + outer[off + j], inner + outer[off + j + 1], off);
+        Eigen::Map<VecX> col(val + (p - inner), n);
+        col.noalias() += c.mass * M.col(j);
+        if (c.damping != 0.0) col.noalias() -= c.damping * Kv.col(j);
+        if (c.stiffness != 0.0) col.noalias() -= c.stiffness * Kq.col(j);
+      }
+      continue;
+    }
     ForBlockEntries(S, b.v_offset, b.nv(), [&](int p, int i, int j) {
       val[p] += c.mass * M(i, j);
       if (c.damping != 0.0) val[p] += -c.damping * Kv(i, j);

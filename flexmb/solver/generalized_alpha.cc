@@ -23,9 +23,19 @@ void GeneralizedAlpha::Start(const State& s) {
   a_ = vdot_;
   trial_ = s;
   lam1_.setZero(ws_.n_active);
+  have_matrix_ = false;
 }
 
 StepStatus GeneralizedAlpha::TryStep(const State& s, double h) {
+  if (!model_.solver.jacobian_reuse) return Attempt(s, h, false);
+  const StepStatus st = Attempt(s, h, true);
+  if (st == StepStatus::kConverged || !used_kept_) return st;
+  // the kept matrix may be to blame: repeat with full Newton
+  have_matrix_ = false;
+  return Attempt(s, h, false);
+}
+
+StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
   const Model& m = model_;
   Workspace& ws = ws_;
   const int nv = m.nv, na = ws.n_active;
@@ -49,14 +59,20 @@ StepStatus GeneralizedAlpha::TryStep(const State& s, double h) {
 
   const MatrixCoefficients coef{1.0, gp / bp, 1.0 / bp, m.solver.geometric_stiffness};
   double prev_norm = INFINITY;
+  const double max_rate = m.solver.jacobian_reuse_rate;
+  bool refresh = !reuse || !have_matrix_ || matrix_h_ != h;
+  used_kept_ = false;
   for (int it = 0; it < m.solver.max_newton; ++it) {
     ++stats.newton_iterations;
+    // fresh: iteration matrix at this iterate; else the kept factorization
+    const bool fresh = refresh;
+    refresh = !reuse;
     trial_.lambda.setZero();
     for (int e = 0; e < m.nc; ++e)
       if (ws.row_of_eq[e] >= 0) trial_.lambda(e) = lam1_(ws.row_of_eq[e]);
     EvaluateMarkers(m, trial_, ws);
     EvaluateConstraints(m, trial_, ws);
-    EvaluateForces(m, trial_, ws, true);
+    EvaluateForces(m, trial_, ws, fresh);
     // residual r = M vdot - Q + B^T lambda, scaled by 1/beta'
     MassTimes(m, ws, vdot1_, res_);
     res_ -= ws.Q;
@@ -67,13 +83,20 @@ StepStatus GeneralizedAlpha::TryStep(const State& s, double h) {
       hint_ = "non-finite residual";
       return StepStatus::kNewtonFailed;
     }
-    AssembleIterationMatrix(m, trial_, ws, coef);
-    ++stats.factorizations;
-    if (!lu_.Factorize(ws.S)) {
-      const int c = lu_.singular_column();
-      hint_ = c >= 0 && c < nv ? "singular iteration matrix at velocity coordinate " + std::to_string(c)
-                               : "singular iteration matrix";
-      return StepStatus::kNewtonFailed;
+    if (fresh) {
+      AssembleIterationMatrix(m, trial_, ws, coef);
+      ++stats.factorizations;
+      have_matrix_ = false;
+      if (!lu_.Factorize(ws.S)) {
+        const int c = lu_.singular_column();
+        hint_ = c >= 0 && c < nv ? "singular iteration matrix at velocity coordinate " + std::to_string(c)
+                                 : "singular iteration matrix";
+        return StepStatus::kNewtonFailed;
+      }
+      have_matrix_ = true;
+      matrix_h_ = h;
+    } else {
+      used_kept_ = true;
     }
     lu_.Solve(ws.rhs);
     dx_ = ws.rhs.head(nv);
@@ -92,8 +115,23 @@ StepStatus GeneralizedAlpha::TryStep(const State& s, double h) {
       hint_ = "Newton diverged";
       return StepStatus::kNewtonFailed;
     }
+    // a kept matrix must contract fast, else it is refreshed; its remaining
+    // error, about rate / (1 - rate) |dx|, must be far below the tolerance
+    // (full Newton's is quadratic in |dx|); the first iteration uses the
+    // last rate measured
+    bool accept = norm <= m.solver.newton_tol;
+    if (!fresh) {
+      if (it > 0) {
+        rate_ = norm / prev_norm;
+        if (rate_ > max_rate) refresh = true;
+      }
+      accept = accept && rate_ <= max_rate &&
+               rate_ * norm <= kKeptMatrixErrorFraction * (1.0 - rate_) * m.solver.newton_tol;
+    } else {
+      rate_ = 1.0;  // not measured yet for this matrix
+    }
     prev_norm = norm;
-    if (norm <= m.solver.newton_tol) {
+    if (accept) {
       // converged: error estimate and hand over
       double sum = 0.0;
       const double c = (beta_ - 1.0 / 6.0) * h * h;

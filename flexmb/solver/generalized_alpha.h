@@ -8,6 +8,15 @@
 /// Newton iterates on the tangent correction with the sparse iteration matrix
 ///   [[M + (gamma'/beta') C_t + K_t / beta', B^T], [B, 0]]
 /// (scaled so that its blocks are O(1) for any h; Bottasso et al. 2008).
+/// With SolverSettings::jacobian_reuse the factorized matrix is kept over
+/// iterations and steps (modified Newton) while ||dx_k|| / ||dx_k-1|| stays
+/// at or below SolverSettings::jacobian_reuse_rate; iterations with a kept
+/// matrix evaluate no force derivatives. The convergence test is the same
+/// (||dx|| <= newton_tol), and with a kept matrix an iterate is accepted only
+/// if its contraction rate is within jacobian_reuse_rate and its estimated
+/// remaining error rate / (1 - rate) ||dx|| within kKeptMatrixErrorFraction
+/// newton_tol too. An attempt that fails with a kept matrix is repeated at
+/// once with full Newton.
 
 #include "flexmb/model/model.h"
 #include "flexmb/model/workspace.h"
@@ -30,6 +39,12 @@ enum class StepStatus { kConverged, kNewtonFailed };
 /// One generalized-alpha integrator bound to a model and its workspace.
 class GeneralizedAlpha {
  public:
+  /// With a kept matrix an iterate is accepted when, besides ||dx|| <=
+  /// newton_tol, its estimated remaining error rate / (1 - rate) ||dx|| is at
+  /// most this fraction of newton_tol (full Newton's remaining error is
+  /// quadratic in ||dx||, far below the tolerance).
+  static constexpr double kKeptMatrixErrorFraction = 0.01;
+
   /// rho_inf in [0, 1]: spectral radius at infinite frequency (1 = no
   /// numerical damping).
   GeneralizedAlpha(const Model& model, Workspace& ws, double rho_inf);
@@ -57,12 +72,20 @@ class GeneralizedAlpha {
   IntegratorStats stats;
 
  private:
+  // one attempt; reuse: modified Newton (SolverSettings::jacobian_reuse)
+  StepStatus Attempt(const State& s, double h, bool reuse);
+
   const Model& model_;
   Workspace& ws_;
   SparseLu lu_;
   double am_, af_, gamma_, beta_;
   double error_ = 0.0;
   std::string hint_;
+  // factorization in lu_ usable for steps of size matrix_h_ (modified Newton)
+  bool have_matrix_ = false;
+  double matrix_h_ = 0.0;
+  bool used_kept_ = false;  // the last attempt iterated with a kept matrix
+  double rate_ = 1.0;       // last contraction rate with the kept matrix
   // accepted state of the integrator: a (pseudo-acceleration), vdot
   VecX a_, vdot_;
   // trial values

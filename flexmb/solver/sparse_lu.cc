@@ -2,11 +2,61 @@
 
 #include <klu.h>
 
-#include <Eigen/LU>
+#include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <limits>
 
 namespace flexmb {
+namespace {
+
+// panel width and largest block side of the trailing products of DenseLu
+constexpr int kDenseLuPanel = 16;
+constexpr int kDenseLuChunk = 512;
+
+// In place LU with partial pivoting of the square column-major a, in
+// LAPACK dgetrf's right-looking blocked order: P a = L U (unit L below the
+// diagonal, U on and above), row k swapped with row piv(k) at step k (whole
+// rows). The trailing updates are products of at most chunk x panel and
+// panel x chunk blocks, whose packing buffers (16 x 512 doubles, 64 KB)
+// Eigen keeps on the stack (below EIGEN_STACK_ALLOCATION_LIMIT, 128 KB):
+// no allocation for any size, unlike PartialPivLU's blocked path. A zero
+// pivot leaves its column unscaled (the caller tests the pivots).
+void DenseLu(Eigen::MatrixXd& a, Eigen::VectorXi& piv) {
+  const int n = static_cast<int>(a.rows());
+  for (int k0 = 0; k0 < n; k0 += kDenseLuPanel) {
+    const int nb = std::min(kDenseLuPanel, n - k0);
+    // the panel (columns k0 .. k0 + nb - 1), unblocked
+    for (int k = k0; k < k0 + nb; ++k) {
+      Eigen::Index p = 0;
+      a.col(k).tail(n - k).cwiseAbs().maxCoeff(&p);
+      p += k;
+      piv(k) = static_cast<int>(p);
+      if (p != k) a.row(k).swap(a.row(p));
+      const int m = n - k - 1, c = k0 + nb - k - 1;
+      const double d = a(k, k);
+      if (m == 0) continue;
+      if (d != 0.0) a.col(k).tail(m) /= d;
+      if (c > 0) a.block(k + 1, k + 1, m, c).noalias() -= a.col(k).tail(m) * a.row(k).segment(k + 1, c);
+    }
+    const int rest = n - k0 - nb;
+    if (rest <= 0) break;
+    // U12 = L11^-1 A12 and A22 -= L21 U12, in chunks
+    const auto L11 = a.block(k0, k0, nb, nb).triangularView<Eigen::UnitLower>();
+    for (int c0 = 0; c0 < rest; c0 += kDenseLuChunk) {
+      const int nc = std::min(kDenseLuChunk, rest - c0);
+      auto U12 = a.block(k0, k0 + nb + c0, nb, nc);
+      L11.solveInPlace(U12);
+      for (int r0 = 0; r0 < rest; r0 += kDenseLuChunk) {
+        const int nr = std::min(kDenseLuChunk, rest - r0);
+        a.block(k0 + nb + r0, k0 + nb + c0, nr, nc).noalias() -= a.block(k0 + nb + r0, k0, nr, nb) * U12;
+      }
+    }
+  }
+}
+
+}  // namespace
 
 struct SparseLu::Impl {
   klu_common common;
@@ -15,9 +65,9 @@ struct SparseLu::Impl {
   int n = -1, nnz = -1;
   // dense path, sized when the pattern is set
   bool dense = false, dense_ok = false;
-  Eigen::MatrixXd a;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu;
-  Eigen::VectorXd col_max, tmp;
+  Eigen::MatrixXd a;  // the factors L and U (DenseLu)
+  Eigen::VectorXi piv;
+  Eigen::VectorXd col_max;
   void Free() {
     if (numeric) klu_free_numeric(&numeric, &common);
     if (symbolic) klu_free_symbolic(&symbolic, &common);
@@ -50,10 +100,10 @@ bool SparseLu::Impl::FactorizeDense(const SparseMat& A, int& singular_column, do
       col_max(j) = std::max(col_max(j), std::abs(it.value()));
     }
   }
-  lu.compute(a);
+  DenseLu(a, piv);
   // negligible pivot: round-off of the column's size -> dependent column
   const double tol = n * std::numeric_limits<double>::epsilon();
-  const auto& U = lu.matrixLU();
+  const Eigen::MatrixXd& U = a;
   double umin = std::numeric_limits<double>::infinity(), umax = 0.0;
   int kmin = -1;
   for (int k = 0; k < n; ++k) {
@@ -93,9 +143,8 @@ bool SparseLu::Factorize(const SparseMat& A) {
                                    nnz >= kDenseMinFill * static_cast<double>(n) * n)) {
       k.dense = true;
       k.a.setZero(n, n);
-      k.lu = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
+      k.piv.setZero(n);
       k.col_max.setZero(n);
-      k.tmp.setZero(n);
     } else {
       k.symbolic = klu_analyze(n, Ap, Ai, &k.common);
       if (!k.symbolic) return false;
@@ -131,11 +180,11 @@ bool SparseLu::Factorize(const SparseMat& A) {
 void SparseLu::Solve(VecX& b) {
   Impl& k = *impl_;
   if (k.dense) {
-    // x = U^-1 L^-1 P b, through the preallocated tmp (no temporaries)
-    k.tmp.noalias() = k.lu.permutationP() * b;
-    k.lu.matrixLU().triangularView<Eigen::UnitLower>().solveInPlace(k.tmp);
-    k.lu.matrixLU().triangularView<Eigen::Upper>().solveInPlace(k.tmp);
-    b = k.tmp;
+    // x = U^-1 L^-1 P b in place
+    for (int i = 0; i < k.n; ++i)
+      if (k.piv(i) != i) std::swap(b(i), b(k.piv(i)));
+    k.a.triangularView<Eigen::UnitLower>().solveInPlace(b);
+    k.a.triangularView<Eigen::Upper>().solveInPlace(b);
     return;
   }
   klu_solve(k.symbolic, k.numeric, static_cast<int>(b.size()), 1, b.data(), &k.common);

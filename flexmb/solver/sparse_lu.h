@@ -6,9 +6,11 @@
 /// (klu_refactor) and fall back to a fresh pivoting factorization when it
 /// degrades. Large, mostly dense matrices (a floating-frame flexible body with
 /// many modes fills its whole (6 + n) x (6 + n) block) are factorized instead
-/// as a dense copy by Eigen's blocked PartialPivLU, several times faster than
-/// KLU there (measured in docs/PERFORMANCE.md, "Flexible body step rate").
-/// Both paths allocate only when the pattern changes.
+/// as a dense copy by a blocked LU with partial pivoting (LAPACK dgetrf's
+/// order, Eigen kernels), several times faster than KLU there (measured in
+/// docs/PERFORMANCE.md, "Flexible body step rate"). Both paths allocate only
+/// when the pattern changes, for any size (the dense path keeps its product
+/// blocks small enough for Eigen's stack buffers).
 
 #include <Eigen/SparseCore>
 

@@ -1,6 +1,9 @@
 #include "flexmb/solver/statics.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "flexmb/common/error.h"
 #include "flexmb/solver/assembler.h"
@@ -9,18 +12,11 @@
 namespace flexmb {
 namespace {
 
-/// Residual [Q - B^T lambda ... as B^T lambda - Q ; Phi] at s (active lambda in lam).
-double Residual(const Model& m, const State& s, Workspace& ws, const VecX& lam, VecX& r) {
-  EvaluateMarkers(m, s, ws);
-  EvaluateConstraints(m, s, ws);
-  EvaluateForces(m, s, ws, true);
-  r.head(m.nv) = -ws.Q;
-  r.head(m.nv).noalias() += ws.B.transpose() * lam;
-  r.tail(ws.n_active) = ws.phi;
-  return r.allFinite() ? r.lpNorm<Eigen::Infinity>() : INFINITY;
-}
+// outcome of the Newton iterations of one load increment
+enum class StaticsNewton { kConverged, kFailed, kSingular };
 
-std::string BodyAtColumn(const Model& m, const Workspace& ws, int c) {
+// "body 'b' (velocity coordinate k)" or the joint equation of column c of [v; active lambda]
+std::string StaticsColumnName(const Model& m, const Workspace& ws, int c) {
   if (c >= 0 && c < m.nv)
     for (const auto& b : m.bodies)
       if (c >= b->v_offset && c < b->v_offset + b->nv())
@@ -30,59 +26,210 @@ std::string BodyAtColumn(const Model& m, const Workspace& ws, int c) {
   return "an unknown coordinate";
 }
 
+std::string StaticsNumber(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", x);
+  return buf;
+}
+
+// the solver's state: continuation residual, iterate and bookkeeping
+class StaticsSolver {
+ public:
+  StaticsSolver(const Model& m, State& s, Workspace& ws, const StaticsSettings& set)
+      : m_(m), s_(s), ws_(ws), set_(set), nv_(m.nv), na_(ws.n_active) {
+    lam_ = VecX::Zero(na_);
+    for (int e = 0; e < m_.nc; ++e)
+      if (ws_.row_of_eq[e] >= 0) lam_(ws_.row_of_eq[e]) = s_.lambda(e);
+    r_.resize(nv_ + na_);
+    r0_ = VecX::Zero(nv_ + na_);
+    d_.resize(nv_ + na_);
+    dx_.resize(nv_);
+    q_it_.resize(m_.nq);
+    lam_it_.resize(na_);
+  }
+
+  StaticsResult Solve() {
+    s_.v.setZero();
+    // residual of the true problem at the start: the continuation's r_0
+    const double n0 = Residual(1.0, false);
+    if (!std::isfinite(n0))
+      throw NumericalError("static equilibrium: the forces at the start are not finite at " +
+                           StaticsColumnName(m_, ws_, worst_));
+    r0_ = r_;
+    VecX q_conv = s_.q, lam_conv = lam_;
+    double mu = 0.0, dmu = std::min(1.0, std::max(set_.initial_increment, set_.min_increment));
+    while (mu < 1.0) {
+      const double target = std::min(1.0, mu + dmu);
+      int used = 0;
+      std::string why;
+      StaticsNewton out = StaticsNewton::kFailed;
+      try {
+        out = Newton(target, used);
+      } catch (const NumericalError& e) {
+        why = e.what();
+      }
+      if (out == StaticsNewton::kSingular)
+        throw NumericalError("static equilibrium: singular tangent stiffness at " +
+                             StaticsColumnName(m_, ws_, singular_) +
+                             "; the mechanism has a free motion without stiffness or load path");
+      if (out == StaticsNewton::kConverged) {
+        mu = target;
+        q_conv = s_.q;
+        lam_conv = lam_;
+        ++res_.increments;
+        if (used <= 5) dmu *= 2.0;
+        continue;
+      }
+      // failed: back to the last equilibrium, half the increment
+      ++res_.cuts;
+      const std::string worst = StaticsColumnName(m_, ws_, worst_);
+      const double worst_value = worst_value_;
+      s_.q = q_conv;
+      lam_ = lam_conv;
+      dmu *= 0.5;
+      const bool budget = res_.iterations >= set_.max_total_iterations;
+      if (dmu < set_.min_increment || budget) {
+        StoreLambda();
+        throw NumericalError(
+            "static equilibrium: Newton did not converge beyond load factor " + StaticsNumber(mu) + " of 1 (" +
+            (budget ? "iteration budget of " + std::to_string(set_.max_total_iterations) + " spent"
+                    : "load increment below " + StaticsNumber(set_.min_increment)) +
+            "); largest residual " + StaticsNumber(worst_value) + " at " + worst +
+            (why.empty() ? std::string() : "; " + why));
+      }
+    }
+    StoreLambda();
+    return res_;
+  }
+
+ private:
+  // continuation residual at load factor mu: [B^T lam - Q; phi] - (1 - mu) r0;
+  // its largest entry (infinity if not finite), worst_ its column
+  double Residual(double mu, bool tangents) {
+    EvaluateMarkers(m_, s_, ws_);
+    EvaluateConstraints(m_, s_, ws_);
+    EvaluateForces(m_, s_, ws_, tangents);
+    r_.head(nv_) = -ws_.Q;
+    r_.head(nv_).noalias() += ws_.B.transpose() * lam_;
+    r_.tail(na_) = ws_.phi;
+    r_ -= (1.0 - mu) * r0_;
+    worst_ = -1;
+    worst_value_ = 0.0;
+    for (int k = 0; k < nv_ + na_; ++k) {
+      if (!std::isfinite(r_(k))) {
+        worst_ = k;
+        worst_value_ = INFINITY;
+        return INFINITY;
+      }
+      if (std::abs(r_(k)) > worst_value_) worst_value_ = std::abs(r_(k)), worst_ = k;
+    }
+    return worst_value_;
+  }
+
+  // iterate at q_it_ + a d, lam_it_ + a d; returns s(a) = d . r (NaN if not finite)
+  double Directional(double a, double mu) {
+    dx_ = a * d_.head(nv_);
+    RetractAll(m_, q_it_, dx_, s_.q);
+    lam_ = lam_it_ + a * d_.tail(na_);
+    double n = INFINITY;
+    try {
+      n = Residual(mu, false);
+    } catch (const NumericalError&) {
+      n = INFINITY;
+    }
+    return std::isfinite(n) ? d_.dot(r_) : NAN;
+  }
+
+  // step length along d: a root of s(a) if s changes sign on [0, 1]
+  // (regula falsi, Illinois variant), else 1; halved while not finite
+  double LineSearch(double s0, double mu) {
+    double a = 1.0;
+    double s1 = Directional(a, mu);
+    for (int k = 0; k < 12 && !std::isfinite(s1); ++k) s1 = Directional(a *= 0.5, mu);
+    if (!std::isfinite(s1) || !set_.line_search || s0 == 0.0) return a;
+    if (std::abs(s1) <= 0.8 * std::abs(s0) || (s1 > 0.0) == (s0 > 0.0)) return a;
+    // bracket [lo, hi] with s(lo), s(hi) of opposite signs
+    double lo = 0.0, slo = s0, hi = a, shi = s1, best = a, sbest = std::abs(s1);
+    for (int k = 0; k < 8; ++k) {
+      const double t = std::clamp(hi - shi * (hi - lo) / (shi - slo), lo + 0.05 * (hi - lo), hi - 0.05 * (hi - lo));
+      const double st = Directional(t, mu);
+      if (!std::isfinite(st)) break;
+      if (std::abs(st) < sbest) best = t, sbest = std::abs(st);
+      if (std::abs(st) <= 0.5 * std::abs(s0)) break;
+      if ((st > 0.0) == (shi > 0.0)) {
+        hi = t, shi = st;
+        slo *= 0.5;
+      } else {
+        lo = t, slo = st;
+        shi *= 0.5;
+      }
+    }
+    best = std::max(best, 0.05);
+    Directional(best, mu);
+    return best;
+  }
+
+  // Newton iterations at load factor mu from the current iterate
+  StaticsNewton Newton(double mu, int& used) {
+    SparseLu& lu = lu_;
+    double last_step = INFINITY;
+    for (int it = 0;; ++it) {
+      const double norm = Residual(mu, true);
+      if (!std::isfinite(norm)) return StaticsNewton::kFailed;
+      fscale_ = std::max(fscale_, ws_.Q.lpNorm<Eigen::Infinity>());
+      res_.residual = r_.head(nv_).lpNorm<Eigen::Infinity>();
+      const double phi_norm = na_ > 0 ? r_.tail(na_).lpNorm<Eigen::Infinity>() : 0.0;
+      if (last_step <= set_.tolerance && res_.residual <= set_.residual_tol * fscale_ &&
+          phi_norm <= m_.solver.assembly_tol)
+        return StaticsNewton::kConverged;
+      if (it >= set_.max_iterations || res_.iterations >= set_.max_total_iterations) return StaticsNewton::kFailed;
+      ++res_.iterations;
+      ++used;
+      StoreLambda();
+      AssembleIterationMatrix(m_, s_, ws_, MatrixCoefficients{0.0, 0.0, 1.0, m_.solver.geometric_stiffness});
+      if (!lu.Factorize(ws_.S)) {
+        singular_ = lu.singular_column();
+        // at a converged equilibrium (first iteration of an increment): a mechanism
+        return it == 0 ? StaticsNewton::kSingular : StaticsNewton::kFailed;
+      }
+      ws_.rhs = -r_;
+      lu.Solve(ws_.rhs);
+      d_ = ws_.rhs;
+      if (!d_.allFinite()) return StaticsNewton::kFailed;
+      const double s0 = d_.dot(r_);
+      q_it_ = s_.q;
+      lam_it_ = lam_;
+      const double a = LineSearch(s0, mu);
+      last_step = a * d_.head(nv_).lpNorm<Eigen::Infinity>();
+    }
+  }
+
+  // lam_ into s.lambda (inactive equations 0)
+  void StoreLambda() {
+    s_.lambda.setZero();
+    for (int e = 0; e < m_.nc; ++e)
+      if (ws_.row_of_eq[e] >= 0) s_.lambda(e) = lam_(ws_.row_of_eq[e]);
+  }
+
+  const Model& m_;
+  State& s_;
+  Workspace& ws_;
+  const StaticsSettings& set_;
+  const int nv_, na_;
+  VecX lam_, r_, r0_, d_, dx_, q_it_, lam_it_;
+  SparseLu lu_;
+  StaticsResult res_;
+  double fscale_ = 1.0;
+  int worst_ = -1;
+  double worst_value_ = 0.0;
+  int singular_ = -1;
+};
+
 }  // namespace
 
 StaticsResult SolveStatics(const Model& m, State& s, Workspace& ws, const StaticsSettings& set) {
-  const int nv = m.nv, na = ws.n_active;
-  s.v.setZero();
-  VecX lam = VecX::Zero(na), r(nv + na), dx(nv), q0(m.nq), lam0(na);
-  for (int e = 0; e < m.nc; ++e)
-    if (ws.row_of_eq[e] >= 0) lam(ws.row_of_eq[e]) = s.lambda(e);
-  SparseLu lu;
-  StaticsResult res;
-  double norm = Residual(m, s, ws, lam, r);
-  // force scale for the relative residual test
-  double fscale = std::max(1.0, ws.Q.lpNorm<Eigen::Infinity>());
-  for (int it = 0; it < set.max_iterations; ++it) {
-    res.iterations = it + 1;
-    s.lambda.setZero();
-    for (int e = 0; e < m.nc; ++e)
-      if (ws.row_of_eq[e] >= 0) s.lambda(e) = lam(ws.row_of_eq[e]);
-    AssembleIterationMatrix(m, s, ws, MatrixCoefficients{0.0, 0.0, 1.0, m.solver.geometric_stiffness});
-    if (!lu.Factorize(ws.S))
-      throw NumericalError("static equilibrium: singular tangent stiffness at " +
-                           BodyAtColumn(m, ws, lu.singular_column()) +
-                           "; the mechanism has a free motion without stiffness or load path");
-    ws.rhs = -r;
-    lu.Solve(ws.rhs);
-    dx = ws.rhs.head(nv);
-    const double step_norm = dx.lpNorm<Eigen::Infinity>();
-    // backtracking line search on the residual
-    q0 = s.q;
-    lam0 = lam;
-    double alpha = 1.0, trial = INFINITY;
-    for (int ls = 0; ls < 12; ++ls) {
-      RetractAll(m, q0, alpha * dx, s.q);
-      lam = lam0 + alpha * ws.rhs.tail(na);
-      trial = Residual(m, s, ws, lam, r);
-      if (trial < (1.0 - 1e-4 * alpha) * norm || trial < 1e-14) break;
-      alpha *= 0.5;
-    }
-    norm = trial;
-    fscale = std::max(fscale, ws.Q.lpNorm<Eigen::Infinity>());
-    res.residual = r.head(nv).lpNorm<Eigen::Infinity>();
-    const double phi_norm = na > 0 ? r.tail(na).lpNorm<Eigen::Infinity>() : 0.0;
-    if (alpha * step_norm <= set.tolerance && res.residual <= set.residual_tol * fscale &&
-        phi_norm <= m.solver.assembly_tol) {
-      s.lambda.setZero();
-      for (int e = 0; e < m.nc; ++e)
-        if (ws.row_of_eq[e] >= 0) s.lambda(e) = lam(ws.row_of_eq[e]);
-      return res;
-    }
-  }
-  throw NumericalError("static equilibrium: Newton did not converge in " +
-                       std::to_string(set.max_iterations) + " iterations (residual " +
-                       std::to_string(res.residual) + ")");
+  StaticsSolver solver(m, s, ws, set);
+  return solver.Solve();
 }
 
 }  // namespace flexmb

@@ -2,8 +2,28 @@
 /// \file statics.h
 /// Static equilibrium: find q and lambda with
 ///   Q(q, 0, t) - B(q)^T lambda = 0,  Phi(q, t) = 0
-/// by Newton's method on the tangent stiffness [[K_t, B^T], [B, 0]] with a
-/// backtracking line search on the residual norm.
+/// by Newton's method on the tangent stiffness [[K_t, B^T], [B, 0]], made
+/// robust for large deflection (slender ANCF beams, cables):
+/// - load stepping by residual continuation: with r_0 the residual at the
+///   start (q_0, lambda_0), the solver follows the equilibria of
+///   r(q, lambda) = (1 - mu) r_0 for the load factor mu from 0 to 1. At
+///   mu = 0 the start solves it, at mu = 1 it is the true problem; for a
+///   start without stress (a straight beam) this is proportional loading of
+///   all applied forces. Increments grow after easy steps and are halved
+///   when Newton fails (no convergence, a non-finite residual or an element
+///   that collapses), down to StaticsSettings::min_increment;
+/// - full Newton steps, halved while the residual they lead to is not
+///   finite; optionally (StaticsSettings::line_search) a line search on the
+///   directional derivative of the total potential (Lagrangian) along the
+///   Newton direction, s(a) = d . r(x + a d) (Crisfield, Non-linear Finite
+///   Element Analysis of Solids and Structures, vol. 1, 1991, section 9.4).
+///   It is off by default: along the straight Newton direction a large
+///   rotation of an ANCF beam stretches it, so both the residual norm (the
+///   former backtracking, which stalled) and s(a) ask for short steps,
+///   while the full step is corrected by the next iteration (measured on
+///   the 16-element slender elastica, PL^2/EI = 10, full load at once:
+///   9 iterations with full steps, 1871 with the line search;
+///   docs/design.md, "Engine statics").
 
 #include "flexmb/model/model.h"
 #include "flexmb/model/workspace.h"
@@ -12,22 +32,31 @@ namespace flexmb {
 
 /// Settings of the static solver.
 struct StaticsSettings {
-  int max_iterations = 100;   ///< Newton iterations
+  int max_iterations = 30;    ///< Newton iterations per load increment before the increment is halved
+  int max_total_iterations = 5000;  ///< Newton iterations over all increments
   double tolerance = 1e-10;   ///< on the largest tangent correction [m, rad]
   double residual_tol = 1e-8; ///< on the largest force residual, relative to the largest applied force
+  double initial_increment = 1.0;  ///< first load-factor increment (1: the full load at once)
+  double min_increment = 1e-5;     ///< smallest load-factor increment before giving up
+  bool line_search = false;   ///< line search on s(a) (see the file comment); false: full Newton steps
 };
 
 /// Result of a static solve.
 struct StaticsResult {
-  int iterations = 0;         ///< Newton iterations used
+  int iterations = 0;         ///< Newton iterations used (all increments, failed ones included)
   double residual = 0.0;      ///< final largest force residual [N, N m]
+  int increments = 0;         ///< converged load increments
+  int cuts = 0;               ///< failed increments (each halved the increment)
 };
 
 /// Moves `s` (velocities set to zero, time fixed) to static equilibrium.
 /// The workspace must be initialized (e.g. by MakeConsistent). Throws
 /// NumericalError naming the body whose coordinates have no stiffness when
-/// the tangent is singular (a free or unloaded mechanism), or when Newton
-/// does not converge.
+/// the tangent is singular (a free or unloaded mechanism), and, when the
+/// load increment falls below min_increment or the iteration budget is
+/// spent, naming the load factor reached and the body coordinate or joint
+/// equation with the largest residual; `s` then holds the last converged
+/// equilibrium of the continuation.
 StaticsResult SolveStatics(const Model& model, State& s, Workspace& ws,
                            const StaticsSettings& settings = {});
 

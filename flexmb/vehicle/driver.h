@@ -2,8 +2,30 @@
 /// \file driver.h
 /// Closed-loop driver of the lane-change test: a preview (pure-pursuit)
 /// steering controller following the course centre line and a PI speed
-/// controller acting by a drive torque on the rear axle. Sampled at every
+/// controller acting by a drive torque on the rear axle and, above the
+/// target speed, by the brakes. Sampled at every
 /// accepted time step (zero-order hold, docs/design.md "Vehicle: driver").
+///
+/// Steering laws (DriverData::steering_law):
+/// - kPreview (default): the driver predicts the vehicle's pose `lag_time`
+///   ahead along its current arc (heading + yaw rate x lag_time, rear-axle
+///   centre advanced by V lag_time along the mean heading), looks at the
+///   course centre-line point a distance L_p = max(min_preview,
+///   preview_time V) ahead of the predicted front-axle centre, and steers
+///   the curvature of the arc from the predicted rear-axle centre, tangent
+///   to the predicted heading, through that point (pure pursuit from the
+///   predicted pose: kappa = 2 y_l / (x_l^2 + y_l^2), x_l, y_l the point in
+///   predicted vehicle axes), converted to a road-wheel angle with the
+///   steady-state understeer: delta = atan((L + K V^2 / g) kappa), K the
+///   understeer gradient. The prediction feeds the yaw rate back (it damps
+///   the yaw response and compensates the truck's steering-to-yaw lag);
+///   measuring the preview from the front axle keeps the look-ahead on the
+///   course ahead of the vehicle's actual position. Active in every
+///   section (steer_in_section1: the driver sees the lane change coming).
+/// - kPurePursuit (the first version): pure pursuit from the actual
+///   rear-axle centre to the centre-line point max(min_preview,
+///   preview_time V) ahead of it (in x), no understeer compensation, active
+///   from the front axle entering section 2.
 
 #include <memory>
 
@@ -11,17 +33,31 @@
 
 namespace flexmb::vehicle {
 
+/// Steering law of the Driver (driver.h).
+enum class SteeringLaw { kPreview, kPurePursuit };
+
 /// Gains and limits of the Driver.
 struct DriverData {
+  SteeringLaw steering_law = SteeringLaw::kPreview;  ///< steering controller (file key steering_law: preview, pure_pursuit)
   double steering_ratio = 20.0;       ///< steering-wheel angle / road-wheel angle [-]
-  double preview_time = 1.0;          ///< look-ahead time [s]
-  double min_preview = 8.0;           ///< shortest look-ahead distance [m]
+  /// Look-ahead time [s] (kPreview: from the predicted front axle; the
+  /// first version's pure pursuit used 1.0 s and 8 m from the rear axle).
+  double preview_time = 0.3;
+  double min_preview = 3.0;           ///< shortest look-ahead distance [m]
+  double lag_time = 0.3;              ///< kPreview: prediction horizon of the vehicle's pose [s], >= 0
+  /// kPreview: understeer gradient K [rad per g of lateral acceleration];
+  /// 0.0128 rad/g = 0.73 deg/g, measured by truck_cornering_test.
+  double understeer_gradient = 0.0128;
+  bool steer_in_section1 = true;      ///< kPreview: steer from the start (false: from the front axle entering section 2)
   double max_wheel_angle = 12.566;    ///< steering-wheel angle limit [rad] (2 turns)
   double max_wheel_rate = 12.0;       ///< steering-wheel rate limit [rad/s]
   bool neutral_in_section3 = false;   ///< hold the wheel straight in section 3 (the seed's text)
   double speed_kp = 8000.0;           ///< drive torque per speed error [N m s/m]
   double speed_ki = 2000.0;           ///< drive torque per integrated speed error [N m/m]
-  double max_drive_torque = 20000.0;  ///< |drive torque| limit on the axle [N m]
+  double max_drive_torque = 20000.0;  ///< drive torque limit on the axle [N m]
+  /// Brake torque limit, sum over all wheels [N m], >= 0: when the speed
+  /// is above the target the controller's negative output is a brake torque.
+  double max_brake_torque = 40000.0;
   bool hold_speed = true;             ///< run the speed controller
 };
 
@@ -34,6 +70,8 @@ struct VehicleView {
   double yaw = 0.0;           ///< heading of the vehicle's x axis [rad]
   double speed = 0.0;         ///< forward speed [m/s]
   double wheelbase = 4.0;     ///< [m]
+  double y_front = 0.0;       ///< y of the front-axle centre [m]
+  double yaw_rate = 0.0;      ///< yaw rate of the vehicle [rad/s]
 };
 
 /// The driver. Its outputs live in shared values read by CommandSignal
@@ -51,6 +89,8 @@ class Driver {
   /// Shared outputs.
   std::shared_ptr<const double> steering_wheel_angle() const { return delta_sw_; }
   std::shared_ptr<const double> drive_torque() const { return torque_; }
+  /// Brake torque, sum over all wheels [N m], >= 0.
+  std::shared_ptr<const double> brake_torque() const { return brake_; }
   /// Road-wheel angle commanded [rad] (steering-wheel angle / ratio).
   double road_wheel_angle() const { return *delta_sw_ / data_.steering_ratio; }
   /// The driver's data.
@@ -61,6 +101,7 @@ class Driver {
   const LaneChangeCourse& course_;
   double v_target_;
   std::shared_ptr<double> delta_sw_, torque_;
+  std::shared_ptr<double> brake_ = std::make_shared<double>(0.0);
   double integral_ = 0.0;
   double t_last_ = 0.0;
   bool started_ = false;

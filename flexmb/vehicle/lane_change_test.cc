@@ -22,6 +22,7 @@
 #include "flexmb/vehicle/driver.h"
 #include "flexmb/vehicle/lane_change_course.h"
 #include "flexmb/vehicle/truck.h"
+#include "flexmb/vehicle/truck_animation.h"
 
 namespace flexmb::vehicle {
 namespace {
@@ -42,6 +43,8 @@ struct LaneChangeFile {
   LaneChangeCourseData course;
   DriverData driver;
   double dt = 0.002, rho_inf = 0.8, output_interval = 0.01, newton_tol = 1e-10;
+  bool animation = false;
+  TruckAnimationData animation_data;
   TruckData truck;
 };
 
@@ -70,7 +73,8 @@ LaneChangeFile ReadFile(const std::string& path) {
   ctx.CheckKeys(root, {"lane_change_test", "truck", "name", "note"});
   const YAML::Node t = root["lane_change_test"];
   ctx.SetEntity("lane_change_test");
-  ctx.CheckKeys(t, {"entry_speed_kmh", "frame", "frame_modes", "frame_damping", "frame_keep_modes", "road_mu", "course", "driver", "solver"});
+  ctx.CheckKeys(t, {"entry_speed_kmh", "frame", "frame_modes", "frame_damping", "frame_keep_modes", "road_mu", "course", "driver", "solver",
+                     "animation", "animation_fps", "animation_deformation_scale"});
   f.speed_kmh = ctx.Double(t, "entry_speed_kmh", f.speed_kmh);
   f.frame = ctx.String(t, "frame", f.frame);
   FrameReductionData& fr = f.reduction;
@@ -80,6 +84,13 @@ LaneChangeFile ReadFile(const std::string& path) {
   if (!(fr.damping_ratio >= 0)) ctx.Fail(t["frame_damping"], "frame_damping must be >= 0");
   fr.keep = ctx.Integer(t, "frame_keep_modes", fr.keep);
   f.mu = ctx.Positive(t, "road_mu");
+  f.animation = ctx.Bool(t, "animation", f.animation);
+  f.animation_data.fps = ctx.Double(t, "animation_fps", f.animation_data.fps);
+  if (!(f.animation_data.fps > 0)) ctx.Fail(t["animation_fps"], "animation_fps must be > 0");
+  f.animation_data.deformation_scale =
+      ctx.Double(t, "animation_deformation_scale", f.animation_data.deformation_scale);
+  if (!(f.animation_data.deformation_scale >= 0))
+    ctx.Fail(t["animation_deformation_scale"], "animation_deformation_scale must be >= 0");
   if (const YAML::Node c = Section(t, "course", ctx,
                                     {"section1_length", "section2_length", "section1_width", "section3_width", "offset"})) {
     LaneChangeCourseData& cd = f.course;
@@ -90,10 +101,19 @@ LaneChangeFile ReadFile(const std::string& path) {
     cd.offset = ctx.Double(c, "offset", cd.offset);
   }
   if (const YAML::Node d = Section(t, "driver", ctx,
-                                    {"preview_time", "min_preview", "max_wheel_angle_deg", "max_wheel_rate_deg",
+                                    {"steering_law", "preview_time", "min_preview", "lag_time", "understeer_gradient_deg",
+                                     "steer_in_section1", "max_wheel_angle_deg", "max_wheel_rate_deg",
                                      "neutral_in_section3", "speed_kp", "speed_ki", "max_drive_torque", "hold_speed"})) {
     DriverData& dd = f.driver;
+    const std::string law = ctx.String(d, "steering_law", "preview");
+    if (law != "preview" && law != "pure_pursuit")
+      ctx.Fail(d["steering_law"], "steering_law must be 'preview' or 'pure_pursuit', got '" + law + "'");
+    dd.steering_law = law == "preview" ? SteeringLaw::kPreview : SteeringLaw::kPurePursuit;
     dd.preview_time = ctx.Double(d, "preview_time", dd.preview_time);
+    dd.lag_time = ctx.Double(d, "lag_time", dd.lag_time);
+    if (!(dd.lag_time >= 0)) ctx.Fail(d["lag_time"], "lag_time must be >= 0");
+    dd.understeer_gradient = ctx.Double(d, "understeer_gradient_deg", dd.understeer_gradient * kDeg) / kDeg;
+    dd.steer_in_section1 = ctx.Bool(d, "steer_in_section1", dd.steer_in_section1);
     dd.min_preview = ctx.Double(d, "min_preview", dd.min_preview);
     dd.max_wheel_angle = ctx.Double(d, "max_wheel_angle_deg", dd.max_wheel_angle * kDeg) / kDeg;
     dd.max_wheel_rate = ctx.Double(d, "max_wheel_rate_deg", dd.max_wheel_rate * kDeg) / kDeg;
@@ -127,6 +147,7 @@ class FrameResponse {
     const reduction::ReducedBody& b = body_->reduced();
     u_.resize(b.modes.rows());
     s_.resize(b.stress.shell.modes.rows());
+    vm_.resize(static_cast<Eigen::Index>(b.stress.shell.elements.size()));
     centroid_.resize(b.stress.shell.elements.size());
     for (size_t k = 0; k < centroid_.size(); ++k) {
       const fe::Element& e = b.mesh.elements[static_cast<size_t>(b.stress.shell.elements[k])];
@@ -151,16 +172,11 @@ class FrameResponse {
     }
     stress_ = 0;
     const reduction::StressTable& t = b.stress.shell;
-    if (t.modes.rows() == 0) return;
-    s_.noalias() = t.modes * w;
-    for (int k = 0; k < static_cast<int>(t.elements.size()); ++k)
-      for (int l = 0; l < t.Locations(); ++l) {
-        const double vm = reduction::VonMises(Eigen::Vector3d(s_.segment<3>(t.Row(k, l, 0))));
-        if (vm > stress_) {
-          stress_ = vm;
-          element_ = k;
-        }
-      }
+    if (t.elements.empty()) return;
+    reduction::ElementVonMises(t, w, s_, vm_);
+    Eigen::Index k = 0;
+    stress_ = vm_.maxCoeff(&k);
+    element_ = static_cast<int>(k);
   }
   /// Keeps the maxima over time in r.
   void Record(double t, LaneChangeResult& r) const {
@@ -181,15 +197,16 @@ class FrameResponse {
   /// Appends the instant's values as CSV columns (leading comma).
   void WriteCsv(std::FILE* f) const {
     const reduction::ReducedBody& b = body_->reduced();
+    const bool stress = !centroid_.empty();
     std::fprintf(f, ",%.6g,%d,%.4g,%.6g,%d,%.4g", disp_ * 1e3, b.mesh.nodes[static_cast<size_t>(node_)].id,
                  b.mesh.nodes[static_cast<size_t>(node_)].x.x(), stress_ / 1e6,
-                 b.mesh.elements[static_cast<size_t>(b.stress.shell.elements[element_])].id,
-                 centroid_[static_cast<size_t>(element_)].x());
+                 stress ? b.mesh.elements[static_cast<size_t>(b.stress.shell.elements[element_])].id : -1,
+                 stress ? centroid_[static_cast<size_t>(element_)].x() : 0.0);
   }
 
  private:
   const FlexibleBody* body_;
-  VecX u_, s_;
+  VecX u_, s_, vm_;
   std::vector<Vec3> centroid_;
   double disp_ = 0, stress_ = 0;
   int node_ = 0, element_ = 0;
@@ -246,6 +263,12 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
   if (!std::isfinite(f.speed_kmh) || f.speed_kmh < 0) throw InputError("entry speed must be >= 0 km/h");
   if (f.frame != "rigid" && f.frame != "elastic") throw InputError("frame must be 'rigid' or 'elastic', got '" + f.frame + "'");
   if (!(f.dt > 0)) throw InputError("dt must be positive");
+  if (opt.animation) f.animation = *opt.animation;
+  if (opt.animation_fps) {
+    f.animation_data.fps = *opt.animation_fps;
+    f.animation = true;
+  }
+  if (f.animation && opt.out_dir.empty()) f.animation = false;
 
   const double v0 = f.speed_kmh / 3.6;
   const LaneChangeCourse course(f.course);
@@ -275,7 +298,7 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
   model.solver.dt_min = 1e-6 * f.dt;
   model.solver.newton_tol = f.newton_tol;
   const TruckHandles h =
-      BuildTruck(f.truck, v0, f.mu, driver.steering_wheel_angle(), driver.drive_torque(), model);
+      BuildTruck(f.truck, v0, f.mu, driver.steering_wheel_angle(), driver.drive_torque(), model, driver.brake_torque());
   model.Finalize();
 
   r.entry_speed_kmh = f.speed_kmh;
@@ -301,6 +324,11 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
                              "frame_max_stress_MPa,frame_max_stress_element,frame_max_stress_x"
                            : "");
   }
+
+  std::unique_ptr<TruckAnimation> animation;
+  if (f.animation)
+    animation = std::make_unique<TruckAnimation>((std::filesystem::path(opt.out_dir) / "animation").string(), f.truck,
+                                                 h, course, f.animation_data, model);
 
   Simulator sim(model);
   const auto wall0 = std::chrono::steady_clock::now();
@@ -328,7 +356,7 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
       const double yaw_rate = fr.w_WM.z();
 
       // controllers, held over the next step
-      driver.Update(VehicleView{st.t, pf.x(), pr.x(), pr.y(), yaw, speed, f.truck.wheelbase});
+      driver.Update(VehicleView{st.t, pf.x(), pr.x(), pr.y(), yaw, speed, f.truck.wheelbase, pf.y(), yaw_rate});
 
       // tires, axle loads, lift-off
       double fz[4];
@@ -386,6 +414,13 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
         std::fputc('\n', csv);
       }
       if (row && !csv) next_row = st.t + f.output_interval;
+      if (animation) {
+        const auto a0 = std::chrono::steady_clock::now();
+        if (animation->Update(st)) {
+          r.animation_wall_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - a0).count();
+          if (opt.on_animation_frame) opt.on_animation_frame(model, st);
+        }
+      }
       if (done) throw EndOfTest{};
       // a truck rolled past 45 degrees is over: end the run as failed
       if (record && std::abs(rpy.x()) > std::numbers::pi / 4) {
@@ -403,6 +438,7 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
   }
   if (csv) std::fclose(csv);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  r.animation_frames = animation ? animation->frames() : 0;
   r.steps = sim.stats().steps;
   r.newton_iterations = sim.stats().newton_iterations;
   r.cpu_time_s = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
@@ -421,6 +457,10 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
                  r.entry_speed_kmh, r.frame.c_str(), r.passed ? "passed" : "failed", r.completed ? "completed" : "stopped", r.distance,
                  r.t_end, r.max_lateral_acceleration, r.max_roll_deg, r.min_corridor_margin, r.wall_time_s,
                  r.real_time_factor, r.cpu_time_s > 0 ? r.t_end / r.cpu_time_s : 0.0);
+  if (opt.info && animation)
+    std::fprintf(opt.info, "animation: %d frames at %g per second of simulated time in %s (%.2f s wall time)\n",
+                 r.animation_frames, f.animation_data.fps, animation->writer().pvd_path().c_str(),
+                 r.animation_wall_time_s);
   if (opt.info && r.frame == "elastic")
     std::fprintf(opt.info,
                  "elastic frame (%d modal coordinates, reduced in %.2f s): max elastic displacement %.2f mm at node %d "
@@ -496,6 +536,8 @@ std::string LaneChangeJson(const LaneChangeResult& r) {
   add("newton_iterations", std::to_string(r.newton_iterations));
   add("wall_time_s", JsonNumber(r.wall_time_s));
   add("cpu_time_s", JsonNumber(r.cpu_time_s));
+  add("animation_frames", std::to_string(r.animation_frames));
+  add("animation_wall_time_s", JsonNumber(r.animation_wall_time_s));
   add("real_time_factor_cpu", JsonNumber(r.cpu_time_s > 0 ? r.t_end / r.cpu_time_s : 0.0));
   add("real_time_factor", JsonNumber(r.real_time_factor), r.frame != "elastic");
   if (r.frame == "elastic") {

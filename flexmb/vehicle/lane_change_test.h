@@ -3,13 +3,16 @@
 /// The lane-change test ("perestavka") of a truck: reads a lane-change file
 /// (examples/truck_lane_change/truck.yaml), builds the truck, drives it
 /// through the course with the closed-loop driver, watches the corridor and
-/// wheel lift-off, and writes results.csv and summary.json.
+/// wheel lift-off, and writes results.csv, summary.json and, when asked,
+/// the ParaView animation (animation/anim.pvd, truck_animation.h).
 
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 
+#include "flexmb/model/state.h"
 #include "flexmb/vehicle/truck.h"
 
 namespace flexmb::vehicle {
@@ -30,6 +33,15 @@ struct LaneChangeOptions {
   /// End the run when the front axle has travelled this far [m] (a shorter
   /// run for tests); the run counts as completed when it gets there.
   std::optional<double> stop_distance;
+  /// Write the ParaView animation to out_dir/animation (anim.pvd and
+  /// frames/): overrides the file's `animation` (default off).
+  std::optional<bool> animation;
+  /// Animation frames per second of simulated time, overrides the file's
+  /// `animation_fps` (default 25); setting it turns the animation on.
+  std::optional<double> animation_fps;
+  /// Called after every animation frame is written, with the model and the
+  /// state the frame shows (tests and tools; empty: nothing).
+  std::function<void(const Model&, const State&)> on_animation_frame;
 };
 
 /// Outcome of a lane-change run (also written as summary.json).
@@ -72,6 +84,8 @@ struct LaneChangeResult {
   double max_stress_time = 0.0;
   int frame_modal_coordinates = 0;    ///< elastic frame: modal coordinates of the body
   double reduction_wall_time_s = 0.0; ///< elastic frame: generation, reduction and body file [s]
+  int animation_frames = 0;           ///< ParaView frames written (0: animation off)
+  double animation_wall_time_s = 0.0; ///< wall time spent writing them (included in wall_time_s) [s]
 };
 
 /// True if the YAML file at `path` is a lane-change file (top-level key

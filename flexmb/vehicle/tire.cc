@@ -46,12 +46,39 @@ Tire::Tire(std::string name, const TireData& d, double mu) : ForceElement(std::m
   if (!(d.rolling_radius_factor >= 0 && d.rolling_radius_factor <= 1))
     throw InputError("rolling_radius_factor must lie in [0, 1]", ctx);
   if (!(d.pex1 <= 1) || !(d.pey1 <= 1)) throw InputError("pex1 and pey1 must be <= 1", ctx);
+  if (!(d.relaxation_length >= 0) || !std::isfinite(d.relaxation_length))
+    throw InputError("relaxation_length must be >= 0", ctx);
+  if (d.relaxation_length > 0) {
+    positive(d.patch_mass, "patch_mass");
+    k_carcass_ = d.count * CorneringStiffness(d.nominal_load) / d.relaxation_length;
+  }
+}
+
+double Tire::CorneringStiffness(double fz1) const {
+  const TireData& d = data_;
+  return d.pky1 * d.nominal_load * std::sin(2.0 * std::atan(fz1 / (d.pky2 * d.nominal_load)));
 }
 
 Vec6 Tire::Wrench(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, TireContact* contact) const {
-  Vec6 out = Vec6::Zero();
+  return Compute(p, R, v, w, nullptr, nullptr, contact).head<6>();
+}
+
+Vec12 Tire::RelaxedWrench(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, const Vec3& p_j,
+                          const Vec3& v_j, TireContact* contact) const {
+  if (!relaxed())
+    throw InputError("RelaxedWrench needs relaxation_length > 0", {"", 0, "tire '" + name() + "'"});
+  return Compute(p, R, v, w, &p_j, &v_j, contact);
+}
+
+Vec12 Tire::Compute(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, const Vec3* p_j, const Vec3* v_j,
+                    TireContact* contact) const {
+  Vec12 out = Vec12::Zero();
   if (contact) *contact = TireContact{};
   const TireData& d = data_;
+  // carcass spring between the wheel centre and the contact patch
+  const Vec3 spring = p_j ? Vec3(k_carcass_ * (*p_j - p)) : Vec3::Zero();
+  out.segment<3>(0) = spring;
+  out.segment<3>(6) = -spring;
   const Vec3 n(0, 0, 1);
   const Vec3 a = R.col(2);
   const Vec3 axn = a.cross(n);
@@ -68,6 +95,7 @@ Vec6 Tire::Wrench(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, Ti
   if (contact) {
     contact->deflection = defl;
     contact->contact_W = c;
+    contact->fy_wheel = spring.dot(yt);
   }
   if (defl <= 0) return out;
   const double n_t = d.count;
@@ -80,7 +108,8 @@ Vec6 Tire::Wrench(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, Ti
   const double re = d.unloaded_radius - d.rolling_radius_factor * defl;
   const double omega = w.dot(a);
   const double vsx = vx - re * omega;
-  const double vsy = vc.dot(yt);
+  // the relaxed tire slips with the patch, which slides relative to the centre
+  const double vsy = vc.dot(yt) + (v_j ? (*v_j - v).dot(yt) : 0.0);
   const double vref = std::sqrt(vx * vx + d.low_speed * d.low_speed);
   const double kappa = -vsx / vref;
   const double alpha = std::atan(vsy / vref);
@@ -93,51 +122,103 @@ Vec6 Tire::Wrench(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, Ti
   double fx0 = 0.0, fy0 = 0.0;
   if (dx > 0) fx0 = MagicFormula(kappa, d.pkx1 * fz1 / (d.pcx1 * dx), d.pcx1, dx, d.pex1);
   if (dy > 0) {
-    const double ky = d.pky1 * d.nominal_load * std::sin(2.0 * std::atan(fz1 / (d.pky2 * d.nominal_load)));
+    const double ky = CorneringStiffness(fz1);
     fy0 = -MagicFormula(alpha, ky / (d.pcy1 * dy), d.pcy1, dy, d.pey1);
   }
   // combined slip by cosine weighting
   const double fx = n_t * fx0 * std::cos(std::atan(d.rbx1 * alpha));
   const double fy = n_t * fy0 * std::cos(std::atan(d.rby1 * kappa));
-  const double frr = -d.rolling_resistance * fz * std::tanh(vx / 0.5);
-  const Vec3 f = (fx + frr) * xt + fy * yt + fz * n;
+  // rolling resistance: a moment against the spin, f_r Fz times the lever rho
+  const Vec3 my = -d.rolling_resistance * fz * rho * std::tanh(vx / 0.5) * a;
+  const Vec3 fw = fx * xt + fz * n;
+  const Vec3 fl = fy * yt;
   const double trail = d.trail * std::cos(std::atan(d.trail_decay * alpha));
   const Vec3 mz = -trail * fy * std::tanh(vx / 0.5) * n;
-  out.head<3>() = f;
-  out.tail<3>() = (c - p).cross(f) + mz;
+  if (p_j) {
+    // lateral force and aligning moment on the patch (arm c - p from its marker)
+    out.segment<3>(0) += fw;
+    out.segment<3>(3) = (c - p).cross(fw) + my;
+    out.segment<3>(6) += fl;
+    out.segment<3>(9) = (c - p).cross(fl) + mz;
+  } else {
+    out.segment<3>(0) = fw + fl;
+    out.segment<3>(3) = (c - p).cross(fw + fl) + mz + my;
+  }
   if (contact) {
     contact->fz = fz;
-    contact->fx = fx + frr;
+    contact->fx = fx;
     contact->fy = fy;
+    if (!p_j) contact->fy_wheel = fy;
     contact->kappa = kappa;
     contact->alpha = alpha;
   }
   return out;
 }
 
-void Tire::Evaluate(const MarkerState& mi, const MarkerState&, double, ForceEval& e) const {
+void Tire::Evaluate(const MarkerState& mi, const MarkerState& mj, double, ForceEval& e) const {
   e.wrench.setZero();
   e.K.setZero();
   e.C.setZero();
-  e.wrench.head<6>() = Wrench(mi.p_WM, mi.R_WM, mi.v_WM, mi.w_WM, nullptr);
+  const bool patch = marker_j >= 0;
+  if (relaxed() != patch)
+    throw InputError(relaxed() ? "a tire with relaxation_length > 0 needs a contact-patch marker j"
+                               : "a tire without relaxation length takes one marker",
+                     {"", 0, "tire '" + name() + "'"});
+  // the patch's pose (dp, dtheta) and twist (v, w) variations: only p_j and
+  // v_j enter, so its rotation columns stay zero
+  const int n_var = patch ? 12 : 6;
+  Vec3 pi = mi.p_WM, vi = mi.v_WM, wi = mi.w_WM, pj = mj.p_WM, vj = mj.v_WM;
+  Mat3 Ri = mi.R_WM;
+  auto eval = [&]() { return Compute(pi, Ri, vi, wi, patch ? &pj : nullptr, patch ? &vj : nullptr, nullptr); };
+  e.wrench = eval();
   // central differences: pose (dp, dtheta with dR = skew(dtheta) R), then twist
-  for (int k = 0; k < 3; ++k) {
-    Vec3 dp = Vec3::Zero();
-    dp[k] = kStepPose;
-    const Vec6 fp = Wrench(mi.p_WM + dp, mi.R_WM, mi.v_WM, mi.w_WM, nullptr);
-    const Vec6 fm = Wrench(mi.p_WM - dp, mi.R_WM, mi.v_WM, mi.w_WM, nullptr);
-    e.K.block<6, 1>(0, k) = (fp - fm) / (2 * kStepPose);
-    const Vec6 rp = Wrench(mi.p_WM, ExpSO3(dp) * mi.R_WM, mi.v_WM, mi.w_WM, nullptr);
-    const Vec6 rm = Wrench(mi.p_WM, ExpSO3(-dp) * mi.R_WM, mi.v_WM, mi.w_WM, nullptr);
-    e.K.block<6, 1>(0, 3 + k) = (rp - rm) / (2 * kStepPose);
-    Vec3 dv = Vec3::Zero();
-    dv[k] = kStepRate;
-    const Vec6 vp = Wrench(mi.p_WM, mi.R_WM, mi.v_WM + dv, mi.w_WM, nullptr);
-    const Vec6 vm = Wrench(mi.p_WM, mi.R_WM, mi.v_WM - dv, mi.w_WM, nullptr);
-    e.C.block<6, 1>(0, k) = (vp - vm) / (2 * kStepRate);
-    const Vec6 wp = Wrench(mi.p_WM, mi.R_WM, mi.v_WM, mi.w_WM + dv, nullptr);
-    const Vec6 wm = Wrench(mi.p_WM, mi.R_WM, mi.v_WM, mi.w_WM - dv, nullptr);
-    e.C.block<6, 1>(0, 3 + k) = (wp - wm) / (2 * kStepRate);
+  for (int k = 0; k < n_var; ++k) {
+    if (k >= 9) continue;
+    const int a = k % 3;
+    Vec3 step = Vec3::Zero();
+    Vec12 fp, fm;
+    step[a] = kStepPose;
+    if (k < 3) {
+      pi = mi.p_WM + step;
+      fp = eval();
+      pi = mi.p_WM - step;
+      fm = eval();
+      pi = mi.p_WM;
+    } else if (k < 6) {
+      Ri = ExpSO3(step) * mi.R_WM;
+      fp = eval();
+      Ri = ExpSO3(-step) * mi.R_WM;
+      fm = eval();
+      Ri = mi.R_WM;
+    } else {
+      pj = mj.p_WM + step;
+      fp = eval();
+      pj = mj.p_WM - step;
+      fm = eval();
+      pj = mj.p_WM;
+    }
+    e.K.col(k) = (fp - fm) / (2 * kStepPose);
+    step[a] = kStepRate;
+    if (k < 3) {
+      vi = mi.v_WM + step;
+      fp = eval();
+      vi = mi.v_WM - step;
+      fm = eval();
+      vi = mi.v_WM;
+    } else if (k < 6) {
+      wi = mi.w_WM + step;
+      fp = eval();
+      wi = mi.w_WM - step;
+      fm = eval();
+      wi = mi.w_WM;
+    } else {
+      vj = mj.v_WM + step;
+      fp = eval();
+      vj = mj.v_WM - step;
+      fm = eval();
+      vj = mj.v_WM;
+    }
+    e.C.col(k) = (fp - fm) / (2 * kStepRate);
   }
 }
 

@@ -39,6 +39,15 @@ struct TireData {
   double trail_decay = 8.0;      ///< trail t = trail * cos(atan(trail_decay alpha)) [1/rad]
   double rolling_resistance = 0.007;  ///< rolling resistance coefficient f_r [-]
   double low_speed = 1.0;        ///< v_low in the slip denominator sqrt(Vx^2 + v_low^2) [m/s], > 0
+  /// Lateral relaxation length sigma0 at the nominal load [m], >= 0; 0: no
+  /// relaxation (stateless tire). With sigma0 > 0 the lateral slip force acts
+  /// on a contact-patch body tied to the wheel by the lateral carcass
+  /// stiffness k_y = Ky(Fz0) / sigma0 per tire, so that
+  /// sigma(Fz) = Ky(Fz) / k_y (Pacejka, 3rd ed., sec. 7.2.1).
+  double relaxation_length = 0.0;
+  /// Mass of the contact-patch body per tire [kg], > 0 (used with
+  /// relaxation_length > 0; small against Ky / V * sigma / V).
+  double patch_mass = 0.5;
 };
 
 /// Contact quantities of one evaluation of a Tire (for sensors and tests).
@@ -46,7 +55,10 @@ struct TireContact {
   double deflection = 0.0;  ///< R0 minus the centre height along the wheel plane [m]
   double fz = 0.0;          ///< vertical force of the set [N] (0 when lifted off)
   double fx = 0.0;          ///< longitudinal force of the set [N]
-  double fy = 0.0;          ///< lateral force of the set [N]
+  double fy = 0.0;          ///< lateral slip force of the set [N] (on the contact patch when relaxed)
+  /// Lateral force of the set passed to the wheel along y_t [N]: the carcass
+  /// spring's force when relaxed, fy otherwise.
+  double fy_wheel = 0.0;
   double kappa = 0.0;       ///< longitudinal slip ratio [-]
   double alpha = 0.0;       ///< slip angle [rad]
   Vec3 contact_W = Vec3::Zero();  ///< contact point on the road [m]
@@ -70,12 +82,25 @@ struct TireContact {
 ///   Kx = pkx1 Fz1, Bx = Kx / (Cx Dx); Fy0 likewise in alpha with
 ///   Ky = pky1 Fz0 sin(2 atan(Fz1 / (pky2 Fz0))), and Fy0 opposes Vsy;
 ///   combined: Fx = Fx0 cos(atan(rbx1 alpha)), Fy = Fy0 cos(atan(rby1 kappa)).
-/// The set's force n (Fx x_t + Fy y_t) - f_r Fz tanh(Vx / 0.5 m/s) x_t +
-/// Fz n acts at c; the aligning moment -t n Fy s (s = tanh(Vx / 0.5 m/s),
-/// the trail lies behind the contact in the direction of travel) with
-/// t = trail cos(atan(trail_decay alpha)). Wrench about the wheel centre.
-/// Relaxation length is not modelled (no element states in the engine; see
-/// docs/design.md "Vehicle: tire tangent").
+/// The set's force n (Fx x_t + Fy y_t) + Fz n acts at c; the aligning
+/// moment -t n Fy s (s = tanh(Vx / 0.5 m/s), the trail lies behind the
+/// contact in the direction of travel) with t = trail cos(atan(trail_decay
+/// alpha)); the rolling resistance is the moment -f_r Fz rho s a against the
+/// spin (a moment, not a force at c: a force at the contact would be
+/// cancelled by the slip force of a free-rolling wheel, leaving no net
+/// resistance), so a free-rolling wheel is retarded by f_r Fz.
+/// Wrench about the wheel centre.
+/// Relaxation length (relaxation_length > 0): marker j is a contact-patch
+/// marker at the wheel centre on a light body that slides along the spin
+/// axis on the wheel carrier (a prismatic joint, built by the truck). The
+/// element then applies the carcass spring -k_y (p_j - p) on the patch (and
+/// the reaction on the wheel), and the lateral slip force Fy and the aligning
+/// moment on the patch, from the patch's slip velocity
+/// Vsy' = Vsy + (v_j - v) . y_t, with the moment arm c - p; Fz, Fx and the
+/// rolling resistance stay on the wheel. In the linear range and with the
+/// patch mass neglected, Fy lags its steady value by
+/// sigma dFy/dx + Fy = Fy_ss (x the travelled distance), sigma = Ky / k_y
+/// (docs/design.md "Vehicle: tire relaxation length").
 /// K and C are central finite differences of the wrench (the element's
 /// documented choice, docs/design.md "Vehicle: tire tangent").
 class Tire final : public ForceElement {
@@ -89,14 +114,31 @@ class Tire final : public ForceElement {
   /// a wheel centre at p with spin axis a = R.col(2), velocity v and
   /// angular velocity w (world).
   Vec6 Wrench(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, TireContact* contact) const;
+  /// Wrenches (wheel marker: f, m about p; patch marker: f, m about p_j)
+  /// [N, N m] of the relaxed tire for a wheel centre (p, R, v, w) and a
+  /// contact-patch marker at p_j with velocity v_j (world); requires
+  /// relaxation_length > 0.
+  Vec12 RelaxedWrench(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, const Vec3& p_j, const Vec3& v_j,
+                      TireContact* contact) const;
+  /// True when the tire has a relaxation length (needs a patch marker j).
+  bool relaxed() const { return data_.relaxation_length > 0; }
+  /// Lateral carcass stiffness of the set, count * Ky(Fz0) / sigma0 [N/m]
+  /// (0 without relaxation).
+  double carcass_stiffness() const { return k_carcass_; }
+  /// Cornering stiffness per tire Ky(Fz1) = pky1 Fz0 sin(2 atan(Fz1 / (pky2 Fz0))) [N/rad].
+  double CorneringStiffness(double fz1) const;
   /// The tire's coefficients.
   const TireData& data() const { return data_; }
   /// Road friction coefficient [-].
   double mu() const { return mu_; }
 
  private:
+  // wheel wrench (head) and patch wrench (tail); no patch when p_j is null
+  Vec12 Compute(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, const Vec3* p_j, const Vec3* v_j,
+                TireContact* contact) const;
   TireData data_;
   double mu_;
+  double k_carcass_ = 0.0;
 };
 
 }  // namespace flexmb::vehicle

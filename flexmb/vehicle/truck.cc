@@ -14,8 +14,11 @@
 #include "flexmb/forces/spring_damper.h"
 #include "flexmb/io/parse_context.h"
 #include "flexmb/joints/distance.h"
+#include "flexmb/joints/gear.h"
+#include "flexmb/joints/prismatic.h"
 #include "flexmb/joints/revolute.h"
 #include "flexmb/vehicle/command_signal.h"
+#include "flexmb/vehicle/wheel_brake.h"
 
 namespace flexmb::vehicle {
 namespace {
@@ -32,10 +35,14 @@ Mat3 AxisX() {
   return R;
 }
 
-// mass of the parts moving with an axle (axle, wheels, knuckles) and of its arm
+// mass of the contact-patch body of a relaxed tire set (0 without relaxation)
+double TruckPatchMass(const TireData& t) { return t.relaxation_length > 0 ? t.count * t.patch_mass : 0.0; }
+
+// mass of the parts moving with an axle (axle, wheels, knuckles, contact patches)
 double UnsprungMass(const TruckData& d, bool front) {
-  return front ? d.front_axle.mass + 2 * (d.front_wheel.mass + d.knuckle.mass)
-               : d.rear_axle.mass + 2 * d.rear_wheel.mass;
+  const double hub = (front ? d.front : d.rear).extra_arm_height > 0 ? kAxleHubMass : 0.0;
+  return hub + (front ? d.front_axle.mass + 2 * (d.front_wheel.mass + d.knuckle.mass + TruckPatchMass(d.front_tire))
+                      : d.rear_axle.mass + 2 * (d.rear_wheel.mass + TruckPatchMass(d.rear_tire)));
 }
 
 int AddPart(Model& m, const std::string& name, const PartData& p, const Vec3& cg, double speed, const Vec3& w) {
@@ -81,7 +88,7 @@ void ReadSuspension(const YAML::Node& n, ParseContext& ctx, const char* key, Sus
   ctx.SetEntity(std::string("suspension '") + key + "'");
   if (!node) ctx.Fail(n, std::string("missing suspension '") + key + "'");
   ctx.CheckKeys(node, {"spring_stiffness", "spring_damping", "spring_half_spacing", "spring_length", "arm_length",
-                       "stabilizer_stiffness", "stabilizer_damping"});
+                       "stabilizer_stiffness", "stabilizer_damping", "extra_arm_height"});
   s.spring_stiffness = ctx.Positive(node, "spring_stiffness");
   s.spring_damping = ctx.Double(node, "spring_damping", s.spring_damping);
   s.spring_half_spacing = ctx.Positive(node, "spring_half_spacing");
@@ -89,6 +96,8 @@ void ReadSuspension(const YAML::Node& n, ParseContext& ctx, const char* key, Sus
   s.arm_length = ctx.Positive(node, "arm_length");
   s.stabilizer_stiffness = ctx.Double(node, "stabilizer_stiffness", 0.0);
   s.stabilizer_damping = ctx.Double(node, "stabilizer_damping", 0.0);
+  s.extra_arm_height = ctx.Double(node, "extra_arm_height", 0.0);
+  if (!(s.extra_arm_height >= 0)) ctx.Fail(node, "extra_arm_height must be >= 0");
 }
 
 // reads the ladder frame's parameters (frame map of the truck)
@@ -195,12 +204,17 @@ std::array<double, 2> StaticAxleLoads(const TruckData& d, double g) {
   add(d.arm.mass, 0.5 * d.front.arm_length);
   add(d.arm.mass, -L + 0.5 * d.rear.arm_length);
   if (d.steering_linkage) add(d.pitman_arm_mass, d.drag_link_length);
+  if (d.steering_linkage && d.steering_column)
+    add(d.column_mass, d.drag_link_length - 0.5 * d.column_length * std::sin(d.column_inclination));
   const double front = moment / L;
   return {front, w - front};
 }
 
 TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared_ptr<const double> steering_wheel,
-                        std::shared_ptr<const double> drive_torque, Model& m) {
+                        std::shared_ptr<const double> drive_torque, Model& m,
+                        std::shared_ptr<const double> brake_torque) {
+  if (!(d.brake_front_share >= 0 && d.brake_front_share <= 1) || !(d.brake_smoothing_spin > 0))
+    throw InputError("brake front_share must lie in [0, 1] and smoothing_spin be positive", {"", 0, "truck brakes"});
   const double g = -m.gravity_W.z();
   const std::array<double, 2> loads = StaticAxleLoads(d, g);
   TruckHandles h;
@@ -226,9 +240,10 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
   h.frame_body = frame;
   // a frame marker at an attachment point: on the elastic frame carried by
   // the nearest (interface) node, offset to the point
-  auto frame_marker = [&](const std::string& name, const Vec3& p, const Mat3& R) {
+  // (`anchor`: the attachment point whose node carries a marker offset from it)
+  auto frame_marker = [&](const std::string& name, const Vec3& p, const Mat3& R, const Vec3* anchor = nullptr) {
     if (!d.elastic_frame) return m.AddMarker(frame, name, p, R);
-    const int node = NearestNode(d.elastic_frame->mesh, p);
+    const int node = NearestNode(d.elastic_frame->mesh, anchor ? *anchor : p);
     const auto& in = d.elastic_frame->interface_nodes;
     if (std::find(in.begin(), in.end(), node) == in.end())
       throw InputError("frame attachment '" + name + "' is not on an interface node of the elastic frame",
@@ -278,7 +293,23 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
     const Vec3 pivot(x + s.arm_length, 0, z), centre(x, 0, z);
     m.AddJoint(std::make_unique<RevoluteJoint>(side + "_arm_pivot"), frame_marker("arm_pivot_" + side, pivot, AxisY()),
                m.AddMarker(arm, "pivot", pivot, AxisY()));
-    const int ri = m.AddMarker(arm, "roll", centre, AxisX()), rj = m.AddMarker(ax, "roll", centre, AxisX());
+    // the axle rolls on the arm, or with the additional arm (seed Fig. 3) on
+    // a hub pitching on the arm and held parallel by the additional arm, a
+    // rod of the arm's length above it (a parallelogram in side view)
+    int roll_carrier = arm;
+    if (s.extra_arm_height > 0) {
+      PartData hp;
+      hp.mass = kAxleHubMass;
+      hp.inertia = Vec3::Constant(0.01);
+      roll_carrier = AddPart(m, side + "_axle_hub", hp, centre, speed, zero);
+      m.AddJoint(std::make_unique<RevoluteJoint>(side + "_axle_pitch"), m.AddMarker(arm, "hub", centre, AxisY()),
+                 m.AddMarker(roll_carrier, "pitch", centre, AxisY()));
+      const Vec3 up(0, 0, s.extra_arm_height);
+      m.AddJoint(std::make_unique<DistanceJoint>(side + "_extra_arm", s.arm_length),
+                 frame_marker("extra_arm_pivot_" + side, pivot + up, I, &pivot),
+                 m.AddMarker(roll_carrier, "extra_arm", centre + up, I));
+    }
+    const int ri = m.AddMarker(roll_carrier, "roll", centre, AxisX()), rj = m.AddMarker(ax, "roll", centre, AxisX());
     m.AddJoint(std::make_unique<RevoluteJoint>(side + "_axle_roll"), ri, rj);
     RotationalSpringDamperLaw stab;
     stab.stiffness = s.stabilizer_stiffness;
@@ -307,9 +338,26 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
     const int wb = AddPart(m, name, wp, c, speed, Vec3(0, speed / re, 0));
     const int jm = m.AddJoint(std::make_unique<RevoluteJoint>(name + "_bearing"),
                               m.AddMarker(carrier, name + "_bearing", c, AxisY()), m.AddMarker(wb, "bearing", c, AxisY()));
+    if (brake_torque) {
+      const double share = 0.5 * (k < 2 ? d.brake_front_share : 1.0 - d.brake_front_share);
+      m.AddForce(std::make_unique<WheelBrake>(name + "_brake", std::make_shared<CommandSignal>(brake_torque, share),
+                                              d.brake_smoothing_spin),
+                 m.joints[jm]->marker_i, m.joints[jm]->marker_j);
+    }
     const int wm = m.AddMarker(wb, "centre", c, AxisY());
     h.wheel_marker[k] = wm;
-    h.tire_force[k] = m.AddForce(std::make_unique<Tire>(name + "_tire", td, mu), wm, -1);
+    int patch_marker = -1;
+    if (td.relaxation_length > 0) {
+      // contact-patch body sliding along the spin axis on the carrier
+      PartData pp;
+      pp.mass = TruckPatchMass(td);
+      pp.inertia = Vec3::Constant(0.01 * pp.mass);
+      const int pb = AddPart(m, name + "_patch", pp, c, speed, zero);
+      patch_marker = m.AddMarker(pb, "centre", c, AxisY());
+      m.AddJoint(std::make_unique<PrismaticJoint>(name + "_carcass"), m.AddMarker(carrier, name + "_carcass", c, AxisY()),
+                 patch_marker);
+    }
+    h.tire_force[k] = m.AddForce(std::make_unique<Tire>(name + "_tire", td, mu), wm, patch_marker);
     return jm;
   };
 
@@ -364,8 +412,42 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
     }
     m.AddJoint(std::make_unique<DistanceJoint>("tie_rod", (tr[0] - tr[1]).norm()),
                m.AddMarker(knuckle[0], "tie_rod_arm", tr[0], I), m.AddMarker(knuckle[1], "tie_rod_arm", tr[1], I));
-    // the servo (column and gear) turns the pitman arm to -road-wheel angle
-    servo("steering_servo", pj, -1.0 / d.steering_ratio);
+    if (!d.steering_column) {
+      // the servo (column and gear) turns the pitman arm to -road-wheel angle
+      servo("steering_servo", pj, -1.0 / d.steering_ratio);
+    } else {
+      // steering column on the frame at the gear, axis ac leaning rearwards;
+      // the gear turns the pitman arm by -1/ratio of the column's angle
+      const Vec3 ac(-std::sin(d.column_inclination), 0, std::cos(d.column_inclination));
+      const Vec3 ap(0, 1, 0);
+      Mat3 Rc, Rg, Rp;  // column revolute, gear marker on the column (x along ap), on the pitman (x along ac)
+      Rc.col(0) = ap;
+      Rc.col(1) = ac.cross(ap);
+      Rc.col(2) = ac;
+      Rg = Rc;
+      Rp.col(0) = ac;
+      Rp.col(1) = ap.cross(ac);
+      Rp.col(2) = ap;
+      PartData column;
+      column.mass = d.column_mass;
+      const Vec3 cg = pivot + 0.5 * d.column_length * ac;
+      // principal inertias: column_inertia about the axis, a slender rod across it
+      const double across = d.column_mass * d.column_length * d.column_length / 12.0 + 0.5 * d.column_inertia;
+      const Mat3 Ic = Rc * Vec3(across, across, d.column_inertia).asDiagonal() * Rc.transpose();
+      column.inertia = Ic.diagonal();
+      column.products = Vec3(Ic(0, 1), Ic(0, 2), Ic(1, 2));
+      const int cb = AddPart(m, "steering_column", column, cg, speed, zero);
+      const int cj = m.AddJoint(std::make_unique<RevoluteJoint>("steering_column"),
+                                frame_marker("steering_column", pivot, Rc), m.AddMarker(cb, "column", pivot, Rc));
+      m.AddJoint(std::make_unique<GearJoint>("steering_gear_ratio", -d.steering_ratio),
+                 m.AddMarker(cb, "gear", pivot, Rg), m.AddMarker(pb, "gear_coupling", pivot, Rp));
+      const double r2 = d.steering_ratio * d.steering_ratio;
+      m.AddForce(std::make_unique<JointMotor>(
+                     "steering_servo", m.joints[cj].get(), 0, nullptr,
+                     JointMotorPd{std::make_shared<CommandSignal>(steering_wheel, 1.0), d.steering_stiffness / r2,
+                                  d.steering_damping / r2}),
+                 m.joints[cj]->marker_i, m.joints[cj]->marker_j);
+    }
   }
   // rear wheels with the drive torque, half to each side
   auto drive = std::make_shared<CommandSignal>(drive_torque, 0.5);
@@ -394,7 +476,7 @@ TireData LoadTireFile(const std::string& path) {
   ctx.CheckKeys(t, {"name", "note", "count", "unloaded_radius", "vertical_stiffness", "vertical_damping",
                     "rolling_radius_factor", "nominal_load", "pcx1", "pdx1", "pdx2", "pex1", "pkx1", "pcy1", "pdy1",
                     "pdy2", "pey1", "pky1", "pky2", "rbx1", "rby1", "trail", "trail_decay", "rolling_resistance",
-                    "low_speed"});
+                    "low_speed", "relaxation_length", "patch_mass"});
   TireData d;
   d.count = ctx.Integer(t, "count", d.count);
   d.unloaded_radius = ctx.Positive(t, "unloaded_radius");
@@ -419,6 +501,8 @@ TireData LoadTireFile(const std::string& path) {
   d.trail_decay = ctx.Double(t, "trail_decay", d.trail_decay);
   d.rolling_resistance = ctx.Double(t, "rolling_resistance", d.rolling_resistance);
   d.low_speed = ctx.Double(t, "low_speed", d.low_speed);
+  d.relaxation_length = ctx.Double(t, "relaxation_length", d.relaxation_length);
+  d.patch_mass = ctx.Double(t, "patch_mass", d.patch_mass);
   // validate now, naming the file
   ctx.Guard(t, [&] { Tire("check", d, 1.0); });
   return d;
@@ -429,7 +513,7 @@ TruckData ParseTruck(const YAML::Node& n, ParseContext& ctx, const std::string& 
   ctx.SetEntity("truck");
   ctx.CheckKeys(n, {"wheelbase", "front_track", "rear_track", "kingpin_offset", "frame", "cab", "powertrain", "cargo",
                     "front_axle", "rear_axle", "knuckle", "front_wheel", "rear_wheel", "arm", "front_suspension",
-                    "rear_suspension", "steering", "tires", "gauge_width"});
+                    "rear_suspension", "steering", "tires", "gauge_width", "brakes"});
   d.wheelbase = ctx.Positive(n, "wheelbase");
   d.front_track = ctx.Positive(n, "front_track");
   d.rear_track = ctx.Positive(n, "rear_track");
@@ -449,15 +533,32 @@ TruckData ParseTruck(const YAML::Node& n, ParseContext& ctx, const std::string& 
   ctx.SetEntity("steering");
   const YAML::Node st = n["steering"];
   if (!st) ctx.Fail(n, "missing 'steering'");
-  ctx.CheckKeys(st, {"ratio", "stiffness", "damping", "linkage", "pitman_arm_length", "tie_rod_arm_length"});
+  ctx.CheckKeys(st, {"ratio", "stiffness", "damping", "linkage", "pitman_arm_length", "tie_rod_arm_length", "column",
+                     "column_mass", "column_inertia", "column_length", "column_inclination_deg"});
   d.steering_ratio = ctx.Positive(st, "ratio");
   d.steering_stiffness = ctx.Positive(st, "stiffness");
   d.steering_damping = ctx.Double(st, "damping", d.steering_damping);
   d.steering_linkage = ctx.Bool(st, "linkage", d.steering_linkage);
   d.pitman_arm_length = ctx.Double(st, "pitman_arm_length", d.pitman_arm_length);
   d.tie_rod_arm_length = ctx.Double(st, "tie_rod_arm_length", d.tie_rod_arm_length);
+  d.steering_column = ctx.Bool(st, "column", d.steering_column);
+  d.column_mass = ctx.Double(st, "column_mass", d.column_mass);
+  d.column_inertia = ctx.Double(st, "column_inertia", d.column_inertia);
+  d.column_length = ctx.Double(st, "column_length", d.column_length);
+  d.column_inclination = ctx.Double(st, "column_inclination_deg", d.column_inclination * 180.0 / M_PI) * M_PI / 180.0;
+  if (!(d.column_mass > 0) || !(d.column_inertia > 0) || !(d.column_length > 0) ||
+      !(std::abs(d.column_inclination) < 0.5 * M_PI))
+    ctx.Fail(st, "column_mass, column_inertia, column_length must be positive, |column_inclination_deg| < 90");
   if (!(d.pitman_arm_length > 0) || !(d.tie_rod_arm_length > 0))
     ctx.Fail(st, "pitman_arm_length and tie_rod_arm_length must be positive");
+  if (const YAML::Node br = n["brakes"]) {
+    ctx.SetEntity("brakes");
+    ctx.CheckKeys(br, {"front_share", "smoothing_spin", "note"});
+    d.brake_front_share = ctx.Double(br, "front_share", d.brake_front_share);
+    d.brake_smoothing_spin = ctx.Double(br, "smoothing_spin", d.brake_smoothing_spin);
+    if (!(d.brake_front_share >= 0 && d.brake_front_share <= 1) || !(d.brake_smoothing_spin > 0))
+      ctx.Fail(br, "front_share must lie in [0, 1] and smoothing_spin be positive");
+  }
   ctx.SetEntity("tires");
   const YAML::Node tires = n["tires"];
   if (!tires) ctx.Fail(n, "missing 'tires'");

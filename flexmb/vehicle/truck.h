@@ -58,7 +58,18 @@ struct SuspensionData {
   double arm_length = 0.7;         ///< longitudinal arm: pivot on the frame ahead of the axle [m]
   double stabilizer_stiffness = 1e5;  ///< roll stiffness of the stabilizer [N m/rad]
   double stabilizer_damping = 0.0;    ///< roll damping [N m s/rad]
+  /// Additional longitudinal arm (seed Fig. 3, rear): a rod of arm_length
+  /// this far above the arm [m], from the frame (at the arm pivot's bracket)
+  /// to a hub on which the axle rolls; the hub pitches on the arm, so arm,
+  /// rod, frame and hub form a parallelogram holding the axle's pitch.
+  /// 0: no additional arm (the axle rolls on the arm).
+  double extra_arm_height = 0.0;
 };
+
+/// Mass of the hub between arm and axle of a suspension with the additional
+/// arm [kg] (a small body carrying the axle's roll joint; counted with the
+/// axle's unsprung mass).
+inline constexpr double kAxleHubMass = 1.0;
 
 /// All parameters of the truck (examples/truck_lane_change/README.md gives
 /// the values and their sources).
@@ -93,7 +104,24 @@ struct TruckData {
   double tie_rod_arm_length = 0.3;  ///< trapezoid arm length [m], pointing at the rear-axle centre
   double drag_link_length = 0.65;   ///< drag link length; the pitman arm is this far ahead of the front axle [m]
   double pitman_arm_mass = 5.0;     ///< [kg], centre of mass at x = drag_link_length
+  /// Steering column (seed Fig. 4, with the linkage): steering wheel and
+  /// column as one rotating body on a revolute on the frame at the steering
+  /// gear, turned by the servo (gains steering_stiffness / ratio^2 and
+  /// steering_damping / ratio^2, the same compliance seen at the pitman arm)
+  /// to the steering-wheel angle and coupled to the pitman arm by a
+  /// GearJoint of ratio -steering_ratio. False: the servo turns the pitman
+  /// arm directly.
+  bool steering_column = true;
+  double column_mass = 12.0;         ///< steering wheel and column [kg]
+  double column_inertia = 0.2;       ///< about the column axis [kg m^2]
+  double column_length = 1.0;        ///< steering gear to steering wheel [m]; centre of mass at its middle
+  double column_inclination = 0.35;  ///< column axis from the vertical, leaning rearwards [rad]
   TireData front_tire, rear_tire;  ///< tires (rear: a twin set per side)
+  /// Front axle's share of the total brake torque [-], in [0, 1]; each axle's
+  /// torque is split equally between its two wheels.
+  double brake_front_share = 0.4;
+  /// Smoothing spin omega_s of the wheel brakes [rad/s], > 0 (WheelBrake).
+  double brake_smoothing_spin = 0.5;
   double gauge_width = 2.5;        ///< overall width of the vehicle for the gauge points [m]
 };
 
@@ -127,11 +155,14 @@ struct TruckHandles {
 };
 
 /// Builds the truck into `model` (not finalized) moving forward at `speed`
-/// [m/s] on a road with friction `mu`. The steering-wheel angle [rad] and
-/// the drive torque on the rear axle [N m] are read from the shared values
-/// (zero-order hold, CommandSignal). Throws InputError for bad data.
+/// [m/s] on a road with friction `mu`. The steering-wheel angle [rad], the
+/// drive torque on the rear axle [N m] and, when not null, the total brake
+/// torque on all wheels [N m] (WheelBrake on each wheel bearing, shared by
+/// brake_front_share) are read from the shared values (zero-order hold,
+/// CommandSignal). Throws InputError for bad data.
 TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared_ptr<const double> steering_wheel,
-                        std::shared_ptr<const double> drive_torque, Model& model);
+                        std::shared_ptr<const double> drive_torque, Model& model,
+                        std::shared_ptr<const double> brake_torque = nullptr);
 
 /// Reads the truck's parameters from the "truck" map of a lane-change file;
 /// tire data come from the YAML files named there, relative to `dir`.

@@ -5,7 +5,9 @@
 // Mattiasson's elastica (docs/validation.md, "ANCF beams") and against the
 // direct solver SolveAncfStatics on the same beam. The same for the 3D
 // cable body (its clamp by a fixed joint has one redundant equation: the
-// spin about the tangent, which the cable does not have).
+// spin about the tangent, which the cable does not have). A slender beam
+// (EA/EI = 3e6 1/m^2) at PL^2/EI = 10 in one SolveStatics call: the
+// solver's automatic load stepping; one that needs cuts; the error message.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,6 +16,7 @@
 #include <string>
 
 #include "flexmb/ancf/ancf_statics.h"
+#include "flexmb/common/error.h"
 #include "flexmb/io/model_file.h"
 #include "flexmb/solver/initial_conditions.h"
 #include "flexmb/solver/statics.h"
@@ -62,11 +65,9 @@ std::unique_ptr<Model> SolvedCantilever(const std::string& type, const std::stri
 
 TEST(AncfEngineStatics, ClampedCantileverThroughJointsAndForces) {
   // L = 1 m, EI = 1 N m^2 (E = 1.2e5 Pa, h = 0.1 m square), tip load
-  // P = 2 EI / L^2 = 2 N along -y reached at t = 1. The engine's statics
-  // (backtracking on the residual norm) does not converge for slender
-  // beams (EA/EI = 1.2e5 fails at the first load step: a good Newton step
-  // first raises the axial residual); at EA/EI = 1200 it does. The fixed
-  // joint on a planar body has 3 redundant equations of its 6
+  // P = 2 EI / L^2 = 2 N along -y reached at t = 1, in 10 steps of t (the
+  // slender beam with automatic load stepping: SlenderElasticaByLoadStepping).
+  // The fixed joint on a planar body has 3 redundant equations of its 6
   State s;
   const auto model = SolvedCantilever("ancf_beam", "beam", "[0, {expression: \"-2*t\"}, 0]", 3, s);
   const int b = model->FindBody("beam");
@@ -111,6 +112,109 @@ TEST(AncfEngineStatics, ClampedCable3dThroughJointsAndForces) {
   load.segment<3>(6 * 8) = 2.0 * n;
   SolveAncfStatics(cable, {0, 1, 2, 4, 5}, load, Vec3::Zero(), qd);
   for (int j = 0; j < cable.nq(); ++j) EXPECT_NEAR(q[j], qd(j), 1e-8) << j;
+}
+
+// model-file text of Mattiasson's cantilever for the engine: L = 2 m,
+// square section h = L / 1000 (EA/EI = 12 / h^2 = 3e6 1/m^2: axial strain
+// P / EA < 1e-5), EI = 1 N m^2, `elements` elements, fixed joint to the
+// ground at node 0, constant tip load P [N] along -y (PL^2/EI = 4 P)
+std::string SlenderElasticaModel(int elements, double P) {
+  return "name: elastica\n"
+         "gravity: [0, 0, 0]\n"
+         "ground:\n"
+         "  markers:\n"
+         "    - {name: clamp, position: [0, 0, 0]}\n"
+         "bodies:\n"
+         "  - name: beam\n"
+         "    type: ancf_beam\n"
+         "    length: 2.0\n"
+         "    elements: " + std::to_string(elements) + "\n"
+         "    section: {area: 4.0e-6, inertia: 1.3333333333333333e-12}\n"
+         "    material: {E: 7.5e11, rho: 7850}\n"
+         "    markers:\n"
+         "      - {name: root, end: start}\n"
+         "      - {name: tip, end: end}\n"
+         "joints:\n"
+         "  - {name: clamp, type: fixed, i: ground.clamp, j: beam.root}\n"
+         "forces:\n"
+         "  - {name: load, type: point_force, marker: beam.tip, force: [0, " + std::to_string(-P) + ", 0]}\n";
+}
+
+TEST(AncfEngineStatics, SlenderElasticaByLoadStepping) {
+  // the full load from the straight beam in one SolveStatics call: the
+  // solver steps the load itself. Mattiasson (1981), PL^2/EI = 10:
+  // w/L = 0.81061, u/L = 0.55500 (docs/validation.md, "ANCF beams")
+  auto model = LoadModelString(SlenderElasticaModel(16, 2.5), "elastica.yaml");
+  State s = model->InitialState();
+  Workspace ws;
+  MakeConsistent(*model, s, ws);
+  const StaticsResult r = SolveStatics(*model, s, ws);
+  const auto& beam = dynamic_cast<const AncfBeam2dBody&>(*model->bodies[model->FindBody("beam")]);
+  const double* q = s.q.data() + beam.q_offset;
+  const Vec3 tip = beam.PositionAt(q, 2.0);
+  const double w = -tip.y() / 2.0, u = 1.0 - tip.x() / 2.0;
+  std::printf("engine statics, slender elastica PL^2/EI = 10: w/L %.6f (err %.2e), u/L %.6f (err %.2e); "
+              "%d increments, %d cuts, %d Newton iterations\n",
+              w, w - 0.81061, u, u - 0.55500, r.increments, r.cuts, r.iterations);
+  EXPECT_NEAR(w, 0.81061, 1e-4);
+  EXPECT_NEAR(u, 0.55500, 1e-4);
+  // the same equilibrium as the direct solver holding x, y, y' of node 0
+  VecX qd(beam.nq()), vd(beam.nv());
+  beam.InitialCoordinates(qd.data(), vd.data());
+  VecX load = VecX::Zero(beam.nv());
+  load(4 * 16 + 1) = -2.5;
+  AncfStaticsSettings set;
+  set.load_steps = 20;
+  SolveAncfStatics(beam, {0, 1, 3}, load, Vec3::Zero(), qd, set);
+  for (int j = 0; j < beam.nq(); ++j) EXPECT_NEAR(q[j], qd(j), 1e-7) << j;
+}
+
+TEST(AncfEngineStatics, LargeLoadIsSteppedWithCuts) {
+  // PL^2/EI = 50 on 8 elements: Newton from the straight beam at the full
+  // load fails, the solver halves the increment and gets there; the
+  // equilibrium equals the direct solver's with 50 equal load steps
+  auto model = LoadModelString(SlenderElasticaModel(8, 12.5), "elastica.yaml");
+  State s = model->InitialState();
+  Workspace ws;
+  MakeConsistent(*model, s, ws);
+  const StaticsResult r = SolveStatics(*model, s, ws);
+  std::printf("engine statics, PL^2/EI = 50, 8 elements: %d increments, %d cuts, %d Newton iterations\n",
+              r.increments, r.cuts, r.iterations);
+  EXPECT_GT(r.cuts, 0);
+  EXPECT_GT(r.increments, 1);
+  const auto& beam = dynamic_cast<const AncfBeam2dBody&>(*model->bodies[model->FindBody("beam")]);
+  const double* q = s.q.data() + beam.q_offset;
+  VecX qd(beam.nq()), vd(beam.nv());
+  beam.InitialCoordinates(qd.data(), vd.data());
+  VecX load = VecX::Zero(beam.nv());
+  load(4 * 8 + 1) = -12.5;
+  AncfStaticsSettings set;
+  set.load_steps = 50;
+  SolveAncfStatics(beam, {0, 1, 3}, load, Vec3::Zero(), qd, set);
+  for (int j = 0; j < beam.nq(); ++j) EXPECT_NEAR(q[j], qd(j), 1e-7) << j;
+}
+
+TEST(AncfEngineStatics, FailureNamesTheLoadFactorAndTheEntity) {
+  // without load stepping (smallest increment = the full load) the solve
+  // of the case above must fail, with a message naming where
+  auto model = LoadModelString(SlenderElasticaModel(8, 12.5), "elastica.yaml");
+  State s = model->InitialState();
+  Workspace ws;
+  MakeConsistent(*model, s, ws);
+  StaticsSettings set;
+  set.min_increment = 1.0;
+  try {
+    SolveStatics(*model, s, ws, set);
+    FAIL() << "expected a NumericalError";
+  } catch (const NumericalError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("load factor 0 of 1"), std::string::npos) << msg;
+    EXPECT_TRUE(msg.find("body 'beam'") != std::string::npos || msg.find("joint 'clamp'") != std::string::npos)
+        << msg;
+  }
+  // s holds the last converged state: the straight start
+  const auto& beam = *model->bodies[model->FindBody("beam")];
+  EXPECT_NEAR(s.q(beam.q_offset + 4 * 8), 2.0, 1e-12);
 }
 
 }  // namespace ancf_engine_statics_test

@@ -3,6 +3,8 @@
 // and positions of examples/truck_lane_change/truck.yaml.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "truck_harness.h"
 
 namespace flexmb::vehicle::testing {
@@ -21,9 +23,18 @@ TEST(TruckValidation, StaticAxleLoadsEqualMassDistribution) {
                         {d.cargo.mass, d.cargo.cg.x()},
                         {d.front_axle.mass + 2 * d.knuckle.mass + 2 * d.front_wheel.mass, 0.0},
                         {d.rear_axle.mass + 2 * d.rear_wheel.mass, -L},
+                        // tire contact-patch bodies (relaxation length), on the axles
+                        {2.0 * d.front_tire.count * d.front_tire.patch_mass * (d.front_tire.relaxation_length > 0), 0.0},
+                        {2.0 * d.rear_tire.count * d.rear_tire.patch_mass * (d.rear_tire.relaxation_length > 0), -L},
+                        // hubs of the axles with the additional arm
+                        {d.front.extra_arm_height > 0 ? kAxleHubMass : 0.0, 0.0},
+                        {d.rear.extra_arm_height > 0 ? kAxleHubMass : 0.0, -L},
                         {d.arm.mass, 0.5 * d.front.arm_length},
                         {d.arm.mass, -L + 0.5 * d.rear.arm_length},
-                        {d.steering_linkage ? d.pitman_arm_mass : 0.0, d.drag_link_length}};
+                        {d.steering_linkage ? d.pitman_arm_mass : 0.0, d.drag_link_length},
+                        // steering column: centre of mass half-way up the column leaning rearwards
+                        {d.steering_linkage && d.steering_column ? d.column_mass : 0.0,
+                         d.drag_link_length - 0.5 * d.column_length * std::sin(d.column_inclination)}};
   double W = 0, M = 0;
   for (const Part& p : parts) {
     W += p.m * g;

@@ -212,6 +212,41 @@ template <int N>
 void ToBasic(const LocalFrame<N>& frame, const Eigen::Matrix<double, 6 * N, 6 * N>& local,
              MatX& out);
 
+/// Membrane stress resultants (Nxx, Nyy, Nxy) [N/m] in the local frame at a
+/// point with shape function derivatives `dx` (rows d/dx, d/dy, local) for
+/// the element's nodal DOF `u` (6N, basic frame, as K): MembraneMatrix times
+/// the membrane strains of the mid-surface displacements (LocalTransform).
+template <int N>
+Eigen::Vector3d MembraneResultants(const LocalFrame<N>& frame, const ShellData& s,
+                                   const Eigen::Matrix<double, 2, N>& dx,
+                                   const Eigen::Matrix<double, 6 * N, 1>& u) {
+  const Eigen::Matrix<double, 6 * N, 1> ul = LocalTransform<N>(frame) * u;
+  Eigen::Matrix<double, 2 * N, 1> um;
+  for (int i = 0; i < N; ++i) {
+    um(2 * i) = ul(6 * i);
+    um(2 * i + 1) = ul(6 * i + 1);
+  }
+  return MembraneMatrix(s) * (MembraneStrain<N>(dx) * um);
+}
+
+/// Adds the membrane initial-stress (geometric) stiffness of one
+/// integration point to the local element matrix `out`: on each of the local
+/// translations u, v, w of nodes i and j, weight dN_i^T [Nxx Nxy; Nxy Nyy]
+/// dN_j, the second variation of the membrane forces' work on the
+/// Green-Lagrange membrane strains (grad u_a . grad u_a / 2 for a = u, v,
+/// w); `dx` the shape function derivatives (rows d/dx, d/dy), `nres` the
+/// resultants (Nxx, Nyy, Nxy) [N/m], `weight` the area weight [m^2].
+template <int N>
+void AddMembranePrestress(const Eigen::Matrix<double, 2, N>& dx, const Eigen::Vector3d& nres,
+                          double weight, Eigen::Matrix<double, 6 * N, 6 * N>& out) {
+  Eigen::Matrix2d t;
+  t << nres(0), nres(2), nres(2), nres(1);
+  const Eigen::Matrix<double, N, N> g = dx.transpose() * t * dx * weight;
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j)
+      for (int a = 0; a < 3; ++a) out(6 * i + a, 6 * j + a) += g(i, j);
+}
+
 /// Plane-stress elasticity E / (1 - nu^2) [1 nu 0; nu 1 0; 0 0 (1 - nu) / 2]
 /// [Pa], (sxx, syy, sxy) = C (eps_xx, eps_yy, gamma_xy).
 Eigen::Matrix3d PlaneStressMatrix(const ShellData& s);

@@ -177,4 +177,22 @@ void ShellQuad4Stress(const ElementInput& in, MatX& S, Eigen::Matrix3d& axes) {
   axes = f.R;
 }
 
+void ShellQuad4GeometricStiffness(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG) {
+  const shell::ShellData s = shell::CheckShellInput(in, 4);
+  const shell::LocalFrame<4> f = Frame(in, s);
+  Eigen::Vector4d n;
+  Mat2x4 dn;
+  Shape(0.0, 0.0, n, dn);
+  const Eigen::Vector3d nres =
+      shell::MembraneResultants<4>(f, s, Mat2x4((dn * f.xy).inverse() * dn), u.head<24>());
+  Mat24 kl = Mat24::Zero();
+  const double g = 1.0 / std::sqrt(3.0);
+  for (int gp = 0; gp < 4; ++gp) {
+    Shape(kQuadXi[gp] * g, kQuadEta[gp] * g, n, dn);
+    const Eigen::Matrix2d j = dn * f.xy;
+    shell::AddMembranePrestress<4>(Mat2x4(j.inverse() * dn), nres, j.determinant(), kl);
+  }
+  shell::ToBasic<4>(f, kl, KG);
+}
+
 }  // namespace flexmb::fe

@@ -39,4 +39,19 @@ void ShellQuad4Matrices(const ElementInput& in, MatX& K, MatX& M);
 /// Throws InputError as ShellQuad4Matrices for a bad element.
 void ShellQuad4Stress(const ElementInput& in, MatX& S, Eigen::Matrix3d& axes);
 
+/// Geometric (initial-stress) stiffness of a 4-node shell under the
+/// membrane stress of the nodal displacements `u` (24, basic frame, node by
+/// node ux uy uz rx ry rz, as K; a static solution of the prestress load
+/// case): fills KG (24 x 24, as K) [N/m, N, N m] with the mid-surface term
+/// int dN_i^T [Nxx Nxy; Nxy Nyy] dN_j dA on each local translation (u, v,
+/// w), 2x2 Gauss with the bilinear derivatives, the resultants N =
+/// MembraneMatrix eps0 taken at the centroid (the membrane strain of
+/// ShellQuad4Stress, where the incompatible modes have none) and held
+/// constant over the element. The rotations get no initial-stress terms (the
+/// through-thickness terms of order t^2 / 12 and the bending moments'
+/// contribution are neglected), so it is the classical plate-buckling
+/// matrix. Transformed to the nodes like K (warping projection, offset).
+/// Throws InputError as ShellQuad4Matrices.
+void ShellQuad4GeometricStiffness(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG);
+
 }  // namespace flexmb::fe

@@ -116,4 +116,17 @@ void ShellTria3Stress(const ElementInput& in, MatX& S, Eigen::Matrix3d& axes) {
   axes = f.R;
 }
 
+void ShellTria3GeometricStiffness(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG) {
+  const shell::ShellData s = shell::CheckShellInput(in, 3);
+  double area = 0.0;
+  const shell::LocalFrame<3> f = Frame(in, s, area);
+  Eigen::Matrix<double, 2, 3> dn;
+  dn << -1.0, 1.0, 0.0, -1.0, 0.0, 1.0;
+  const Eigen::Matrix<double, 2, 3> dx = (dn * f.xy).inverse() * dn;
+  const Eigen::Vector3d nres = shell::MembraneResultants<3>(f, s, dx, u.head<18>());
+  Mat18 kl = Mat18::Zero();
+  shell::AddMembranePrestress<3>(dx, nres, area, kl);
+  shell::ToBasic<3>(f, kl, KG);
+}
+
 }  // namespace flexmb::fe

@@ -28,4 +28,12 @@ void ShellTria3Matrices(const ElementInput& in, MatX& K, MatX& M);
 /// element (those of the stiffness). Throws InputError as ShellTria3Matrices.
 void ShellTria3Stress(const ElementInput& in, MatX& S, Eigen::Matrix3d& axes);
 
+/// Geometric (initial-stress) stiffness of a 3-node shell under the
+/// membrane stress of the nodal displacements `u` (18, basic frame, as K):
+/// fills KG (18 x 18, as K) with A dN_i^T [Nxx Nxy; Nxy Nyy] dN_j on each
+/// local translation (u, v, w), N the element's constant membrane
+/// resultants; no initial-stress terms on the rotations (as
+/// ShellQuad4GeometricStiffness). Throws InputError as ShellTria3Matrices.
+void ShellTria3GeometricStiffness(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG);
+
 }  // namespace flexmb::fe

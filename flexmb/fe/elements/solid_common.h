@@ -137,6 +137,31 @@ void AddStiffness(const QuadPoint* pts, int count, Shape&& shape, const Vec3* x,
   }
 }
 
+/// Adds the initial-stress (geometric) stiffness int G^T S G dV over the
+/// given points to `kg` (3N x 3N, node by node ux uy uz): the block of nodes
+/// i, j is int dN_i^T S dN_j dV times the 3 x 3 identity, S the symmetric
+/// stress tensor at the point (the second variation of int S : E dV with the
+/// Green-Lagrange strain E). `stress(dx)` returns the stress (sxx, syy, szz,
+/// sxy, syz, szx) [Pa] at a point with cartesian derivatives `dx`.
+template <int N, class Shape, class Stress>
+void AddGeometricStiffness(const QuadPoint* pts, int count, Shape&& shape, const Vec3* x,
+                           const SolidData& s, const Element& e, Stress&& stress,
+                           Eigen::Matrix<double, 3 * N, 3 * N>& kg) {
+  Eigen::Matrix<double, N, 1> n;
+  Eigen::Matrix<double, 3, N> dn, dx;
+  for (int g = 0; g < count; ++g) {
+    shape(pts[g], n, dn);
+    const double det = CartesianDerivatives<N>(dn, x, s, e, dx);
+    const Eigen::Matrix<double, 6, 1> sg = stress(dx);
+    Eigen::Matrix3d t;
+    t << sg(0), sg(3), sg(5), sg(3), sg(1), sg(4), sg(5), sg(4), sg(2);
+    const Eigen::Matrix<double, N, N> gij = dx.transpose() * t * dx * (det * pts[g].w);
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j)
+        for (int a = 0; a < 3; ++a) kg(3 * i + a, 3 * j + a) += gij(i, j);
+  }
+}
+
 /// HRZ lumping (Hinton, Rock, Zienkiewicz 1976): the diagonal of the
 /// consistent mass scaled so that each direction carries the total mass.
 /// Positive for every element here (row sums are not: tet10 corners); keeps

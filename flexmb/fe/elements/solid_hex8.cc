@@ -91,4 +91,18 @@ void SolidHex8Stress(const ElementInput& in, MatX& S) {
   S = solid::PointStress<8>({0.0, 0.0, 0.0, 0.0}, Hex8Shape, in.x, s, *in.element);
 }
 
+void SolidHex8GeometricStiffness(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG) {
+  const solid::SolidData s = solid::CheckSolidInput(in, 8, 8);
+  const Element& e = *in.element;
+  const Eigen::Matrix<double, 6, 1> sigma =
+      solid::PointStress<8>({0.0, 0.0, 0.0, 0.0}, Hex8Shape, in.x, s, e) * u.head<24>();
+  solid::QuadPoint g2[8];
+  GaussRule(2, g2);
+  Mat24 kg = Mat24::Zero();
+  solid::AddGeometricStiffness<8>(
+      g2, 8, Hex8Shape, in.x, s, e,
+      [&](const Eigen::Matrix<double, 3, 8>&) -> Eigen::Matrix<double, 6, 1> { return sigma; }, kg);
+  KG = 0.5 * (kg + kg.transpose());
+}
+
 }  // namespace flexmb::fe

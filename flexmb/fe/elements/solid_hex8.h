@@ -47,4 +47,14 @@ void SolidHex8Matrices(const ElementInput& in, MatX& K, MatX& M,
 /// for a bad material or a non-positive Jacobian at the centre.
 void SolidHex8Stress(const ElementInput& in, MatX& S);
 
+/// Geometric (initial-stress) stiffness of an 8-node hexahedron under the
+/// stress of the nodal displacements `u` (24, basic frame, node by node ux
+/// uy uz, as K): fills KG (24 x 24, as K) [N/m] with int dN_i^T S dN_j dV
+/// I3 by 2x2x2 Gauss, S the stress at the centre (SolidHex8Stress, held
+/// constant over the element: exact for a homogeneous stress, the midpoint
+/// value of a varying one). K + KG is the tangent stiffness of the
+/// prestressed element (total Lagrangian, at the undeformed geometry).
+/// Throws InputError as SolidHex8Matrices.
+void SolidHex8GeometricStiffness(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG);
+
 }  // namespace flexmb::fe

@@ -66,4 +66,18 @@ void SolidTet10Stress(const ElementInput& in, MatX& S) {
   S = solid::PointStress<10>({0.25, 0.25, 0.25, 0.0}, Tet10Shape, in.x, s, *in.element);
 }
 
+void SolidTet10GeometricStiffness(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG) {
+  const solid::SolidData s = solid::CheckSolidInput(in, 10, 4);
+  const Eigen::Matrix<double, 6, 6> d = solid::ElasticityMatrix(s);
+  const Eigen::Matrix<double, 30, 1> ue = u.head<30>();
+  Mat30 kg = Mat30::Zero();
+  solid::AddGeometricStiffness<10>(
+      kFourteenPoint, 14, Tet10Shape, in.x, s, *in.element,
+      [&](const Eigen::Matrix<double, 3, 10>& dx) -> Eigen::Matrix<double, 6, 1> {
+        return d * (solid::StrainMatrix<10>(dx) * ue);
+      },
+      kg);
+  KG = 0.5 * (kg + kg.transpose());
+}
+
 }  // namespace flexmb::fe

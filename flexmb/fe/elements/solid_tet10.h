@@ -28,4 +28,14 @@ void SolidTet10Matrices(const ElementInput& in, MatX& K, MatX& M);
 /// Jacobian at the centroid.
 void SolidTet10Stress(const ElementInput& in, MatX& S);
 
+/// Geometric (initial-stress) stiffness of a 10-node tetrahedron under the
+/// stress of the nodal displacements `u` (30, basic frame, node by node ux
+/// uy uz, as K): fills KG (30 x 30, as K) [N/m] with int dN_i^T S dN_j dV
+/// I3, S = D B u at each point of the 14-point degree-5 rule (the linearly
+/// varying stress of the element, integrated exactly on straight edges).
+/// K + KG is the tangent stiffness of the prestressed element (total
+/// Lagrangian, at the undeformed geometry). Throws InputError as
+/// SolidTet10Matrices.
+void SolidTet10GeometricStiffness(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG);
+
 }  // namespace flexmb::fe

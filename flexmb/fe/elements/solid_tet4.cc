@@ -34,4 +34,18 @@ void SolidTet4Stress(const ElementInput& in, MatX& S) {
   S = solid::PointStress<4>(kOnePoint[0], Tet4Shape, in.x, s, *in.element);
 }
 
+void SolidTet4GeometricStiffness(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG) {
+  const solid::SolidData s = solid::CheckSolidInput(in, 4, 4);
+  const Eigen::Matrix<double, 6, 6> d = solid::ElasticityMatrix(s);
+  const Eigen::Matrix<double, 12, 1> ue = u.head<12>();
+  Mat12 kg = Mat12::Zero();
+  solid::AddGeometricStiffness<4>(
+      kOnePoint, 1, Tet4Shape, in.x, s, *in.element,
+      [&](const Eigen::Matrix<double, 3, 4>& dx) -> Eigen::Matrix<double, 6, 1> {
+        return d * (solid::StrainMatrix<4>(dx) * ue);
+      },
+      kg);
+  KG = 0.5 * (kg + kg.transpose());
+}
+
 }  // namespace flexmb::fe

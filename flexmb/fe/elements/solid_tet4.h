@@ -23,4 +23,13 @@ void SolidTet4Matrices(const ElementInput& in, MatX& K, MatX& M);
 /// frame: D B of the stiffness. Throws InputError as SolidTet4Matrices.
 void SolidTet4Stress(const ElementInput& in, MatX& S);
 
+/// Geometric (initial-stress) stiffness of a 4-node tetrahedron under the
+/// stress of the nodal displacements `u` (12, basic frame, node by node ux
+/// uy uz, as K; a static solution of the prestress load case): fills KG
+/// (12 x 12, as K) [N/m] with V dN_i^T S dN_j I3, S = D B u the element's
+/// constant stress (SolidTet4Stress). K + KG is the tangent stiffness of
+/// the prestressed element (total Lagrangian, Green-Lagrange strain, at the
+/// undeformed geometry). Throws InputError as SolidTet4Matrices.
+void SolidTet4GeometricStiffness(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG);
+
 }  // namespace flexmb::fe

@@ -126,12 +126,29 @@ TEST(AncfBeam2dBody, BadInputThrowsNamingTheBody) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.context().entity, "body 'rope'");
   }
+  // zero or negative length, element count, section
+  auto expect_named = [](const AncfBeam2dData& bad) {
+    try {
+      AncfBeam2dBody("rope", bad);
+      ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.context().entity, "body 'rope'");
+    }
+  };
+  for (double x : {0.0, -1.0}) {
+    d = BeamData();
+    d.length = x;
+    expect_named(d);
+    d = BeamData();
+    d.section.A = x;
+    expect_named(d);
+    d = BeamData();
+    d.section.I = x;
+    expect_named(d);
+  }
   d = BeamData();
-  d.length = -1.0;
-  EXPECT_THROW(AncfBeam2dBody("rope", d), InputError);
-  d = BeamData();
-  d.section.I = 0.0;
-  EXPECT_THROW(AncfBeam2dBody("rope", d), InputError);
+  d.elements = -2;
+  expect_named(d);
   d = BeamData();
   d.direction_W = d.normal_W;
   EXPECT_THROW(AncfBeam2dBody("rope", d), InputError);

@@ -159,12 +159,29 @@ TEST(AncfCable3dBody, BadInputThrowsNamingTheBody) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.context().entity, "body 'rope'");
   }
+  // zero or negative length, element count, section
+  auto expect_named = [](const AncfCable3dData& bad) {
+    try {
+      AncfCable3dBody("rope", bad);
+      ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.context().entity, "body 'rope'");
+    }
+  };
+  for (double x : {0.0, -1.0}) {
+    d = CableData();
+    d.length = x;
+    expect_named(d);
+    d = CableData();
+    d.section.A = x;
+    expect_named(d);
+    d = CableData();
+    d.section.I = x;
+    expect_named(d);
+  }
   d = CableData();
-  d.length = 0.0;
-  EXPECT_THROW(AncfCable3dBody("rope", d), InputError);
-  d = CableData();
-  d.section.A = -1.0;
-  EXPECT_THROW(AncfCable3dBody("rope", d), InputError);
+  d.elements = -2;
+  expect_named(d);
   d = CableData();
   d.direction_W.setZero();
   EXPECT_THROW(AncfCable3dBody("rope", d), InputError);

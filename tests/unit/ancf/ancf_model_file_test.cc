@@ -1,7 +1,8 @@
 // Unit tests of the model-file entry `type: ancf_beam`: a valid beam with
 // node markers, and bad input (non-positive length, element count, section,
-// material; a marker on a node that does not exist) as InputError naming
-// file, line and entity.
+// material; a marker on a node that does not exist; a joint on a marker the
+// beam does not have) as InputError naming file, line and entity; the same
+// for `type: ancf_cable`.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -88,6 +89,12 @@ TEST(AncfModelFile, BadInputNamesFileLineAndEntity) {
       {"length: 2.0", "length: -2.0", "rope.yaml:8", "body 'beam'"},
       {"elements: 4", "elements: 0", "rope.yaml:9", "body 'beam'"},
       {"elements: 4", "elements: 2.5", "rope.yaml:9", "body 'beam'"},
+      {"elements: 4", "elements: -3", "rope.yaml:9", "body 'beam'"},
+      {"{diameter: 0.01}", "{diameter: 0}", "rope.yaml:10", "body 'beam'"},
+      {"{diameter: 0.01}", "{area: 0, inertia: 1.0e-9}", "rope.yaml:10", "body 'beam'"},
+      {"{diameter: 0.01}", "{area: -1.0e-4, inertia: 1.0e-9}", "rope.yaml:10", "body 'beam'"},
+      {"{diameter: 0.01}", "{area: 1.0e-4, inertia: -1.0e-9}", "rope.yaml:10", "body 'beam'"},
+      {"j: beam.top}", "j: beam.tip}", "rope.yaml:21", "joint 'pin'"},
       {"{diameter: 0.01}", "{diameter: -0.01}", "rope.yaml:10", "body 'beam'"},
       {"{diameter: 0.01}", "{area: 1.0e-4, inertia: 0}", "rope.yaml:10", "body 'beam'"},
       {"{E: 2.0e11, rho: 7850}", "{E: 2.0e11, rho: 0}", "rope.yaml:11", "body 'beam'"},
@@ -157,6 +164,12 @@ TEST(AncfModelFile, BadCableInputNamesFileLineAndEntity) {
       {"end: [3, 4, 2]", "length: -1.0", "rope.yaml:9", "body 'rope'"},
       {"end: [3, 4, 2]", "length: 0", "rope.yaml:9", "body 'rope'"},
       {"elements: 6", "elements: -2", "rope.yaml:10", "body 'rope'"},
+      {"elements: 6", "elements: 0", "rope.yaml:10", "body 'rope'"},
+      {"{name: mid, node: 3,", "{name: mid, node: -1,", "rope.yaml:15", "marker 'rope.mid'"},
+      {"{area: 1.0e-4, inertia: 1.0e-9}", "{diameter: -0.01}", "rope.yaml:11", "body 'rope'"},
+      {"area: 1.0e-4", "area: 0", "rope.yaml:11", "body 'rope'"},
+      {"inertia: 1.0e-9", "inertia: -1.0e-9", "rope.yaml:11", "body 'rope'"},
+      {"j: rope.top}", "j: rope.bottom}", "rope.yaml:17", "joint 'pin'"},
       {"inertia: 1.0e-9", "inertia: 0", "rope.yaml:11", "body 'rope'"},
       {"area: 1.0e-4", "area: -1.0e-4", "rope.yaml:11", "body 'rope'"},
       {"    elements: 6\n", "    elements: 6\n    length: 3\n", "rope.yaml:9", "body 'rope'"},

@@ -169,6 +169,10 @@ TEST(ModelFile, LoadsGoodModel) {
   EXPECT_TRUE(m->solver.adaptive);
   EXPECT_EQ(m->solver.max_newton, 8);
   EXPECT_DOUBLE_EQ(m->solver.rtol, SolverSettings{}.rtol);
+  EXPECT_FALSE(m->solver.jacobian_reuse);
+  const auto reuse = LoadModelString(Replace(38, "solver: {jacobian_reuse: true, jacobian_reuse_rate: 0.1}"), "r.yaml");
+  EXPECT_TRUE(reuse->solver.jacobian_reuse);
+  EXPECT_DOUBLE_EQ(reuse->solver.jacobian_reuse_rate, 0.1);
   EXPECT_DOUBLE_EQ(m->output.interval, 0.01);
   EXPECT_TRUE(m->output.animation);
 }
@@ -360,6 +364,7 @@ TEST(ModelFile, BadSettings) {
   ExpectError(Replace(38, "solver: {t_end: 0}"), 38, {"'t_end' must be positive"});
   ExpectError(Replace(38, "solver: {max_newton: 2.5}"), 38, {"'max_newton' must be a whole number"});
   ExpectError(Replace(38, "solver: {adaptive: maybe}"), 38, {"expected true or false for 'adaptive'"});
+  ExpectError(Replace(38, "solver: {jacobian_reuse_rate: 1}"), 38, {"'jacobian_reuse_rate' must lie in (0, 1)"});
   ExpectError(Replace(39, "output: {animation_interval: 0}"), 39, {"output: 'animation_interval' must be positive"});
   ExpectError(Replace(2, "gravity: [0, -9.81, zero]"), 2, {"expected a number for 'gravity' entry 3"});
 }

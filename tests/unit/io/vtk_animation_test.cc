@@ -13,6 +13,8 @@
 
 #include "flexmb/bodies/flexible_body.h"
 #include "flexmb/bodies/rigid_body.h"
+#include "flexmb/common/error.h"
+#include "flexmb/fe/mesh.h"
 #include "flexmb/math/rotation.h"
 #include "flexmb/model/model.h"
 #include "tests/unit/bodies/flexible_test_bodies.h"
@@ -166,6 +168,43 @@ TEST_F(VtkAnimation, BoxFramesAndCollection) {
       EXPECT_LT((got - expected).norm(), 1e-9) << "frame " << f << " corner " << k;
     }
   }
+}
+
+TEST_F(VtkAnimation, MeshShapeMovesWithItsBody) {
+  const Vec3 p_WB(1, -2, 0.5);
+  const Mat3 R_WB = FromRollPitchYaw(Vec3(0.2, 0.1, -0.4));
+  auto model = ShapedModel(Shape{}, p_WB, R_WB);
+  // a quadrilateral and a triangle of an FE mesh, in the body's frame
+  fe::Mesh mesh;
+  const Vec3 x[5] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0.2}, {2, 0, 0}};
+  for (int k = 0; k < 5; ++k) mesh.nodes.push_back(fe::Node{k + 1, x[k], {}});
+  fe::Element quad, tria;
+  quad.type = fe::ElementType::kQuad4;
+  quad.nodes = {0, 1, 2, 3};
+  tria.type = fe::ElementType::kTria3;
+  tria.nodes = {1, 4, 2};
+  mesh.elements = {quad, tria};
+  VtkAnimationWriter w(dir_.string(), *model);
+  w.AddShapeMesh(MakeMeshShape(1, mesh));
+  w.WriteFrame(model->InitialState());
+  const Vtu v = ReadVtu(w.FramePath(0));
+  ASSERT_EQ(v.n_points, 5);
+  ASSERT_EQ(v.points.size(), 15u);
+  EXPECT_EQ(v.connectivity, (std::vector<int>{0, 1, 2, 3, 1, 4, 2}));
+  EXPECT_EQ(v.types, (std::vector<int>{9, 5}));
+  EXPECT_EQ(v.body_id, (std::vector<int>{1, 1}));
+  EXPECT_EQ(v.von_mises, (std::vector<double>{0, 0}));
+  for (int k = 0; k < 5; ++k) {
+    const Vec3 expected = p_WB + R_WB * x[k];
+    EXPECT_LT((Vec3(v.points[3 * k], v.points[3 * k + 1], v.points[3 * k + 2]) - expected).norm(), 1e-9);
+  }
+  // only before the first frame, and only valid meshes
+  EXPECT_THROW(w.AddShapeMesh(MakeMeshShape(1, mesh)), InputError);
+  VtkAnimationWriter w2((dir_ / "b").string(), *model);
+  ShapeMesh bad = MakeMeshShape(1, mesh);
+  bad.connectivity[2] = 7;
+  EXPECT_THROW(w2.AddShapeMesh(bad), InputError);
+  EXPECT_THROW(w2.AddShapeMesh(MakeMeshShape(9, mesh)), InputError);
 }
 
 TEST_F(VtkAnimation, NoShapesGiveValidEmptyFrames) {

@@ -220,6 +220,12 @@ TEST(StressModes, PlateInPureBending) {
     const VecX vm = PointVonMises(s, s.modes.col(0));
     EXPECT_NEAR(vm.maxCoeff(), ref, 1e-8 * ref);
     EXPECT_NEAR(vm.minCoeff(), ref, 1e-8 * ref);
+    // per element: the larger of its two surfaces, from the modal coordinates
+    VecX values, element_vm;
+    ElementVonMises(s, VecX::Unit(s.modes.cols(), 0), values, element_vm);
+    ASSERT_EQ(element_vm.size(), static_cast<Eigen::Index>(s.elements.size()));
+    for (Eigen::Index k = 0; k < element_vm.size(); ++k)
+      EXPECT_EQ(element_vm(k), std::max(vm(2 * k), vm(2 * k + 1)));
   }
 }
 
@@ -464,6 +470,10 @@ TEST(StressModes, BadInputIsAnInputError) {
   ExpectInputErrorWith([&] { PointVonMises(beam, VecX()); }, {"beam", "stress vectors"});
   const StressModes sm = ComputeStressModes(MixedMesh(), MatX::Zero(6 * nn, 1));
   ExpectInputErrorWith([&] { PointVonMises(sm.solid, VecX::Zero(5)); }, {"solid", "expected 18"});
+  VecX values, element_vm;
+  ExpectInputErrorWith([&] { ElementVonMises(beam, VecX(), values, element_vm); }, {"beam", "stress vectors"});
+  ExpectInputErrorWith([&] { ElementVonMises(sm.solid, VecX::Zero(3), values, element_vm); },
+                       {"solid", "3 modal coordinates", "of 1 modes"});
 }
 
 // hand formulas: uniaxial, pure shear (sqrt 3 tau), hydrostatic (0), and

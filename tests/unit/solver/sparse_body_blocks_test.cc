@@ -3,18 +3,23 @@
 // with the banded pattern of an ANCF body equal those assembled with the
 // dense default (the same body behind a wrapper that does not declare a
 // pattern), and the non-zero count of S grows by exactly one element block
-// minus the shared node block per element.
+// minus the shared node block per element. A body writing outside its
+// declared pattern is refused when the workspace is sized.
 
 #include <gtest/gtest.h>
 
 #include <memory>
 #include <random>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "flexmb/ancf/ancf_beam2d_body.h"
 #include "flexmb/ancf/ancf_cable3d_body.h"
 #include "flexmb/forces/bushing.h"
 #include "flexmb/forces/spring_damper.h"
 #include "flexmb/joints/spherical.h"
+#include "flexmb/common/error.h"
 #include "flexmb/solver/assembler.h"
 #include "tests/unit/ancf/ancf_test_util.h"
 
@@ -26,11 +31,15 @@ using ancf::AncfBeam2dData;
 using ancf::AncfCable3dBody;
 using ancf::AncfCable3dData;
 
-// the body T with the dense defaults of BlockPattern and MarkerColumns
+// the body T with the dense defaults of BlockPattern and MarkerColumns, or
+// (leaky) with T's pattern but one force derivative entry written outside it
 template <class T>
 class Dense final : public Body {
  public:
-  explicit Dense(std::unique_ptr<T> b) : Body(b->name()), b_(std::move(b)) {}
+  explicit Dense(std::unique_ptr<T> b, bool leaky = false) : Body(b->name()), b_(std::move(b)), leaky_(leaky) {}
+  bool BlockPattern(std::vector<std::pair<int, int>>& entries) const override {
+    return leaky_ && b_->BlockPattern(entries);
+  }
   int nq() const override { return b_->nq(); }
   int nv() const override { return b_->nv(); }
   void InitialCoordinates(double* q, double* v) const override { b_->InitialCoordinates(q, v); }
@@ -41,6 +50,7 @@ class Dense final : public Body {
   void AddForces(const double* q, const double* v, const Vec3& g, Eigen::Ref<VecX> Q, Eigen::Ref<MatX> Kq,
                  Eigen::Ref<MatX> Kv) const override {
     b_->AddForces(q, v, g, Q, Kq, Kv);
+    if (leaky_) Kv(0, nv() - 1) += 1e-3;
   }
   void EvaluateMarker(const double* q, const double* v, const Marker& m, MarkerState& out) const override {
     b_->EvaluateMarker(q, v, m, out);
@@ -64,6 +74,7 @@ class Dense final : public Body {
 
  private:
   std::unique_ptr<T> b_;
+  bool leaky_ = false;
 };
 
 ancf::BeamSection Section() { return ancf::test_util::MakeSection(0.7e6, 0.0018, 1.215e-8, 5540, 0.02); }
@@ -181,6 +192,32 @@ TEST(SparseBodyBlocks, NonZerosGrowLinearlyWithElements) {
   const int b32 = Assemble(Beam(32), 32).nnz;
   EXPECT_EQ(b16 - b8, 8 * (64 - 16));
   EXPECT_EQ(b32 - b16, 16 * (64 - 16));
+}
+
+TEST(SparseBodyBlocks, WritingOutsideThePatternIsAnError) {
+  // a body that writes dQ/dv outside its declared pattern (the first node's
+  // row, the last node's column, far outside the band): the workspace refuses
+  // it, naming the body; the same body keeping to its pattern is accepted
+  for (const bool leaky : {false, true}) {
+    Model m;
+    if (leaky)
+      m.AddBody(std::make_unique<Dense<AncfCable3dBody>>(Cable(4), true));
+    else
+      m.AddBody(Cable(4));
+    m.Finalize();
+    Workspace ws;
+    if (!leaky) {
+      EXPECT_NO_THROW(InitWorkspace(m, ws));
+      continue;
+    }
+    try {
+      InitWorkspace(m, ws);
+      ADD_FAILURE() << "no error for a body writing outside its pattern";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("body 'beam'"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("outside its declared block pattern"), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace

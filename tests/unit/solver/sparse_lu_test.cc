@@ -2,7 +2,8 @@
 // same matrices: equal solutions on a random well-conditioned system (and the
 // residual of both at round-off), the same singular column on a matrix with a
 // zero column, and the dependent column found on a matrix whose column is a
-// combination of earlier ones.
+// combination of earlier ones; on a large matrix that needs row exchanges,
+// the backward error of the dense path's solution.
 
 #include <gtest/gtest.h>
 
@@ -104,6 +105,33 @@ TEST(SparseLu, DensePathRefusesNaNAndInfinity) {
     EXPECT_LT(dense.singular_column(), n) << bad;
     EXPECT_EQ(dense.rcond(), 0.0) << bad;
   }
+}
+
+TEST(SparseLu, DensePathPivotsOnLargeMatrices) {
+  // no dominant diagonal (row exchanges needed) and n = 530: more than one
+  // panel and more than one trailing-product chunk of the dense LU; reference:
+  // the normwise backward error of the solution (round-off for a stable LU)
+  const int n = 530;
+  std::mt19937 gen(17);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Eigen::MatrixXd D(n, n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) D(i, j) = u(gen);
+  D(0, 0) = 0.0;  // the first pivot must come from another row
+  SparseMat A(n, n);
+  A.reserve(Eigen::VectorXi::Constant(n, n));
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) A.insert(i, j) = D(i, j);
+  A.makeCompressed();
+  SparseLu lu;
+  ASSERT_TRUE(lu.Factorize(A));
+  ASSERT_TRUE(lu.dense());
+  VecX b(n);
+  for (int i = 0; i < n; ++i) b(i) = u(gen);
+  VecX x = b;
+  lu.Solve(x);
+  const double anorm = D.cwiseAbs().rowwise().sum().maxCoeff();
+  EXPECT_LT((D * x - b).lpNorm<Eigen::Infinity>(), 1e-13 * anorm * x.lpNorm<Eigen::Infinity>());
 }
 
 TEST(SparseLu, SmallOrSparseMatricesStayOnKlu) {

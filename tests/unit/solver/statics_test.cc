@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "flexmb/bodies/rigid_body.h"
 #include "flexmb/common/error.h"
@@ -40,6 +41,49 @@ TEST(Statics, PendulumHangsDownWithPinForceMg) {
   EXPECT_LT((R.col(0) - Vec3(0, -1, 0)).norm(), 1e-8);
   // constraint force on the rod, -B^T lambda, balances gravity: |lambda_y| = m g
   EXPECT_NEAR(std::abs(s.lambda(1)), 2.0 * 9.81, 1e-8);
+}
+
+// Newton limited to one iteration per load increment cannot converge: the
+// increments are halved below min_increment and the error names the load
+// factor reached and a body coordinate or joint equation; the state is
+// back at the last equilibrium of the continuation (the start).
+TEST(Statics, FailureNamesLoadFactorAndEntityAndRestoresState) {
+  Model m;
+  m.gravity_W = Vec3(0, -9.81, 0);
+  RigidBodyData d;
+  d.mass = 2.0;
+  d.inertia_C = Vec3(0.01, 0.2, 0.2).asDiagonal();
+  d.c_B = Vec3(0.5, 0, 0);
+  d.R_WB = Eigen::AngleAxisd(-M_PI / 6, Vec3::UnitZ()).toRotationMatrix();
+  const int b = m.AddBody(std::make_unique<RigidBody>("rod", d));
+  m.AddJoint(std::make_unique<RevoluteJoint>("pin"), m.AddMarker(0, "o", Vec3::Zero(), Mat3::Identity()),
+             m.AddMarker(b, "o", Vec3::Zero(), Mat3::Identity()));
+  m.Finalize();
+  State s = m.InitialState();
+  Workspace ws;
+  MakeConsistent(m, s, ws);
+  const VecX q0 = s.q;
+  StaticsSettings set;
+  set.max_iterations = 1;
+  set.min_increment = 0.3;
+  try {
+    SolveStatics(m, s, ws, set);
+    FAIL() << "expected a NumericalError";
+  } catch (const NumericalError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("beyond load factor 0 of 1"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("load increment below 0.3"), std::string::npos) << msg;
+    EXPECT_TRUE(msg.find("body 'rod'") != std::string::npos || msg.find("joint 'pin'") != std::string::npos) << msg;
+  }
+  EXPECT_EQ((s.q - q0).norm(), 0.0);
+  // with the defaults: the full load at once, one increment, no cut
+  const StaticsResult r = SolveStatics(m, s, ws);
+  EXPECT_EQ(r.increments, 1);
+  EXPECT_EQ(r.cuts, 0);
+  Vec3 p;
+  Mat3 R;
+  m.bodies[b]->BodyFramePose(s.q.data() + m.bodies[b]->q_offset, p, R);
+  EXPECT_LT((R.col(0) - Vec3(0, -1, 0)).norm(), 1e-8);
 }
 
 // A free body under gravity has no static equilibrium: the error names it.

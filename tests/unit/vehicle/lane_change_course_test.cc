@@ -27,6 +27,7 @@ TEST(LaneChangeCourse, CentreLineMarginAndDistance) {
 TEST(Driver, NeutralInSection1RateLimitedInSection2) {
   const LaneChangeCourse c(LaneChangeCourseData{20, 20, 3.0, 3.5, 3.5});
   DriverData d;
+  d.steering_law = SteeringLaw::kPurePursuit;
   d.max_wheel_rate = 10.0;
   Driver drv(d, c, 15.0);
   drv.Update(VehicleView{0.0, 5.0, 0.8, 0.0, 0.0, 15.0, 4.2});
@@ -39,6 +40,51 @@ TEST(Driver, NeutralInSection1RateLimitedInSection2) {
   EXPECT_GT(*drv.drive_torque(), -1e-9);
   drv.Update(VehicleView{0.03, 21.1, 16.9, 0.0, 0.0, 14.0, 4.2});
   EXPECT_GT(*drv.drive_torque(), 0.0);
+}
+
+// the preview law's road-wheel angle after one unlimited sample
+double DriverPreviewRoadAngle(const DriverData& d, const LaneChangeCourse& c, VehicleView v) {
+  Driver drv(d, c, v.speed);
+  drv.Update(v);
+  v.t += 0.01;
+  drv.Update(v);
+  return drv.road_wheel_angle();
+}
+
+TEST(Driver, PreviewLawSteersTheArcThroughThePreviewPoint) {
+  const LaneChangeCourse c(LaneChangeCourseData{20, 20, 3.0, 3.5, 3.5});
+  DriverData d;
+  d.max_wheel_rate = 1e6;
+  d.lag_time = 0.0;
+  d.preview_time = 1.0;
+  d.min_preview = 8.0;
+  const double L = 4.2, V = 15.0;
+  // front axle at x = 10 in section 1: the preview point (15 m ahead) is in
+  // the lane change, the driver already steers left
+  const VehicleView v{0.0, 10.0, 10.0 - L, 0.0, 0.0, V, L, 0.0, 0.0};
+  const double road = DriverPreviewRoadAngle(d, c, v);
+  ASSERT_GT(road, 0.0);
+  // the arc of curvature kappa from the rear axle, tangent to x, passes
+  // through the centre-line point 15 m ahead of the front axle
+  const double kappa = std::tan(road) / (L + d.understeer_gradient * V * V / 9.81);
+  const double xp = 25.0, yp = c.CentreLine(xp);
+  const double radius = 1.0 / kappa;
+  EXPECT_NEAR(std::hypot(xp - v.x_rear, yp - radius), radius, 1e-9 * radius);
+  // the first version's law and steer_in_section1: false hold the wheel
+  DriverData late = d;
+  late.steer_in_section1 = false;
+  EXPECT_EQ(DriverPreviewRoadAngle(late, c, v), 0.0);
+  late.steering_law = SteeringLaw::kPurePursuit;
+  EXPECT_EQ(DriverPreviewRoadAngle(late, c, v), 0.0);
+  // on the new lane's centre line, heading along it, not turning: straight
+  EXPECT_NEAR(DriverPreviewRoadAngle(d, c, VehicleView{0.0, 60.0, 60.0 - L, 3.5, 0.0, V, L, 3.5, 0.0}), 0.0, 1e-15);
+  // with the same prediction horizon, a left yaw rate (predicted heading
+  // turned to the left) reduces the left steering demand
+  DriverData lag = d;
+  lag.lag_time = 0.3;
+  VehicleView turning = v;
+  turning.yaw_rate = 0.1;
+  EXPECT_LT(DriverPreviewRoadAngle(lag, c, turning), DriverPreviewRoadAngle(lag, c, v));
 }
 
 }  // namespace

@@ -137,11 +137,134 @@ TEST(Tire, TangentsMatchFiniteDifferences) {
   EXPECT_NEAR(Ce(2, 2), -2 * 1.5e3 / cg, 1e-3 * 2 * 1.5e3);
 }
 
+// Rolling resistance is a moment against the spin, f_r Fz rho tanh(Vx / 0.5)
+// (rho the loaded radius), with no force: a free-rolling wheel balances it by
+// a retarding slip force f_r Fz.
+TEST(Tire, RollingResistanceIsAMomentAgainstTheSpin) {
+  TireData d = Truck();
+  d.rolling_resistance = 0.006;
+  d.vertical_damping = 0.0;
+  const Tire tire("t", d, 0.8);
+  const double rho = 0.515, re = 0.527 - 0.012 / 3.0;
+  const MarkerState m = Wheel(rho, Vec3(10.0, 0, 0), 10.0 / re);
+  TireContact c;
+  const Vec6 w = tire.Wrench(m.p_WM, m.R_WM, m.v_WM, m.w_WM, &c);
+  const double fz = 2 * 9e5 * 0.012;
+  EXPECT_NEAR(c.fz, fz, 1e-6);
+  EXPECT_NEAR(w[0], 0.0, 1e-9);
+  EXPECT_NEAR(w.tail<3>().dot(m.R_WM.col(2)), -0.006 * fz * rho * std::tanh(10.0 / 0.5), 1e-9);
+}
+
+// Relaxed tire (contact-patch carcass model): with the patch not sliding
+// (v_j = v) the slip is the wheel's, so the resultant force of the wheel and
+// patch wrenches is the stateless tire's for any patch offset, and so is the
+// sum of their moments (the patch's about its own marker: the slip force
+// acts at the contact point carried along by the patch); the carcass spring is count * Ky(Fz0) / sigma0 with
+// Ky(Fz0) = pky1 Fz0 sin(2 atan(1 / pky2)) = 8.5 * 25 kN * 0.8.
+TEST(Tire, RelaxedPatchAtRestMatchesStatelessResultant) {
+  TireData d = Truck();
+  const Tire stateless("s", d, 0.8);
+  d.relaxation_length = 0.6;
+  const Tire relaxed("r", d, 0.8);
+  EXPECT_NEAR(relaxed.carcass_stiffness(), 2 * 8.5 * 25e3 * 0.8 / 0.6, 1e-6);
+  const double re = 0.527 - 0.012 / 3.0;
+  MarkerState m = Wheel(0.515, Vec3(14.0, 0.8, -0.05), 1.02 * 14.0 / re);
+  m.R_WM = Eigen::AngleAxisd(0.05, Vec3::UnitZ()).toRotationMatrix() * m.R_WM;
+  m.w_WM = m.R_WM.col(2) * 1.02 * 14.0 / re;
+  const Vec3 a = m.R_WM.col(2), pj = m.p_WM + 0.004 * a;
+  TireContact cs, cr;
+  const Vec6 ws = stateless.Wrench(m.p_WM, m.R_WM, m.v_WM, m.w_WM, &cs);
+  const Vec12 wr = relaxed.RelaxedWrench(m.p_WM, m.R_WM, m.v_WM, m.w_WM, pj, m.v_WM, &cr);
+  const Vec3 f = wr.segment<3>(0) + wr.segment<3>(6);
+  const Vec3 mom = wr.segment<3>(3) + wr.segment<3>(9);
+  EXPECT_LT((f - ws.head<3>()).norm(), 1e-9 * ws.head<3>().norm());
+  EXPECT_LT((mom - ws.tail<3>()).norm(), 1e-9 * ws.tail<3>().norm());
+  EXPECT_NEAR(cr.fy, cs.fy, 1e-9 * std::abs(cs.fy));
+  // the wheel feels the carcass spring, not the slip force
+  const Vec3 yt = Vec3::UnitZ().cross(a.cross(Vec3::UnitZ()).normalized());
+  EXPECT_NEAR(cr.fy_wheel, relaxed.carcass_stiffness() * 0.004 * a.dot(yt), 1e-6);
+  EXPECT_EQ(cs.fy_wheel, cs.fy);
+  // a sliding patch slips less: v_j - v along -Vsy cancels the slip force
+  const double vsy = m.v_WM.dot(yt);
+  TireContact c0;
+  relaxed.RelaxedWrench(m.p_WM, m.R_WM, m.v_WM, m.w_WM, pj, m.v_WM - vsy * yt, &c0);
+  EXPECT_NEAR(c0.fy, 0.0, 1e-9 * std::abs(cs.fy));
+  // wrong marker count for the element's kind
+  ForceEval e;
+  EXPECT_THROW(relaxed.Evaluate(m, MarkerState{}, 0.0, e), InputError);
+  EXPECT_THROW(stateless.RelaxedWrench(m.p_WM, m.R_WM, m.v_WM, m.w_WM, pj, m.v_WM, nullptr), InputError);
+}
+
+// Tangents of the relaxed tire (two markers) against independent central
+// differences of RelaxedWrench with another step; the patch's rotation does
+// not enter.
+TEST(Tire, RelaxedTangentsMatchFiniteDifferences) {
+  TireData d = Truck();
+  d.relaxation_length = 0.6;
+  Tire tire("t", d, 0.8);
+  tire.marker_i = 0;
+  tire.marker_j = 1;
+  const double re = 0.527 - 0.012 / 3.0;
+  MarkerState m = Wheel(0.515, Vec3(14.0, 0.8, -0.05), 1.05 * 14.0 / re);
+  m.R_WM = (Eigen::AngleAxisd(0.1, Vec3::UnitZ()) * Eigen::AngleAxisd(0.02, Vec3::UnitX())).toRotationMatrix() * m.R_WM;
+  m.w_WM = m.R_WM.col(2) * 1.05 * 14.0 / re + Vec3(0.01, 0.0, 0.2);
+  MarkerState pm = m;
+  pm.p_WM = m.p_WM + 0.003 * m.R_WM.col(2);
+  pm.v_WM = m.v_WM - 0.3 * m.R_WM.col(2);
+  ForceEval e;
+  tire.Evaluate(m, pm, 0.0, e);
+  auto W = [&](const MarkerState& i, const MarkerState& j) {
+    return tire.RelaxedWrench(i.p_WM, i.R_WM, i.v_WM, i.w_WM, j.p_WM, j.v_WM, nullptr);
+  };
+  EXPECT_EQ((e.wrench - W(m, pm)).norm(), 0.0);
+  const double h = 1e-5, hv = 1e-4;
+  Mat12 K = Mat12::Zero(), C = Mat12::Zero();
+  for (int k = 0; k < 9; ++k) {
+    MarkerState ip = m, im = m, jp = pm, jm = pm;
+    if (k < 3) {
+      ip.p_WM[k] += h;
+      im.p_WM[k] -= h;
+    } else if (k < 6) {
+      Vec3 th = Vec3::Zero();
+      th[k - 3] = 1.0;
+      ip.R_WM = (Eigen::Quaterniond(Eigen::AngleAxisd(h, th)) * Eigen::Quaterniond(m.R_WM)).toRotationMatrix();
+      im.R_WM = (Eigen::Quaterniond(Eigen::AngleAxisd(-h, th)) * Eigen::Quaterniond(m.R_WM)).toRotationMatrix();
+    } else {
+      jp.p_WM[k - 6] += h;
+      jm.p_WM[k - 6] -= h;
+    }
+    K.col(k) = (W(ip, jp) - W(im, jm)) / (2 * h);
+    MarkerState ia = m, ib = m, ja = pm, jb = pm;
+    if (k < 3) {
+      ia.v_WM[k] += hv;
+      ib.v_WM[k] -= hv;
+    } else if (k < 6) {
+      ia.w_WM[k - 3] += hv;
+      ib.w_WM[k - 3] -= hv;
+    } else {
+      ja.v_WM[k - 6] += hv;
+      jb.v_WM[k - 6] -= hv;
+    }
+    C.col(k) = (W(ia, ja) - W(ib, jb)) / (2 * hv);
+  }
+  EXPECT_LT((e.K - K).norm(), 1e-5 * K.norm()) << "K\n" << e.K << "\nFD\n" << K;
+  EXPECT_LT((e.C - C).norm(), 1e-5 * C.norm()) << "C\n" << e.C << "\nFD\n" << C;
+  // the carcass spring's block: d f_j / d p_j = -k_y I
+  EXPECT_NEAR(e.K(6, 6), -tire.carcass_stiffness(), 1e-4 * tire.carcass_stiffness());
+  EXPECT_EQ(e.K.rightCols<3>().norm() + e.C.rightCols<3>().norm(), 0.0);
+}
+
 TEST(Tire, RejectsBadData) {
   TireData d = Truck();
   d.pky1 = -1;
   EXPECT_THROW(Tire("t", d, 0.8), InputError);
   EXPECT_THROW(Tire("t", Truck(), 0.0), InputError);
+  d = Truck();
+  d.relaxation_length = -0.1;
+  EXPECT_THROW(Tire("t", d, 0.8), InputError);
+  d.relaxation_length = 0.5;
+  d.patch_mass = 0.0;
+  EXPECT_THROW(Tire("t", d, 0.8), InputError);
 }
 
 }  // namespace
