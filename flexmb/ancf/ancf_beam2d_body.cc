@@ -234,8 +234,9 @@ double AncfBeam2dBody::StrainEnergy(const double* q) const {
 
 Vec3 AncfBeam2dBody::PositionAt(const double* q, double s) const {
   const double h = element_.length();
-  const int i = std::min(n_el_ - 1, std::max(0, static_cast<int>(std::floor(s / h))));
-  const double xi = std::min(1.0, std::max(0.0, (s - i * h) / h));
+  int i = 0;
+  double xi = 0.0;
+  LocateOnAncfLine(s, h, n_el_, i, xi);
   const Vec2 r = element_.Position(Eigen::Map<const BeamElVec>(q + 4 * i), xi);
   return data_.start_W + R_WP_.leftCols<2>() * r;
 }

@@ -333,14 +333,20 @@ AncfBeam3d::Vec3d AncfBeam3d::CurvatureTerms(const Vec& e, double xi, Eigen::Mat
 
 void AncfBeam3d::AddStrainTerm(double stiffness, double strain, const Vec& d1, const Mat& d2, const Vec& edot,
                                Vec& Q, Mat& dQde, Mat& dQdedot) const {
-  Q.noalias() -= (stiffness * strain) * d1;
-  dQde.noalias() -= stiffness * (d1 * d1.transpose() + strain * d2);
-  const double beta = section_.damping;
-  if (beta > 0.0) {
-    const double rate = d1.dot(edot);
-    Q.noalias() -= (beta * stiffness * rate) * d1;
-    dQdedot.noalias() -= (beta * stiffness) * d1 * d1.transpose();
-    dQde.noalias() -= (beta * stiffness) * (rate * d2 + d1 * (d2 * edot).transpose());
+  AddAncfStrainTerm<kDof>(stiffness, section_.damping, strain, d1, d2, edot, Q, dQde, dQdedot);
+}
+
+template <class F>
+void AncfBeam3d::ForEachAxialPoint(F&& f) const {
+  const double* xi = nullptr;
+  const double* w = nullptr;
+  const double EA = section_.E * section_.A * length_;
+  for (int rule = 0; rule < 2; ++rule) {
+    const int np = rule == 0 ? order_.axial : order_.axial_full_points;
+    const double frac = rule == 0 ? 1.0 - axial_full_ : axial_full_;
+    if (frac == 0.0) continue;
+    GaussPoints01(np, xi, w);
+    for (int g = 0; g < np; ++g) f(xi[g], frac * w[g] * EA, eps0_[rule][g]);
   }
 }
 
@@ -350,17 +356,10 @@ double AncfBeam3d::StrainEnergy(const Vec& e) const {
   Vec d1;
   Mat d2;
   double W = 0.0;
-  const double EA = section_.E * section_.A * length_;
-  for (int rule = 0; rule < 2; ++rule) {
-    const int np = rule == 0 ? order_.axial : order_.axial_full_points;
-    const double frac = rule == 0 ? 1.0 - axial_full_ : axial_full_;
-    if (frac == 0.0) continue;
-    GaussPoints01(np, xi, w);
-    for (int g = 0; g < np; ++g) {
-      const double eps = AxialTerms(e, xi[g], d1, d2) - eps0_[rule][g];
-      W += 0.5 * frac * w[g] * EA * eps * eps;
-    }
-  }
+  ForEachAxialPoint([&](double x, double EAw, double eps0) {
+    const double eps = AxialTerms(e, x, d1, d2) - eps0;
+    W += 0.5 * EAw * eps * eps;
+  });
   const double stiff[3] = {section_.G * section_.J, section_.E * section_.Iy, section_.E * section_.Iz};
   GaussPoints01(order_.bending, xi, w);
   for (int g = 0; g < order_.bending; ++g) {
@@ -378,17 +377,10 @@ void AncfBeam3d::AddInternalForces(const Vec& e, const Vec& edot, Vec& Q, Mat& d
   const double* w = nullptr;
   Vec d1;
   Mat d2;
-  const double EA = section_.E * section_.A * length_;
-  for (int rule = 0; rule < 2; ++rule) {
-    const int np = rule == 0 ? order_.axial : order_.axial_full_points;
-    const double frac = rule == 0 ? 1.0 - axial_full_ : axial_full_;
-    if (frac == 0.0) continue;
-    GaussPoints01(np, xi, w);
-    for (int g = 0; g < np; ++g) {
-      const double eps = AxialTerms(e, xi[g], d1, d2) - eps0_[rule][g];
-      AddStrainTerm(frac * w[g] * EA, eps, d1, d2, edot, Q, dQde, dQdedot);
-    }
-  }
+  ForEachAxialPoint([&](double x, double EAw, double eps0) {
+    const double eps = AxialTerms(e, x, d1, d2) - eps0;
+    AddStrainTerm(EAw, eps, d1, d2, edot, Q, dQde, dQdedot);
+  });
   const double stiff[3] = {section_.G * section_.J, section_.E * section_.Iy, section_.E * section_.Iz};
   Eigen::Matrix<double, kDof, 3> g1;
   Mat g2[3];

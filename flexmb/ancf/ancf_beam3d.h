@@ -118,6 +118,11 @@ class AncfBeam3d {
   double AxialTerms(const Vec& e, double xi, Vec& d1, Mat& d2) const;
   // torsion and bending strains (k1, k2, k3) at xi with their gradients and Hessians in e
   Vec3d CurvatureTerms(const Vec& e, double xi, Eigen::Matrix<double, kDof, 3>& d1, Mat (&d2)[3]) const;
+  // calls f(xi, EA w, eps0) at every point of the axial rules (weights
+  // include the length and the split between reduced and full integration;
+  // eps0 the reference axial strain at the point)
+  template <class F>
+  void ForEachAxialPoint(F&& f) const;
   // adds -k (s - s0) ds/de and the damping terms of one strain component
   void AddStrainTerm(double stiffness, double strain, const Vec& d1, const Mat& d2, const Vec& edot,
                      Vec& Q, Mat& dQde, Mat& dQdedot) const;

@@ -238,17 +238,7 @@ Vec6 AncfBeam3dBody::Momentum(const double* q, const double* v) const {
   // translational mass m_ab (x) I3 over the vector slots r0, r'0, r1, r'1
   constexpr int off[4] = {0, 3, 7, 10};
   Vec3 p = Vec3::Zero(), L = Vec3::Zero();
-  for (int i = 0; i < n_el_; ++i) {
-    const Beam3dElMat& M = elements_[i].MassMatrix();
-    for (int a = 0; a < 4; ++a) {
-      for (int b = 0; b < 4; ++b) {
-        const double mab = M(off[a], off[b]);
-        const Eigen::Map<const Vec3> ra(q + 7 * i + off[a]), vb(v + 7 * i + off[b]);
-        if (a % 2 == 0) p += mab * vb;
-        L += mab * ra.cross(vb);
-      }
-    }
-  }
+  for (int i = 0; i < n_el_; ++i) AddAncfElementMomentum(elements_[i].MassMatrix(), q + 7 * i, v + 7 * i, off, p, L);
   Vec6 out;
   out << p, L;
   return out;
@@ -260,9 +250,9 @@ void AncfBeam3dBody::BodyFramePose(const double*, Vec3& p_WB, Mat3& R_WB) const 
 }
 
 Vec3 AncfBeam3dBody::PositionAt(const double* q, double s) const {
-  const double h = data_.length / n_el_;
-  const int i = std::min(n_el_ - 1, std::max(0, static_cast<int>(std::floor(s / h))));
-  const double xi = std::min(1.0, std::max(0.0, (s - i * h) / h));
+  int i = 0;
+  double xi = 0.0;
+  LocateOnAncfLine(s, data_.length / n_el_, n_el_, i, xi);
   return elements_[i].Position(Eigen::Map<const Beam3dElVec>(q + 7 * i), xi);
 }
 

@@ -248,19 +248,9 @@ double AncfCable3dBody::ElasticEnergy(const double* q) const {
 
 Vec6 AncfCable3dBody::Momentum(const double* q, const double* v) const {
   // M = m (x) I3 per element: p = sum m_ab v_b, L = sum m_ab r_a x v_b
-  const CableElMat& M = element_.MassMatrix();
+  constexpr int off[4] = {0, 3, 6, 9};
   Vec3 p = Vec3::Zero(), L = Vec3::Zero();
-  for (int i = 0; i < n_el_; ++i) {
-    for (int a = 0; a < 4; ++a) {
-      for (int b = 0; b < 4; ++b) {
-        const double mab = M(3 * a, 3 * b);
-        const Eigen::Map<const Vec3> ra(q + 6 * i + 3 * a), vb(v + 6 * i + 3 * b);
-        const double sa = a % 2 == 0 ? 1.0 : 0.0;
-        p += (sa * mab) * vb;
-        L += mab * ra.cross(vb);
-      }
-    }
-  }
+  for (int i = 0; i < n_el_; ++i) AddAncfElementMomentum(element_.MassMatrix(), q + 6 * i, v + 6 * i, off, p, L);
   Vec6 out;
   out << p, L;
   return out;
@@ -272,9 +262,9 @@ void AncfCable3dBody::BodyFramePose(const double*, Vec3& p_WB, Mat3& R_WB) const
 }
 
 Vec3 AncfCable3dBody::PositionAt(const double* q, double s) const {
-  const double h = element_.length();
-  const int i = std::min(n_el_ - 1, std::max(0, static_cast<int>(std::floor(s / h))));
-  const double xi = std::min(1.0, std::max(0.0, (s - i * h) / h));
+  int i = 0;
+  double xi = 0.0;
+  LocateOnAncfLine(s, element_.length(), n_el_, i, xi);
   return element_.Position(Eigen::Map<const CableElVec>(q + 6 * i), xi);
 }
 

@@ -207,15 +207,7 @@ void LineElement<D>::ForEachBendingPoint(F&& f) const {
 template <int D>
 void LineElement<D>::AddStrainTerm(double stiffness, double strain, const Vec& d1, const Mat& d2,
                                    const Vec& edot, Vec& Q, Mat& dQde, Mat& dQdedot) const {
-  Q.noalias() -= (stiffness * strain) * d1;
-  dQde.noalias() -= stiffness * (d1 * d1.transpose() + strain * d2);
-  const double beta = section_.damping;
-  if (beta > 0.0) {
-    const double rate = d1.dot(edot);
-    Q.noalias() -= (beta * stiffness * rate) * d1;
-    dQdedot.noalias() -= (beta * stiffness) * d1 * d1.transpose();
-    dQde.noalias() -= (beta * stiffness) * (rate * d2 + d1 * (d2 * edot).transpose());
-  }
+  AddAncfStrainTerm<kDof>(stiffness, section_.damping, strain, d1, d2, edot, Q, dQde, dQdedot);
 }
 
 template <int D>

@@ -18,6 +18,9 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <cmath>
+
 namespace flexmb::ancf {
 
 /// Cross section and material of a line element (SI units).
@@ -47,6 +50,51 @@ struct QuadratureOrder {
   double hourglass = 0.1;     ///< hourglass control factor, >= 0 (0: none)
   int axial_full_points = 5;  ///< points of the fully integrated fraction
 };
+
+/// Finds the element i (0..n_el-1) and the element coordinate xi in [0, 1]
+/// of arc length s [m] along a line of n_el elements of length h [m];
+/// s outside [0, n_el h] is clamped to the end elements.
+inline void LocateOnAncfLine(double s, double h, int n_el, int& i, double& xi) {
+  i = std::min(n_el - 1, std::max(0, static_cast<int>(std::floor(s / h))));
+  xi = std::min(1.0, std::max(0.0, (s - i * h) / h));
+}
+
+/// Adds the linear momentum p [kg m/s] and the angular momentum about the
+/// world origin L [kg m^2/s] of one 3D ANCF element whose position vectors
+/// (r0, r0', r1, r1', world) start at slots slot[0..3] of its coordinates qe
+/// and velocities ve; M its mass matrix, m (x) I3 on those slots.
+template <class MassMat>
+void AddAncfElementMomentum(const MassMat& M, const double* qe, const double* ve, const int (&slot)[4],
+                            Eigen::Matrix<double, 3, 1>& p, Eigen::Matrix<double, 3, 1>& L) {
+  for (int a = 0; a < 4; ++a) {
+    for (int b = 0; b < 4; ++b) {
+      const double mab = M(slot[a], slot[b]);
+      const Eigen::Map<const Eigen::Matrix<double, 3, 1>> ra(qe + slot[a]), vb(ve + slot[b]);
+      if (a % 2 == 0) p += mab * vb;
+      L += mab * ra.cross(vb);
+    }
+  }
+}
+
+/// Adds the generalized force of one strain component s(e) of an ANCF
+/// element with weighted stiffness k (stiffness times quadrature weight and
+/// length): Q -= k s ds/de, its tangent to dQde, and with damping time
+/// beta > 0 [s] the Kelvin-Voigt terms Q -= beta k (ds/de . edot) ds/de and
+/// their tangents to dQde and dQdedot. d1 = ds/de, d2 = d^2 s/de^2.
+template <int N>
+void AddAncfStrainTerm(double stiffness, double beta, double strain, const Eigen::Matrix<double, N, 1>& d1,
+                       const Eigen::Matrix<double, N, N>& d2, const Eigen::Matrix<double, N, 1>& edot,
+                       Eigen::Matrix<double, N, 1>& Q, Eigen::Matrix<double, N, N>& dQde,
+                       Eigen::Matrix<double, N, N>& dQdedot) {
+  Q.noalias() -= (stiffness * strain) * d1;
+  dQde.noalias() -= stiffness * (d1 * d1.transpose() + strain * d2);
+  if (beta > 0.0) {
+    const double rate = d1.dot(edot);
+    Q.noalias() -= (beta * stiffness * rate) * d1;
+    dQdedot.noalias() -= (beta * stiffness) * d1 * d1.transpose();
+    dQde.noalias() -= (beta * stiffness) * (rate * d2 + d1 * (d2 * edot).transpose());
+  }
+}
 
 /// Gauss-Legendre points on [0, 1] and their weights (sum 1), n = 1..6.
 /// Throws InputError for other n.

@@ -72,6 +72,14 @@ class Body {
     return false;
   }
 
+  /// Adds scale * d(M(q) a)/dq to K (nv x nv; rows the velocity
+  /// components, columns the tangent increments of Retract) for a fixed
+  /// acceleration a (nv): the iteration-matrix term of a
+  /// configuration-dependent mass. Called only when HasConstantMass() is
+  /// false; the default adds nothing.
+  virtual void AddMassTangent(const double* /*q*/, const double* /*a*/, double /*scale*/,
+                              Eigen::Ref<MatX> /*K*/) const {}
+
   /// Sparsity of the body's own nv x nv blocks (mass matrix, and dQdq, dQdv
   /// of AddForces): appends the structurally non-zero (row, column) pairs, in
   /// the body's velocity indices, to `entries` (duplicates allowed) and

@@ -48,7 +48,8 @@ FlexibleBody::FlexibleBody(std::string name, FlexibleBodyData data)
     : Body(std::move(name)),
       data_(std::move(data)),
       n_(CheckedInvariants(this->name(), data_).n),
-      inertia_(data_.reduced->invariants) {
+      inertia_(data_.reduced->invariants),
+      mass_tangent_(data_.reduced->invariants) {
   if (data_.damping.size() != 0) {
     damping_ = data_.damping;
   } else if (data_.reduced->damping.size() != 0) {
@@ -215,6 +216,10 @@ bool FlexibleBody::AddForceVector(const double* q, const double* v, const Vec3& 
     Q.tail(n).noalias() -= G * Eigen::Map<const VecX>(q + 7, n);
   }
   return true;
+}
+
+void FlexibleBody::AddMassTangent(const double* q, const double* a, double scale, Eigen::Ref<MatX> K) const {
+  mass_tangent_.Add(BodyQuat(q).toRotationMatrix(), q + 7, a, scale, K);
 }
 
 void FlexibleBody::EvaluateMarker(const double* q, const double* v, const Marker& m,

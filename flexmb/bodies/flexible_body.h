@@ -35,6 +35,7 @@
 
 #include "flexmb/bodies/body.h"
 #include "flexmb/bodies/flexible_inertia.h"
+#include "flexmb/bodies/flexible_mass_tangent.h"
 #include "flexmb/bodies/geometric_stiffening.h"
 #include "flexmb/reduction/reduced_body.h"
 
@@ -74,6 +75,8 @@ class FlexibleBody final : public Body {
   /// The forces of AddForces without their derivatives (no O(n^2) tangent
   /// work); returns true.
   bool AddForceVector(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q) const override;
+  /// d(M(q) a)/dq by FlexibleMassTangent (analytic, O(n^2)).
+  void AddMassTangent(const double* q, const double* a, double scale, Eigen::Ref<MatX> K) const override;
   void EvaluateMarker(const double* q, const double* v, const Marker& m,
                       MarkerState& out) const override;
   Vec6 MarkerAccelerationBias(const double* q, const double* v, const Marker& m) const override;
@@ -132,6 +135,7 @@ class FlexibleBody final : public Body {
   // K w and D wd then cost O(n)
   VecX stiffness_diag_, damping_diag_;
   FlexibleInertia inertia_;
+  FlexibleMassTangent mass_tangent_;
   Vec3 first_moment_ = Vec3::Zero();  // S0 = m c0 in body axes [kg m]
   mutable Eigen::Matrix3Xd Hm_;       // scratch: marker modal translation H^t - skew(d) H^r
   mutable MatX mass_rows_;            // scratch: 3 x nv

@@ -3,9 +3,8 @@
 /// The derivative d(M(q) a)/dq of a floating-frame flexible body's mass
 /// matrix times a fixed acceleration, the term of the iteration matrix that
 /// a configuration-dependent mass adds (stiffness coefficient times it;
-/// issue 5, "analytic tangent contributions (mass, ...)"). Not wired into
-/// the assembler yet: the Body interface has no hook for it (the design is
-/// in docs/design.md, "Flexible body: mass-matrix tangent").
+/// issue 5, "analytic tangent contributions (mass, ...)"), added to the
+/// iteration matrix by AddMassTangents (solver/assembler.h).
 ///
 /// Coordinates as FlexibleBody (bodies/flexible_body.h): q = (r_W, R, w),
 /// velocities (v_W, om_B, wd), tangent increments dx = (dr_W, dtheta_B, dw)

@@ -14,6 +14,7 @@
 #include "flexmb/fe/elements/solid_tet10.h"
 #include "flexmb/fe/elements/solid_tet4.h"
 #include "flexmb/fe/sparse_cholesky.h"
+#include "flexmb/reduction/element_input.h"
 
 namespace flexmb::reduction {
 
@@ -33,49 +34,6 @@ Vec3 CentrifugalAcceleration(int c, const Vec3& x) {
   a(j) += x(i);
   return a;
 }
-
-namespace {
-
-// the element's node coordinates (into x), section and material, checked
-fe::ElementInput GsResolveElement(const fe::Mesh& mesh, const fe::Element& e, std::vector<fe::Vec3>& x) {
-  const ErrorContext ctx = fe::ElementContext(e);
-  if (static_cast<int>(e.nodes.size()) != fe::NodeCount(e.type))
-    throw InputError("has " + std::to_string(e.nodes.size()) + " nodes, expected " + std::to_string(fe::NodeCount(e.type)),
-                     ctx);
-  x.clear();
-  for (int node : e.nodes) {
-    if (node < 0 || node >= static_cast<int>(mesh.nodes.size()))
-      throw InputError("refers to a node that does not exist (index " + std::to_string(node) + ")", ctx);
-    x.push_back(mesh.nodes[node].x);
-  }
-  fe::ElementInput in;
-  in.element = &e;
-  in.x = x.data();
-  auto section = [&](const auto& list, const char* family) {
-    if (e.property < 0 || e.property >= static_cast<int>(list.size()))
-      throw InputError(std::string("has no ") + family + " section", ctx);
-    return &list[e.property];
-  };
-  int material = -1;
-  switch (e.type) {
-    case fe::ElementType::kQuad4:
-    case fe::ElementType::kTria3:
-      in.shell = section(mesh.shell_sections, "shell");
-      material = in.shell->material;
-      break;
-    case fe::ElementType::kBeam2:
-      in.beam = section(mesh.beam_sections, "beam");
-      material = in.beam->material;
-      break;
-    default: material = section(mesh.solid_sections, "solid")->material; break;
-  }
-  if (material < 0 || material >= static_cast<int>(mesh.materials.size()))
-    throw InputError("its section has no material", ctx);
-  in.material = &mesh.materials[material];
-  return in;
-}
-
-}  // namespace
 
 void ElementGeometricStiffness(const fe::ElementInput& in, const Eigen::VectorXd& u, MatX& KG, double* axial_force) {
   const fe::Element& e = *in.element;
@@ -113,7 +71,7 @@ fe::SparseMat AssembleGeometricStiffness(const fe::Mesh& mesh, const fe::DofMap&
   MatX KG;
   Eigen::VectorXd ue;
   for (const fe::Element& e : mesh.elements) {
-    const fe::ElementInput in = GsResolveElement(mesh, e, x);
+    const fe::ElementInput in = ResolveElementInput(mesh, e, x);
     const int dpn = fe::DofsPerNode(e.type);
     const int nd = static_cast<int>(e.nodes.size()) * dpn;
     idx.assign(nd, -1);
@@ -199,7 +157,7 @@ std::vector<MatX> ComputeGeometricStiffness(const fe::Mesh& mesh, const MatX& mo
   std::vector<fe::Vec3> x;
   for (size_t ei = 0; ei < mesh.elements.size(); ++ei) {
     const fe::Element& e = mesh.elements[ei];
-    const fe::ElementInput in = GsResolveElement(mesh, e, x);
+    const fe::ElementInput in = ResolveElementInput(mesh, e, x);
     const int dpn = fe::DofsPerNode(e.type);
     const int nen = static_cast<int>(e.nodes.size());
     He.resize(dpn * nen, n);

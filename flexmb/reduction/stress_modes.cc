@@ -14,6 +14,7 @@
 #include "flexmb/fe/elements/solid_hex8.h"
 #include "flexmb/fe/elements/solid_tet10.h"
 #include "flexmb/fe/elements/solid_tet4.h"
+#include "flexmb/reduction/element_input.h"
 #include "flexmb/reduction/parallel_rows.h"
 
 namespace flexmb::reduction {
@@ -28,46 +29,6 @@ Family FamilyOf(fe::ElementType type) {
     case fe::ElementType::kBeam2: return kBeam;
     default: return kSolid;
   }
-}
-
-// the element's nodes, section and material, checked
-fe::ElementInput Resolve(const fe::Mesh& mesh, const fe::Element& e, std::vector<Vec3>& x) {
-  const ErrorContext ctx = fe::ElementContext(e);
-  if (static_cast<int>(e.nodes.size()) != fe::NodeCount(e.type))
-    throw InputError("has " + std::to_string(e.nodes.size()) + " nodes, expected " +
-                         std::to_string(fe::NodeCount(e.type)),
-                     ctx);
-  x.clear();
-  for (int node : e.nodes) {
-    if (node < 0 || node >= static_cast<int>(mesh.nodes.size()))
-      throw InputError("refers to a node that does not exist (index " + std::to_string(node) + ")",
-                       ctx);
-    x.push_back(mesh.nodes[node].x);
-  }
-  fe::ElementInput in;
-  in.element = &e;
-  in.x = x.data();
-  auto section = [&](const auto& list, const char* family) {
-    if (e.property < 0 || e.property >= static_cast<int>(list.size()))
-      throw InputError(std::string("has no ") + family + " section", ctx);
-    return &list[e.property];
-  };
-  int material = -1;
-  switch (FamilyOf(e.type)) {
-    case kShell:
-      in.shell = section(mesh.shell_sections, "shell");
-      material = in.shell->material;
-      break;
-    case kBeam:
-      in.beam = section(mesh.beam_sections, "beam");
-      material = in.beam->material;
-      break;
-    case kSolid: material = section(mesh.solid_sections, "solid")->material; break;
-  }
-  if (material < 0 || material >= static_cast<int>(mesh.materials.size()))
-    throw InputError("its section has no material", ctx);
-  in.material = &mesh.materials[material];
-  return in;
 }
 
 // recovery matrix (element dof -> the table's values of one element) and frame
@@ -127,7 +88,7 @@ StressModes ComputeStressModes(const fe::Mesh& mesh, const MatX& modes) {
     Mat3 axes;
     for (Eigen::Index e = begin; e < end; ++e) {
       const fe::Element& el = mesh.elements[e];
-      const fe::ElementInput in = Resolve(mesh, el, x);
+      const fe::ElementInput in = ResolveElementInput(mesh, el, x);
       Recovery(in, S, axes);
       StressTable& t = *tables[FamilyOf(el.type)];
       const int k = position[e];

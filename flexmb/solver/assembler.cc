@@ -322,6 +322,14 @@ void EvaluateForces(const Model& model, const State& s, Workspace& ws, bool tang
   }
 }
 
+void AddMassTangents(const Model& model, const State& s, const VecX& a, Workspace& ws) {
+  for (size_t k = 0; k < model.bodies.size(); ++k) {
+    const Body& b = *model.bodies[k];
+    if (b.nv() == 0 || b.HasConstantMass()) continue;
+    b.AddMassTangent(s.q.data() + b.q_offset, a.data() + b.v_offset, -1.0, ws.dQdq[k]);
+  }
+}
+
 void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
                              const MatrixCoefficients& c) {
   SparseMat& S = ws.S;

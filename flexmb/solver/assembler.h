@@ -28,6 +28,12 @@ void EvaluateConstraints(const Model& model, const State& state, Workspace& ws);
 /// derivative blocks used by AssembleIterationMatrix.
 void EvaluateForces(const Model& model, const State& state, Workspace& ws, bool tangents);
 
+/// For bodies with a configuration-dependent mass, subtracts d(M(q) a)/dq
+/// from their force derivative blocks (after EvaluateForces with tangents),
+/// so that the stiffness part of the iteration matrix is the tangent of the
+/// residual M(q) a - Q at the acceleration a (nv).
+void AddMassTangents(const Model& model, const State& state, const VecX& a, Workspace& ws);
+
 /// Coefficients of the top-left block of the iteration matrix:
 /// A = mass * M + damping * (-dQ/dv) + stiffness * (-dQ/dq + d(B^T lambda)/dq).
 struct MatrixCoefficients {

@@ -73,6 +73,7 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
     EvaluateMarkers(m, trial_, ws);
     EvaluateConstraints(m, trial_, ws);
     EvaluateForces(m, trial_, ws, fresh);
+    if (fresh) AddMassTangents(m, trial_, vdot1_, ws);
     // residual r = M vdot - Q + B^T lambda, scaled by 1/beta'
     MassTimes(m, ws, vdot1_, res_);
     res_ -= ws.Q;

@@ -171,19 +171,23 @@ void Tire::Evaluate(const MarkerState& mi, const MarkerState& mj, double, ForceE
   Mat3 Ri = mi.R_WM;
   auto eval = [&]() { return Compute(pi, Ri, vi, wi, patch ? &pj : nullptr, patch ? &vj : nullptr, nullptr); };
   e.wrench = eval();
+  Vec12 fp, fm;
+  // forces at var = base +- step into fp, fm; var restored to base
+  auto central = [&](Vec3& var, const Vec3& base, const Vec3& step) {
+    var = base + step;
+    fp = eval();
+    var = base - step;
+    fm = eval();
+    var = base;
+  };
   // central differences: pose (dp, dtheta with dR = skew(dtheta) R), then twist
   for (int k = 0; k < n_var; ++k) {
     if (k >= 9) continue;
     const int a = k % 3;
     Vec3 step = Vec3::Zero();
-    Vec12 fp, fm;
     step[a] = kStepPose;
     if (k < 3) {
-      pi = mi.p_WM + step;
-      fp = eval();
-      pi = mi.p_WM - step;
-      fm = eval();
-      pi = mi.p_WM;
+      central(pi, mi.p_WM, step);
     } else if (k < 6) {
       Ri = ExpSO3(step) * mi.R_WM;
       fp = eval();
@@ -191,33 +195,16 @@ void Tire::Evaluate(const MarkerState& mi, const MarkerState& mj, double, ForceE
       fm = eval();
       Ri = mi.R_WM;
     } else {
-      pj = mj.p_WM + step;
-      fp = eval();
-      pj = mj.p_WM - step;
-      fm = eval();
-      pj = mj.p_WM;
+      central(pj, mj.p_WM, step);
     }
     e.K.col(k) = (fp - fm) / (2 * kStepPose);
     step[a] = kStepRate;
-    if (k < 3) {
-      vi = mi.v_WM + step;
-      fp = eval();
-      vi = mi.v_WM - step;
-      fm = eval();
-      vi = mi.v_WM;
-    } else if (k < 6) {
-      wi = mi.w_WM + step;
-      fp = eval();
-      wi = mi.w_WM - step;
-      fm = eval();
-      wi = mi.w_WM;
-    } else {
-      vj = mj.v_WM + step;
-      fp = eval();
-      vj = mj.v_WM - step;
-      fm = eval();
-      vj = mj.v_WM;
-    }
+    if (k < 3)
+      central(vi, mi.v_WM, step);
+    else if (k < 6)
+      central(wi, mi.w_WM, step);
+    else
+      central(vj, mj.v_WM, step);
     e.C.col(k) = (fp - fm) / (2 * kStepRate);
   }
 }

@@ -140,6 +140,20 @@ std::string SlenderElasticaModel(int elements, double P) {
          "  - {name: load, type: point_force, marker: beam.tip, force: [0, " + std::to_string(-P) + ", 0]}\n";
 }
 
+// checks that the engine's equilibrium q of `beam` (tip load -P along y on
+// the last node) equals the direct ANCF solver's, node 0 held in x, y, y',
+// with `load_steps` equal load steps
+void ExpectEqualsDirectAncfStatics(const AncfBeam2dBody& beam, const double* q, double P, int load_steps) {
+  VecX qd(beam.nq()), vd(beam.nv());
+  beam.InitialCoordinates(qd.data(), vd.data());
+  VecX load = VecX::Zero(beam.nv());
+  load(4 * beam.elements() + 1) = -P;
+  AncfStaticsSettings set;
+  set.load_steps = load_steps;
+  SolveAncfStatics(beam, {0, 1, 3}, load, Vec3::Zero(), qd, set);
+  for (int j = 0; j < beam.nq(); ++j) EXPECT_NEAR(q[j], qd(j), 1e-7) << j;
+}
+
 TEST(AncfEngineStatics, SlenderElasticaByLoadStepping) {
   // the full load from the straight beam in one SolveStatics call: the
   // solver steps the load itself. Mattiasson (1981), PL^2/EI = 10:
@@ -159,14 +173,7 @@ TEST(AncfEngineStatics, SlenderElasticaByLoadStepping) {
   EXPECT_NEAR(w, 0.81061, 1e-4);
   EXPECT_NEAR(u, 0.55500, 1e-4);
   // the same equilibrium as the direct solver holding x, y, y' of node 0
-  VecX qd(beam.nq()), vd(beam.nv());
-  beam.InitialCoordinates(qd.data(), vd.data());
-  VecX load = VecX::Zero(beam.nv());
-  load(4 * 16 + 1) = -2.5;
-  AncfStaticsSettings set;
-  set.load_steps = 20;
-  SolveAncfStatics(beam, {0, 1, 3}, load, Vec3::Zero(), qd, set);
-  for (int j = 0; j < beam.nq(); ++j) EXPECT_NEAR(q[j], qd(j), 1e-7) << j;
+  ExpectEqualsDirectAncfStatics(beam, q, 2.5, 20);
 }
 
 TEST(AncfEngineStatics, LargeLoadIsSteppedWithCuts) {
@@ -183,15 +190,7 @@ TEST(AncfEngineStatics, LargeLoadIsSteppedWithCuts) {
   EXPECT_GT(r.cuts, 0);
   EXPECT_GT(r.increments, 1);
   const auto& beam = dynamic_cast<const AncfBeam2dBody&>(*model->bodies[model->FindBody("beam")]);
-  const double* q = s.q.data() + beam.q_offset;
-  VecX qd(beam.nq()), vd(beam.nv());
-  beam.InitialCoordinates(qd.data(), vd.data());
-  VecX load = VecX::Zero(beam.nv());
-  load(4 * 8 + 1) = -12.5;
-  AncfStaticsSettings set;
-  set.load_steps = 50;
-  SolveAncfStatics(beam, {0, 1, 3}, load, Vec3::Zero(), qd, set);
-  for (int j = 0; j < beam.nq(); ++j) EXPECT_NEAR(q[j], qd(j), 1e-7) << j;
+  ExpectEqualsDirectAncfStatics(beam, s.q.data() + beam.q_offset, 12.5, 50);
 }
 
 TEST(AncfEngineStatics, FailureNamesTheLoadFactorAndTheEntity) {

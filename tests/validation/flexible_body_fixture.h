@@ -5,9 +5,11 @@
 /// Craig-Bampton reduction, the reference integrator settings.
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "flexmb/bodies/flexible_body.h"
+#include "flexmb/math/rotation.h"
 #include "flexmb/model/model.h"
 #include "flexmb/reduction/craig_bampton.h"
 #include "tests/unit/bodies/flexible_test_bodies.h"
@@ -48,6 +50,23 @@ inline void UseReferenceIntegrator(Model& m, double h) {
   m.solver.dt = h;
   m.solver.rho_inf = 1.0;
   m.solver.newton_tol = 1e-12;
+}
+
+/// Adds a free flexible body `name` of the reduced data to m, its body frame
+/// at a fixed general pose (p_WB = (0.5, -1, 2) m, R_WB = Exp((0.3, 0.2,
+/// -0.4)) rad) and modal state w0 [sqrt(kg) m], and finalizes m. Returns the
+/// body's index. For the stress sensor tests: stresses do not depend on the
+/// frame, so a general pose checks that nothing mixes it in.
+inline int AddFinalizedPosedFlexibleBody(Model& m, const std::string& name,
+                                         std::shared_ptr<reduction::ReducedBody> reduced, const VecX& w0) {
+  FlexibleBodyData d;
+  d.reduced = std::move(reduced);
+  d.p_WB = Vec3(0.5, -1.0, 2.0);
+  d.R_WB = ExpSO3(Vec3(0.3, 0.2, -0.4));
+  d.w0 = w0;
+  const int b = m.AddBody(std::make_unique<FlexibleBody>(name, d));
+  m.Finalize();
+  return b;
 }
 
 }  // namespace flexmb::testing

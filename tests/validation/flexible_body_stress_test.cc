@@ -101,13 +101,7 @@ TEST(FlexibleBodyStress, SensorsMatchFullFeRecoveryOfAStaticDeflection) {
   ASSERT_LT(residual, 1e-9);
 
   Model m;
-  FlexibleBodyData d;
-  d.reduced = reduced;
-  d.p_WB = Vec3(0.5, -1.0, 2.0);
-  d.R_WB = ExpSO3(Vec3(0.3, 0.2, -0.4));  // stresses do not depend on the frame
-  d.w0 = coef.tail(n);
-  const int b = m.AddBody(std::make_unique<FlexibleBody>("plate", d));
-  m.Finalize();
+  const int b = testing::AddFinalizedPosedFlexibleBody(m, "plate", reduced, coef.tail(n));
   const auto& body = static_cast<const FlexibleBody&>(*m.bodies[b]);
   const State s = m.InitialState();
   const Workspace ws;

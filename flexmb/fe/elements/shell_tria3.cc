@@ -31,6 +31,14 @@ shell::LocalFrame<3> Frame(const ElementInput& in, const shell::ShellData& s, do
   return f;
 }
 
+// rows d/dx, d/dy of the shape functions N = (1 - r - s, r, s) in the local
+// frame (constant over the element)
+Eigen::Matrix<double, 2, 3> Tria3ShapeDerivatives(const shell::LocalFrame<3>& f) {
+  Eigen::Matrix<double, 2, 3> dn;
+  dn << -1.0, 1.0, 0.0, -1.0, 0.0, 1.0;
+  return (dn * f.xy).inverse() * dn;
+}
+
 }  // namespace
 
 void ShellTria3Matrices(const ElementInput& in, MatX& K, MatX& M) {
@@ -109,9 +117,7 @@ void ShellTria3Stress(const ElementInput& in, MatX& S, Eigen::Matrix3d& axes) {
   const shell::ShellData s = shell::CheckShellInput(in, 3);
   double area = 0.0;
   const shell::LocalFrame<3> f = Frame(in, s, area);
-  Eigen::Matrix<double, 2, 3> dn;
-  dn << -1.0, 1.0, 0.0, -1.0, 0.0, 1.0;
-  const Eigen::Matrix<double, 2, 3> dx = (dn * f.xy).inverse() * dn;
+  const Eigen::Matrix<double, 2, 3> dx = Tria3ShapeDerivatives(f);
   S = shell::SurfaceStress<3>(f, s, dx);
   axes = f.R;
 }
@@ -120,9 +126,7 @@ void ShellTria3GeometricStiffness(const ElementInput& in, const Eigen::VectorXd&
   const shell::ShellData s = shell::CheckShellInput(in, 3);
   double area = 0.0;
   const shell::LocalFrame<3> f = Frame(in, s, area);
-  Eigen::Matrix<double, 2, 3> dn;
-  dn << -1.0, 1.0, 0.0, -1.0, 0.0, 1.0;
-  const Eigen::Matrix<double, 2, 3> dx = (dn * f.xy).inverse() * dn;
+  const Eigen::Matrix<double, 2, 3> dx = Tria3ShapeDerivatives(f);
   const Eigen::Vector3d nres = shell::MembraneResultants<3>(f, s, dx, u.head<18>());
   Mat18 kl = Mat18::Zero();
   shell::AddMembranePrestress<3>(dx, nres, area, kl);

@@ -33,22 +33,11 @@ AncfBeam2dData BeamData() {
 
 // a deformed state and a velocity
 void State(const AncfBeam2dBody& b, VecX& q, VecX& v) {
-  q.resize(b.nq());
-  v.resize(b.nv());
-  b.InitialCoordinates(q.data(), v.data());
-  for (int j = 0; j < b.nq(); ++j) {
-    q(j) += 0.05 * std::sin(1.3 * j + 0.2);
-    v(j) = 0.4 * std::cos(0.7 * j);
-  }
+  test_util::PerturbedBodyState(b, 0.05, q, v);
 }
 
 Marker BeamNodeMarker(int node) {
-  Marker m;
-  m.name = "beam.m";
-  m.node = node;
-  m.p_BM = Vec3(0.1, -0.2, 0.05);
-  m.R_BM = ExpSO3(Vec3(0.2, 0.1, -0.3));
-  return m;
+  return test_util::NodeTestMarker("beam.m", node);
 }
 
 TEST(AncfBeam2dBody, MarkerJacobianMatchesFiniteDifferences) {
@@ -70,18 +59,14 @@ TEST(AncfBeam2dBody, MarkerAccelerationBiasMatchesFiniteDifferences) {
   const AncfBeam2dBody b("beam", BeamData());
   VecX q, v;
   State(b, q, v);
-  VecX acc(b.nv());
-  for (int j = 0; j < b.nv(); ++j) acc(j) = 0.3 * std::sin(2.1 * j);
-  test_util::ExpectMarkerBiasMatchesCentralDifferences(b, q, v, acc, BeamNodeMarker(1));
+  test_util::ExpectMarkerBiasMatchesCentralDifferences(b, q, v, test_util::TestAcceleration(b), BeamNodeMarker(1));
 }
 
 TEST(AncfBeam2dBody, MarkerTangentsMatchFiniteDifferences) {
   const AncfBeam2dBody b("beam", BeamData());
   VecX q, v;
   State(b, q, v);
-  Vec6 w;
-  w << 3.0, -1.0, 2.0, 0.5, 0.7, -0.4;
-  test_util::ExpectMarkerTangentsMatchCentralDifferences(b, q, v, BeamNodeMarker(3), w);
+  test_util::ExpectMarkerTangentsMatchCentralDifferences(b, q, v, BeamNodeMarker(3), test_util::TestWrench());
 }
 
 TEST(AncfBeam2dBody, ForcesTangentsGravityAndEnergy) {

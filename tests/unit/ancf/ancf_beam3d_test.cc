@@ -116,39 +116,11 @@ AncfBeam3dData Beam3dBodyData() {
   return d;
 }
 
-void Beam3dBodyState(const AncfBeam3dBody& b, VecX& q, VecX& v) {
-  q.resize(b.nq());
-  v.resize(b.nv());
-  b.InitialCoordinates(q.data(), v.data());
-  for (int j = 0; j < b.nq(); ++j) {
-    q(j) += 0.15 * std::sin(1.3 * j + 0.2);
-    v(j) = 0.4 * std::cos(0.7 * j);
-  }
-}
-
-Marker Beam3dNodeMarker(int node) {
-  Marker m;
-  m.name = "beam.m";
-  m.node = node;
-  m.p_BM = Vec3(0.1, -0.2, 0.05);
-  m.R_BM = ExpSO3(Vec3(0.2, 0.1, -0.3));
-  return m;
-}
-
 TEST(AncfBeam3dBody, MarkerKinematicsMatchFiniteDifferences) {
   const AncfBeam3dBody b("beam", Beam3dBodyData());
   VecX q, v;
-  Beam3dBodyState(b, q, v);
-  VecX acc(b.nv());
-  for (int j = 0; j < b.nv(); ++j) acc(j) = 0.3 * std::sin(2.1 * j);
-  Vec6 w;
-  w << 3.0, -1.0, 2.0, 0.5, 0.7, -0.4;
-  for (int node : {0, 2, 3}) {
-    SCOPED_TRACE("node " + std::to_string(node));
-    test_util::ExpectMarkerJacobianMatchesCentralDifferences(b, q, v, Beam3dNodeMarker(node));
-    test_util::ExpectMarkerBiasMatchesCentralDifferences(b, q, v, acc, Beam3dNodeMarker(node));
-    test_util::ExpectMarkerTangentsMatchCentralDifferences(b, q, v, Beam3dNodeMarker(node), w);
-  }
+  test_util::PerturbedBodyState(b, 0.15, q, v);
+  test_util::ExpectNodeMarkerKinematicsMatchCentralDifferences(b, q, v, {0, 2, 3});
   // the node frame is the elements' section frame at the node
   const Mat3 F = b.element(1).SectionFrame(q.segment<14>(7), 1.0);
   EXPECT_LT((b.NodeFrame(q.data(), 2) - F).norm(), 1e-13);
@@ -167,7 +139,7 @@ TEST(AncfBeam3dBody, ArcReferenceIsStressFreeAndTangentsMatch) {
   }
   EXPECT_LT(b.ElasticEnergy(q0.data()), 1e-20);
   VecX q, v;
-  Beam3dBodyState(b, q, v);
+  test_util::PerturbedBodyState(b, 0.15, q, v);
   test_util::ExpectBodyForceTangentsMatchCentralDifferences(b, q, v, Vec3(0.0, 0.0, -9.81));
   AncfBeam3dData d0 = d;
   d0.load_per_length_W.setZero();
@@ -203,7 +175,7 @@ TEST(AncfBeam3dBody, BadInputThrowsNamingTheBody) {
   VecX q(b.nq()), v(b.nv());
   b.InitialCoordinates(q.data(), v.data());
   MarkerState ms;
-  EXPECT_THROW(b.EvaluateMarker(q.data(), v.data(), Beam3dNodeMarker(4), ms), InputError);
+  EXPECT_THROW(b.EvaluateMarker(q.data(), v.data(), test_util::NodeTestMarker("beam.m", 4), ms), InputError);
 }
 
 const char* kBeam3dModel =
@@ -222,17 +194,6 @@ const char* kBeam3dModel =
     "      - {name: root, end: start}\n"                         // 13
     "      - {name: tip, node: 8}\n";                            // 14
 
-std::string Beam3dModelError(const std::string& from, const std::string& to) {
-  std::string text = kBeam3dModel;
-  text.replace(text.find(from), from.size(), to);
-  try {
-    LoadModelString(text, "bend.yaml");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(AncfBeam3dModelFile, ArcWithMarkersAndBadInput) {
   auto model = LoadModelString(kBeam3dModel, "bend.yaml");
   const int ib = model->FindBody("arc");
@@ -247,13 +208,7 @@ TEST(AncfBeam3dModelFile, ArcWithMarkersAndBadInput) {
   const double c = std::sqrt(0.5);
   EXPECT_LT((ms.p_WM - Vec3(100.0 * c, 100.0 * (1.0 - c), 0.0)).norm(), 1e-12);
   EXPECT_LT((ms.R_WM.col(0) - Vec3(c, c, 0.0)).norm(), 1e-12);
-  struct Case {
-    const char* from;
-    const char* to;
-    const char* where;
-    const char* entity;
-  };
-  const Case cases[] = {
+  const test_util::ModelFileErrorCase cases[] = {
       {"length: 78.539816339744831", "length: 0", "bend.yaml:5", "body 'arc'"},
       {"elements: 8", "elements: 0", "bend.yaml:6", "body 'arc'"},
       {"radius: 100", "radius: -1", "bend.yaml:7", "body 'arc'"},
@@ -265,11 +220,7 @@ TEST(AncfBeam3dModelFile, ArcWithMarkersAndBadInput) {
       {"nu: 0, ", "", "bend.yaml:9", "body 'arc'"},
       {"{name: tip, node: 8}", "{name: tip, node: 9}", "bend.yaml:14", "marker 'arc.tip'"},
   };
-  for (const Case& k : cases) {
-    const std::string what = Beam3dModelError(k.from, k.to);
-    EXPECT_NE(what.find(k.where), std::string::npos) << k.to << ": " << what;
-    EXPECT_NE(what.find(k.entity), std::string::npos) << k.to << ": " << what;
-  }
+  test_util::ExpectModelFileErrorsNameLineAndEntity(kBeam3dModel, "bend.yaml", cases);
 }
 
 }  // namespace

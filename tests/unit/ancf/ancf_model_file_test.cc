@@ -11,6 +11,7 @@
 #include "flexmb/ancf/ancf_cable3d_body.h"
 #include "flexmb/common/error.h"
 #include "flexmb/io/model_file.h"
+#include "tests/unit/ancf/ancf_test_util.h"
 
 namespace flexmb::ancf {
 namespace {
@@ -38,11 +39,6 @@ const char* kModel =
     "joints:\n"                                               // 20
     "  - {name: pin, type: revolute, i: ground.hook, j: beam.top}\n";
 
-std::string Replace(std::string text, const std::string& from, const std::string& to) {
-  text.replace(text.find(from), from.size(), to);
-  return text;
-}
-
 TEST(AncfModelFile, BeamWithNodeMarkers) {
   auto model = LoadModelString(kModel, "rope.yaml");
   const int b = model->FindBody("beam");
@@ -65,24 +61,8 @@ TEST(AncfModelFile, BeamWithNodeMarkers) {
   EXPECT_LT((ms.R_WM.col(0) - Vec3(0, 0, -1)).norm(), 1e-14);
 }
 
-// loads `text` and returns the error message ("" if none)
-std::string ErrorOf(const std::string& text) {
-  try {
-    LoadModelString(text, "rope.yaml");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(AncfModelFile, BadInputNamesFileLineAndEntity) {
-  struct Case {
-    const char* from;
-    const char* to;
-    const char* where;
-    const char* entity;
-  };
-  const Case cases[] = {
+  const test_util::ModelFileErrorCase cases[] = {
       {"{name: mid, node: 2}", "{name: mid, node: 5}", "rope.yaml:18", "marker 'beam.mid'"},
       {"{name: mid, node: 2}", "{name: mid, node: -1}", "rope.yaml:18", "marker 'beam.mid'"},
       {"length: 2.0", "length: 0", "rope.yaml:8", "body 'beam'"},
@@ -103,12 +83,8 @@ TEST(AncfModelFile, BadInputNamesFileLineAndEntity) {
       {"{name: bottom, end: end}", "{name: bottom, end: middle}", "rope.yaml:19", "marker 'beam.bottom'"},
       {"{name: bottom, end: end}", "{name: bottom}", "rope.yaml:19", "marker 'beam.bottom'"},
   };
-  for (const Case& c : cases) {
-    const std::string what = ErrorOf(Replace(kModel, c.from, c.to));
-    EXPECT_NE(what.find(c.where), std::string::npos) << c.to << ": " << what;
-    EXPECT_NE(what.find(c.entity), std::string::npos) << c.to << ": " << what;
-  }
-  EXPECT_NE(ErrorOf(Replace(kModel, "{name: mid, node: 2}", "{name: mid, node: 5}"))
+  test_util::ExpectModelFileErrorsNameLineAndEntity(kModel, "rope.yaml", cases);
+  EXPECT_NE(test_util::ModelFileErrorOf(kModel, "rope.yaml", "{name: mid, node: 2}", "{name: mid, node: 5}")
                 .find("node 5 does not exist"),
             std::string::npos);
 }
@@ -152,13 +128,7 @@ TEST(AncfModelFile, CableFromEndPointsWithNodeMarkers) {
 }
 
 TEST(AncfModelFile, BadCableInputNamesFileLineAndEntity) {
-  struct Case {
-    const char* from;
-    const char* to;
-    const char* where;
-    const char* entity;
-  };
-  const Case cases[] = {
+  const test_util::ModelFileErrorCase cases[] = {
       {"{name: mid, node: 3,", "{name: mid, node: 7,", "rope.yaml:15", "marker 'rope.mid'"},
       {"end: [3, 4, 2]", "end: [1, 2, 3]", "rope.yaml:9", "body 'rope'"},
       {"end: [3, 4, 2]", "length: -1.0", "rope.yaml:9", "body 'rope'"},
@@ -175,12 +145,9 @@ TEST(AncfModelFile, BadCableInputNamesFileLineAndEntity) {
       {"    elements: 6\n", "    elements: 6\n    length: 3\n", "rope.yaml:9", "body 'rope'"},
       {"end: [3, 4, 2]", "length: 2\n    direction: [0, 0, 1]\n    normal: [0, 0, 2]", "rope.yaml:", "body 'rope'"},
   };
-  for (const Case& c : cases) {
-    const std::string what = ErrorOf(Replace(kCable, c.from, c.to));
-    EXPECT_NE(what.find(c.where), std::string::npos) << c.to << ": " << what;
-    EXPECT_NE(what.find(c.entity), std::string::npos) << c.to << ": " << what;
-  }
-  EXPECT_NE(ErrorOf(Replace(kCable, "{name: mid, node: 3,", "{name: mid, node: 7,")).find("node 7 does not exist"),
+  test_util::ExpectModelFileErrorsNameLineAndEntity(kCable, "rope.yaml", cases);
+  EXPECT_NE(test_util::ModelFileErrorOf(kCable, "rope.yaml", "{name: mid, node: 3,", "{name: mid, node: 7,")
+                .find("node 7 does not exist"),
             std::string::npos);
 }
 

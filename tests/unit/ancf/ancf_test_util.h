@@ -2,11 +2,17 @@
 // Fixtures shared by the ANCF element and body unit tests: sections, the
 // element force at a state, central-difference checks of the element
 // tangents and of the force against the strain-energy gradient, and of a
-// body's marker kinematics and force tangents.
+// body's marker kinematics and force tangents; model-file error checks.
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <initializer_list>
+#include <string>
 
 #include "flexmb/ancf/line_element.h"
 #include "flexmb/bodies/body.h"
+#include "flexmb/common/error.h"
+#include "flexmb/io/model_file.h"
 #include "flexmb/math/rotation.h"
 
 namespace flexmb::ancf::test_util {
@@ -98,6 +104,42 @@ inline void ExpectMarkerJacobianMatchesCentralDifferences(const Body& b, const V
   }
 }
 
+/// Sets (q, v) of `b` to its initial coordinates with every coordinate
+/// shifted by amplitude * sin(1.3 j + 0.2) and the velocity 0.4 cos(0.7 j).
+inline void PerturbedBodyState(const Body& b, double amplitude, VecX& q, VecX& v) {
+  q.resize(b.nq());
+  v.resize(b.nv());
+  b.InitialCoordinates(q.data(), v.data());
+  for (int j = 0; j < b.nq(); ++j) {
+    q(j) += amplitude * std::sin(1.3 * j + 0.2);
+    v(j) = 0.4 * std::cos(0.7 * j);
+  }
+}
+
+/// A marker named `name` on node `node`, offset and turned from the node frame.
+inline Marker NodeTestMarker(const std::string& name, int node) {
+  Marker m;
+  m.name = name;
+  m.node = node;
+  m.p_BM = Vec3(0.1, -0.2, 0.05);
+  m.R_BM = ExpSO3(Vec3(0.2, 0.1, -0.3));
+  return m;
+}
+
+/// A fixed test acceleration of `b`: 0.3 sin(2.1 j).
+inline VecX TestAcceleration(const Body& b) {
+  VecX acc(b.nv());
+  for (int j = 0; j < b.nv(); ++j) acc(j) = 0.3 * std::sin(2.1 * j);
+  return acc;
+}
+
+/// A fixed test wrench (f, m) for the marker wrench tangent checks.
+inline Vec6 TestWrench() {
+  Vec6 w;
+  w << 3.0, -1.0, 2.0, 0.5, 0.7, -0.4;
+  return w;
+}
+
 /// Checks J acc + bias against the central-difference time derivative of
 /// the marker twist along q + t v + t^2/2 acc (relative 1e-6).
 inline void ExpectMarkerBiasMatchesCentralDifferences(const Body& b, const VecX& q, const VecX& v,
@@ -187,6 +229,54 @@ inline void ExpectBodyForcesArePotentialGradients(const Body& b, const VecX& q, 
     const double dW = (b.ElasticEnergy(qp.data()) - b.ElasticEnergy(qm.data())) / (2 * h);
     EXPECT_NEAR(Qg(j) - Qe(j), -dV, 1e-6 * (1.0 + Qg.norm())) << j;
     EXPECT_NEAR(Qe(j), -dW, 1e-6 * Qe.norm()) << j;
+  }
+}
+
+/// Checks the Jacobian, acceleration bias and wrench and twist tangents of
+/// a node test marker (NodeTestMarker) on each node in `nodes` at (q, v).
+inline void ExpectNodeMarkerKinematicsMatchCentralDifferences(const Body& b, const VecX& q, const VecX& v,
+                                                              std::initializer_list<int> nodes) {
+  const VecX acc = TestAcceleration(b);
+  for (int node : nodes) {
+    SCOPED_TRACE("node " + std::to_string(node));
+    const Marker m = NodeTestMarker(b.name() + ".m", node);
+    ExpectMarkerJacobianMatchesCentralDifferences(b, q, v, m);
+    ExpectMarkerBiasMatchesCentralDifferences(b, q, v, acc, m);
+    ExpectMarkerTangentsMatchCentralDifferences(b, q, v, m, TestWrench());
+  }
+}
+
+/// One bad-input case of a model file: the text `from` replaced by `to`
+/// must give an InputError naming `where` (file:line) and `entity`.
+struct ModelFileErrorCase {
+  const char* from;
+  const char* to;
+  const char* where;
+  const char* entity;
+};
+
+/// The InputError message of model text `text` (loaded as file `file`)
+/// with the first `from` replaced by `to`; "" if it loads.
+inline std::string ModelFileErrorOf(std::string text, const std::string& file, const std::string& from,
+                                    const std::string& to) {
+  const size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  try {
+    LoadModelString(text, file);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+/// Checks every case of `cases` on model text `text` loaded as `file`.
+template <class Cases>
+void ExpectModelFileErrorsNameLineAndEntity(const std::string& text, const std::string& file, const Cases& cases) {
+  for (const ModelFileErrorCase& c : cases) {
+    const std::string what = ModelFileErrorOf(text, file, c.from, c.to);
+    EXPECT_NE(what.find(c.where), std::string::npos) << c.to << ": " << what;
+    EXPECT_NE(what.find(c.entity), std::string::npos) << c.to << ": " << what;
   }
 }
 

@@ -302,15 +302,21 @@ void ExpectNoAllocationPinnedAndDamped(Model& m, int b, const Vec3& tip_offset, 
   EXPECT_EQ(c.mallocs(), 0) << "malloc/calloc/realloc calls in 100 steps with " << what;
 }
 
+// a free bent bar of 9 modes (testing::FreeBentBar(3, 3)), spinning at
+// w_WB = (0.5, 1, 3) rad/s, added to m; returns its body index
+int NoAllocSpinningBentBar(Model& m) {
+  FlexibleBodyData d;
+  d.reduced = testing::FreeBentBar(3, 3);
+  d.w_WB = Vec3(0.5, 1.0, 3.0);
+  return m.AddBody(std::make_unique<FlexibleBody>("bar", d));
+}
+
 TEST(NoAllocation, FlexibleBodySteps) {
   // a floating-frame flexible body (9 modes) hanging from a spherical joint
   // at a node, a damper on another node: body forces, tangents and markers
   if (!FLEXMB_COUNT_ALLOCATIONS) GTEST_SKIP() << "allocation counting is off under AddressSanitizer";
   Model m;
-  FlexibleBodyData d;
-  d.reduced = testing::FreeBentBar(3, 3);
-  d.w_WB = Vec3(0.5, 1.0, 3.0);
-  const int b = m.AddBody(std::make_unique<FlexibleBody>("bar", d));
+  const int b = NoAllocSpinningBentBar(m);
   ExpectNoAllocationPinnedAndDamped(m, b, Vec3(0, 0, 0.01), "a flexible body");
 }
 
@@ -318,10 +324,7 @@ TEST(NoAllocation, FlexibleBodyStepsWithJacobianReuse) {
   // the same with modified Newton: iterations without force derivatives
   if (!FLEXMB_COUNT_ALLOCATIONS) GTEST_SKIP() << "allocation counting is off under AddressSanitizer";
   Model m;
-  FlexibleBodyData d;
-  d.reduced = testing::FreeBentBar(3, 3);
-  d.w_WB = Vec3(0.5, 1.0, 3.0);
-  const int b = m.AddBody(std::make_unique<FlexibleBody>("bar", d));
+  const int b = NoAllocSpinningBentBar(m);
   m.solver.jacobian_reuse = true;
   ExpectNoAllocationPinnedAndDamped(m, b, Vec3(0, 0, 0.01), "a flexible body and Jacobian reuse");
 }

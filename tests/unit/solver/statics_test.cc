@@ -13,21 +13,29 @@
 namespace flexmb {
 namespace {
 
-// A pendulum released at 60 degrees from the downward vertical hangs straight
-// down at equilibrium; the pin carries m g.
-TEST(Statics, PendulumHangsDownWithPinForceMg) {
-  Model m;
+// a rod of 2 kg (centre of mass at body x = 0.5 m) pinned at its body
+// origin to the world origin by a revolute joint about z, turned by angle_z
+// [rad] about z from body x = world x; gravity 9.81 m/s^2 along -y; m
+// finalized. Returns the rod's body index.
+int StaticsPinnedRod(Model& m, double angle_z) {
   m.gravity_W = Vec3(0, -9.81, 0);
   RigidBodyData d;
   d.mass = 2.0;
   d.inertia_C = Vec3(0.01, 0.2, 0.2).asDiagonal();
   d.c_B = Vec3(0.5, 0, 0);
-  const double a = -M_PI / 2 + M_PI / 3;  // 60 deg from hanging
-  d.R_WB = Eigen::AngleAxisd(a, Vec3::UnitZ()).toRotationMatrix();
+  d.R_WB = Eigen::AngleAxisd(angle_z, Vec3::UnitZ()).toRotationMatrix();
   const int b = m.AddBody(std::make_unique<RigidBody>("rod", d));
   m.AddJoint(std::make_unique<RevoluteJoint>("pin"), m.AddMarker(0, "o", Vec3::Zero(), Mat3::Identity()),
              m.AddMarker(b, "o", Vec3::Zero(), Mat3::Identity()));
   m.Finalize();
+  return b;
+}
+
+// A pendulum released at 60 degrees from the downward vertical hangs straight
+// down at equilibrium; the pin carries m g.
+TEST(Statics, PendulumHangsDownWithPinForceMg) {
+  Model m;
+  const int b = StaticsPinnedRod(m, -M_PI / 2 + M_PI / 3);  // 60 deg from hanging
   State s = m.InitialState();
   Workspace ws;
   MakeConsistent(m, s, ws);
@@ -49,16 +57,7 @@ TEST(Statics, PendulumHangsDownWithPinForceMg) {
 // back at the last equilibrium of the continuation (the start).
 TEST(Statics, FailureNamesLoadFactorAndEntityAndRestoresState) {
   Model m;
-  m.gravity_W = Vec3(0, -9.81, 0);
-  RigidBodyData d;
-  d.mass = 2.0;
-  d.inertia_C = Vec3(0.01, 0.2, 0.2).asDiagonal();
-  d.c_B = Vec3(0.5, 0, 0);
-  d.R_WB = Eigen::AngleAxisd(-M_PI / 6, Vec3::UnitZ()).toRotationMatrix();
-  const int b = m.AddBody(std::make_unique<RigidBody>("rod", d));
-  m.AddJoint(std::make_unique<RevoluteJoint>("pin"), m.AddMarker(0, "o", Vec3::Zero(), Mat3::Identity()),
-             m.AddMarker(b, "o", Vec3::Zero(), Mat3::Identity()));
-  m.Finalize();
+  const int b = StaticsPinnedRod(m, -M_PI / 6);
   State s = m.InitialState();
   Workspace ws;
   MakeConsistent(m, s, ws);
