@@ -19,6 +19,10 @@ struct ForceEval {
   Vec12 wrench = Vec12::Zero();  ///< (f_i, m_i, f_j, m_j) world [N, N m]
   Mat12 K = Mat12::Zero();       ///< d wrench / d x
   Mat12 C = Mat12::Zero();       ///< d wrench / d twist
+  /// Set by the caller: false when only the wrench is needed (a residual
+  /// evaluation with a kept iteration matrix); an element whose tangents
+  /// are costly (e.g. finite differences) may then leave K and C as they are.
+  bool tangents = true;
 };
 
 /// Abstract force element. Single-marker elements have marker_j = -1 and

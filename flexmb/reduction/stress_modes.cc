@@ -131,22 +131,39 @@ VecX PointVonMises(const StressTable& table, const VecX& v) {
   return out;
 }
 
-void ElementVonMises(const StressTable& table, const Eigen::Ref<const VecX>& w, VecX& values, VecX& von_mises) {
+namespace {
+// the checks shared by the element von Mises routines
+void CheckStressVectorTable(const StressTable& table) {
   const int c = table.Components();
   if ((c != 3 && c != 6) || table.components.front() != "sxx")
     throw InputError("von Mises: the " + table.name +
                      " table does not hold stress vectors (sxx syy sxy or sxx ... szx)");
-  const Eigen::Index elements = static_cast<Eigen::Index>(table.elements.size());
-  const int locations = table.Locations();
+  const Eigen::Index expected = static_cast<Eigen::Index>(table.elements.size()) * table.Locations() * c;
+  if (table.modes.rows() != expected)
+    throw InputError("von Mises: the " + table.name + " table has " + std::to_string(table.modes.rows()) +
+                     " rows, expected " + std::to_string(expected));
+}
+}  // namespace
+
+void ElementVonMises(const StressTable& table, const Eigen::Ref<const VecX>& w, VecX& values, VecX& von_mises) {
+  CheckStressVectorTable(table);
   if (w.size() != table.modes.cols())
     throw InputError("von Mises: " + std::to_string(w.size()) + " modal coordinates for the " + table.name +
                      " table of " + std::to_string(table.modes.cols()) + " modes");
-  if (table.modes.rows() != elements * locations * c)
-    throw InputError("von Mises: the " + table.name + " table has " + std::to_string(table.modes.rows()) +
-                     " rows, expected " + std::to_string(elements * locations * c));
   if (values.size() != table.modes.rows()) values.resize(table.modes.rows());
-  if (von_mises.size() != elements) von_mises.resize(elements);
   values.noalias() = table.modes * w;
+  ElementVonMisesOfValues(table, values, von_mises);
+}
+
+void ElementVonMisesOfValues(const StressTable& table, const Eigen::Ref<const VecX>& values, VecX& von_mises) {
+  CheckStressVectorTable(table);
+  if (values.size() != table.modes.rows())
+    throw InputError("von Mises: " + std::to_string(values.size()) + " stress values for the " + table.name +
+                     " table of " + std::to_string(table.modes.rows()) + " rows");
+  const int c = table.Components();
+  const Eigen::Index elements = static_cast<Eigen::Index>(table.elements.size());
+  const int locations = table.Locations();
+  if (von_mises.size() != elements) von_mises.resize(elements);
   for (Eigen::Index k = 0; k < elements; ++k) {
     double vm = 0.0;
     for (int l = 0; l < locations; ++l) {

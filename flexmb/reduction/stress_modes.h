@@ -54,6 +54,11 @@ VecX PointVonMises(const StressTable& table, const VecX& v);
 /// components rows.
 void ElementVonMises(const StressTable& table, const Eigen::Ref<const VecX>& w, VecX& values, VecX& von_mises);
 
+/// Element von Mises stresses as ElementVonMises, from given stress values
+/// (rows as table.modes, e.g. one column of table.modes * W for a batch of
+/// coordinate vectors W). Same checks of the table, and of values.size().
+void ElementVonMisesOfValues(const StressTable& table, const Eigen::Ref<const VecX>& values, VecX& von_mises);
+
 /// Normal stress sigma_xx [Pa] at the point (y, z) of a beam section
 /// (element frame, from the section's centroid) from the section forces
 /// f = (N, Vy, Vz, T, My, Mz) (StressModes::beam components), by

@@ -305,6 +305,7 @@ void EvaluateForces(const Model& model, const State& s, Workspace& ws, bool tang
     const MarkerState& mi = ws.markers[f.marker_i];
     const MarkerState& mj = f.marker_j >= 0 ? ws.markers[f.marker_j] : kNoMarker;
     e.wrench.setZero();
+    e.tangents = tangents;
     if (tangents) {
       e.K.setZero();
       e.C.setZero();

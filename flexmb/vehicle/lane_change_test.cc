@@ -3,12 +3,14 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <ctime>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <stdexcept>
 
 #include "flexmb/bodies/flexible_body.h"
 #include "flexmb/bodies/rigid_body.h"
@@ -138,80 +140,120 @@ LaneChangeFile ReadFile(const std::string& path) {
   return f;
 }
 
-/// Deflection and stress of the elastic frame at one instant: the largest
-/// elastic node displacement relative to the floating frame and the largest
-/// von Mises stress of the shell stress modes, with where. Buffers are
-/// allocated once.
+/// Deflection and stress of the elastic frame at the output instants: the
+/// largest elastic node displacement relative to the floating frame and the
+/// largest von Mises stress of the shell stress modes, with where. The
+/// instants are evaluated in batches of kBatch: one matrix-matrix product
+/// with the node translations and one with the stress modes per batch
+/// instead of two matrix-vector products per instant, which stream the
+/// 16 MB of modes from memory every time (docs/PERFORMANCE.md). The rows
+/// of results.csv wait in the batch for their frame columns; Flush()
+/// writes them. Buffers are allocated once.
 class FrameResponse {
  public:
-  explicit FrameResponse(const FlexibleBody* body) : body_(body) {
+  /// Instants per batch.
+  static constexpr int kBatch = 32;
+  /// Length of one buffered CSV row without the frame columns.
+  static constexpr size_t kRowChars = 1024;
+
+  /// body: the elastic frame (nullptr: rigid frame, inactive); csv: the
+  /// results file the rows go to (nullptr: none).
+  FrameResponse(const FlexibleBody* body, std::FILE* csv) : body_(body), csv_(csv) {
     if (!body_) return;
     const reduction::ReducedBody& b = body_->reduced();
-    u_.resize(b.modes.rows());
-    s_.resize(b.stress.shell.modes.rows());
+    const Eigen::Index nodes = b.modes.rows() / 6, n = body_->modes();
+    translation_modes_.resize(3 * nodes, n);
+    for (Eigen::Index k = 0; k < nodes; ++k) translation_modes_.middleRows(3 * k, 3) = b.modes.middleRows(6 * k, 3);
+    w_.resize(n, kBatch);
+    u_.resize(3 * nodes, kBatch);
+    s_.resize(b.stress.shell.modes.rows(), kBatch);
     vm_.resize(static_cast<Eigen::Index>(b.stress.shell.elements.size()));
     centroid_.resize(b.stress.shell.elements.size());
     for (size_t k = 0; k < centroid_.size(); ++k) {
       const fe::Element& e = b.mesh.elements[static_cast<size_t>(b.stress.shell.elements[k])];
       Vec3 c = Vec3::Zero();
-      for (int n : e.nodes) c += b.mesh.nodes[static_cast<size_t>(n)].x / static_cast<double>(e.nodes.size());
+      for (int nd : e.nodes) c += b.mesh.nodes[static_cast<size_t>(nd)].x / static_cast<double>(e.nodes.size());
       centroid_[k] = c;
     }
+    rows_.resize(kBatch);
   }
   bool active() const { return body_ != nullptr; }
-  /// Evaluates at the frame's coordinates q (7 + n).
-  void Evaluate(const double* q) {
+
+  /// Adds the instant t with the frame's coordinates q (7 + n). row: its
+  /// CSV text without the frame columns and newline (nullptr: no row);
+  /// record: the instant counts for the maxima kept in r. Flushes a full
+  /// batch.
+  void Add(double t, const double* q, bool record, const char* row, LaneChangeResult& r) {
+    w_.col(count_) = Eigen::Map<const VecX>(q + 7, body_->modes());
+    Instant& in = rows_[static_cast<size_t>(count_)];
+    in.t = t;
+    in.record = record;
+    in.has_row = row != nullptr;
+    if (row) std::snprintf(in.text.data(), in.text.size(), "%s", row);
+    if (++count_ == kBatch) Flush(r);
+  }
+
+  /// Evaluates the waiting instants, keeps their maxima in r and writes
+  /// their rows.
+  void Flush(LaneChangeResult& r) {
+    if (!body_ || count_ == 0) return;
     const reduction::ReducedBody& b = body_->reduced();
-    const Eigen::Map<const VecX> w(q + 7, body_->modes());
-    u_.noalias() = b.modes * w;
-    disp_ = 0;
-    for (Eigen::Index k = 0; 6 * k < u_.size(); ++k) {
-      const double d = u_.segment<3>(6 * k).norm();
-      if (d > disp_) {
-        disp_ = d;
-        node_ = static_cast<int>(k);
+    const reduction::StressTable& table = b.stress.shell;
+    const Eigen::Index n = count_;
+    u_.leftCols(n).noalias() = translation_modes_ * w_.leftCols(n);
+    if (!table.elements.empty()) s_.leftCols(n).noalias() = table.modes * w_.leftCols(n);
+    for (Eigen::Index c = 0; c < n; ++c) {
+      Instant& in = rows_[static_cast<size_t>(c)];
+      double disp = 0, stress = 0;
+      int node = 0, element = 0;
+      for (Eigen::Index k = 0; 3 * k < u_.rows(); ++k) {
+        const double d = u_.col(c).segment<3>(3 * k).norm();
+        if (d > disp) {
+          disp = d;
+          node = static_cast<int>(k);
+        }
       }
+      if (!table.elements.empty()) {
+        reduction::ElementVonMisesOfValues(table, s_.col(c), vm_);
+        Eigen::Index k = 0;
+        stress = vm_.maxCoeff(&k);
+        element = static_cast<int>(k);
+      }
+      const fe::Node& nd = b.mesh.nodes[static_cast<size_t>(node)];
+      const int element_id = table.elements.empty() ? -1 : b.mesh.elements[static_cast<size_t>(table.elements[static_cast<size_t>(element)])].id;
+      const double element_x = table.elements.empty() ? 0.0 : centroid_[static_cast<size_t>(element)].x();
+      if (in.record && disp > r.max_frame_displacement) {
+        r.max_frame_displacement = disp;
+        r.max_displacement_node = nd.id;
+        r.max_displacement_position = nd.x;
+        r.max_displacement_time = in.t;
+      }
+      if (in.record && stress > r.max_frame_stress) {
+        r.max_frame_stress = stress;
+        r.max_stress_element = element_id;
+        r.max_stress_position = centroid_[static_cast<size_t>(element)];
+        r.max_stress_time = in.t;
+      }
+      if (csv_ && in.has_row)
+        std::fprintf(csv_, "%s,%.6g,%d,%.4g,%.6g,%d,%.4g\n", in.text.data(), disp * 1e3, nd.id, nd.x.x(), stress / 1e6,
+                     element_id, element_x);
     }
-    stress_ = 0;
-    const reduction::StressTable& t = b.stress.shell;
-    if (t.elements.empty()) return;
-    reduction::ElementVonMises(t, w, s_, vm_);
-    Eigen::Index k = 0;
-    stress_ = vm_.maxCoeff(&k);
-    element_ = static_cast<int>(k);
-  }
-  /// Keeps the maxima over time in r.
-  void Record(double t, LaneChangeResult& r) const {
-    const reduction::ReducedBody& b = body_->reduced();
-    if (disp_ > r.max_frame_displacement) {
-      r.max_frame_displacement = disp_;
-      r.max_displacement_node = b.mesh.nodes[static_cast<size_t>(node_)].id;
-      r.max_displacement_position = b.mesh.nodes[static_cast<size_t>(node_)].x;
-      r.max_displacement_time = t;
-    }
-    if (stress_ > r.max_frame_stress) {
-      r.max_frame_stress = stress_;
-      r.max_stress_element = b.mesh.elements[static_cast<size_t>(b.stress.shell.elements[element_])].id;
-      r.max_stress_position = centroid_[static_cast<size_t>(element_)];
-      r.max_stress_time = t;
-    }
-  }
-  /// Appends the instant's values as CSV columns (leading comma).
-  void WriteCsv(std::FILE* f) const {
-    const reduction::ReducedBody& b = body_->reduced();
-    const bool stress = !centroid_.empty();
-    std::fprintf(f, ",%.6g,%d,%.4g,%.6g,%d,%.4g", disp_ * 1e3, b.mesh.nodes[static_cast<size_t>(node_)].id,
-                 b.mesh.nodes[static_cast<size_t>(node_)].x.x(), stress_ / 1e6,
-                 stress ? b.mesh.elements[static_cast<size_t>(b.stress.shell.elements[element_])].id : -1,
-                 stress ? centroid_[static_cast<size_t>(element_)].x() : 0.0);
+    count_ = 0;
   }
 
  private:
+  struct Instant {
+    double t = 0;
+    bool record = false, has_row = false;
+    std::array<char, kRowChars> text{};
+  };
   const FlexibleBody* body_;
-  VecX u_, s_, vm_;
+  std::FILE* csv_;
+  MatX translation_modes_, w_, u_, s_;
+  VecX vm_;
   std::vector<Vec3> centroid_;
-  double disp_ = 0, stress_ = 0;
-  int node_ = 0, element_ = 0;
+  std::vector<Instant> rows_;
+  Eigen::Index count_ = 0;
 };
 
 // roll, pitch, yaw (z-y-x) of a rotation matrix [rad]
@@ -340,7 +382,8 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
   const double x0 = 0.0;
   const Body* frame_body = model.bodies[h.frame_body].get();
   const Marker& frame_ref = model.markers[static_cast<size_t>(h.frame_ref)];
-  FrameResponse frame_response(h.elastic ? static_cast<const FlexibleBody*>(frame_body) : nullptr);
+  FrameResponse frame_response(h.elastic ? static_cast<const FlexibleBody*>(frame_body) : nullptr, csv);
+  char line[FrameResponse::kRowChars];
   r.frame_modal_coordinates = h.elastic ? f.truck.elastic_frame->invariants.n : 0;
   try {
     sim.Initialize();
@@ -398,25 +441,23 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
       r.distance = pf.x() - x0;
       const bool done = by_time ? st.t >= 10.0 - 1e-9 : r.distance >= distance;
       const bool row = st.t >= next_row - 1e-9 || done;
-      // elastic frame: deflection and stress hot spot at the output times
-      if (row && frame_response.active()) {
-        frame_response.Evaluate(st.q.data() + frame_body->q_offset);
-        if (record) frame_response.Record(st.t, r);
-      }
+      if (row) next_row = st.t + f.output_interval;
       if (csv && row) {
-        next_row = st.t + f.output_interval;
-        std::fprintf(csv,
-                     "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%d,%d,%d,"
-                     "%d,%.6g,%.6g,%.6g,%.6g",
-                     st.t, pf.x(), pf.y(), course.CentreLine(pf.x()), speed * 3.6, ay,
-                     *driver.steering_wheel_angle() * kDeg, driver.road_wheel_angle() * kDeg, rpy.x() * kDeg,
-                     rpy.y() * kDeg, yaw * kDeg, yaw_rate * kDeg, front / 1e3, rear / 1e3, fz[0] / 1e3, fz[1] / 1e3,
-                     fz[2] / 1e3, fz[3] / 1e3, lift[0], lift[1], lift[2], lift[3], margin,
-                     *driver.drive_torque() / 1e3, KingpinAngle(0) * kDeg, KingpinAngle(1) * kDeg);
-        if (frame_response.active()) frame_response.WriteCsv(csv);
-        std::fputc('\n', csv);
+        const int len = std::snprintf(
+            line, sizeof(line),
+            "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%d,%d,%d,"
+            "%d,%.6g,%.6g,%.6g,%.6g",
+            st.t, pf.x(), pf.y(), course.CentreLine(pf.x()), speed * 3.6, ay, *driver.steering_wheel_angle() * kDeg,
+            driver.road_wheel_angle() * kDeg, rpy.x() * kDeg, rpy.y() * kDeg, yaw * kDeg, yaw_rate * kDeg, front / 1e3,
+            rear / 1e3, fz[0] / 1e3, fz[1] / 1e3, fz[2] / 1e3, fz[3] / 1e3, lift[0], lift[1], lift[2], lift[3], margin,
+            *driver.drive_torque() / 1e3, KingpinAngle(0) * kDeg, KingpinAngle(1) * kDeg);
+        if (len < 0 || static_cast<size_t>(len) >= sizeof(line)) throw std::logic_error("results.csv row too long");
+        if (!frame_response.active()) std::fprintf(csv, "%s\n", line);
       }
-      if (row && !csv) next_row = st.t + f.output_interval;
+      // elastic frame: deflection and stress hot spot at the output times
+      // (the row waits for its frame columns in the batch)
+      if (row && frame_response.active())
+        frame_response.Add(st.t, st.q.data() + frame_body->q_offset, record, csv ? line : nullptr, r);
       if (animation) {
         const auto a0 = std::chrono::steady_clock::now();
         if (animation->Update(st)) {
@@ -438,12 +479,19 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
     if (r.rolled_over) r.message = "the truck rolled over (|roll| > 45 deg)";
   } catch (const NumericalError& e) {
     r.message = e.what();
+  } catch (...) {
+    // keep what was computed (rows waiting in the batch) before passing the error on
+    frame_response.Flush(r);
+    if (csv) std::fclose(csv);
+    throw;
   }
+  frame_response.Flush(r);
   if (csv) std::fclose(csv);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   r.animation_frames = animation ? animation->frames() : 0;
   r.steps = sim.stats().steps;
   r.newton_iterations = sim.stats().newton_iterations;
+  r.factorizations = sim.stats().factorizations;
   r.cpu_time_s = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
   r.wall_time_s = wall;
   r.real_time_factor = wall > 0 ? r.t_end / wall : 0.0;
@@ -537,6 +585,7 @@ std::string LaneChangeJson(const LaneChangeResult& r) {
   add("static_rear_axle_load", JsonNumber(r.static_axle_load[1]));
   add("steps", std::to_string(r.steps));
   add("newton_iterations", std::to_string(r.newton_iterations));
+  add("factorizations", std::to_string(r.factorizations));
   add("wall_time_s", JsonNumber(r.wall_time_s));
   add("cpu_time_s", JsonNumber(r.cpu_time_s));
   add("animation_frames", std::to_string(r.animation_frames));

@@ -64,6 +64,7 @@ struct LaneChangeResult {
   double static_axle_load[2] = {0, 0};  ///< lever-rule static axle loads [N]
   long steps = 0;                     ///< accepted steps
   long newton_iterations = 0;         ///< Newton iterations of all step attempts
+  long factorizations = 0;            ///< LU factorizations of the iteration matrix
   double cpu_time_s = 0.0;            ///< CPU time of the integration (process clock) [s]
   double wall_time_s = 0.0;           ///< wall time of the integration [s]
   double real_time_factor = 0.0;      ///< simulated time / wall time

@@ -156,9 +156,6 @@ Vec12 Tire::Compute(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, 
 }
 
 void Tire::Evaluate(const MarkerState& mi, const MarkerState& mj, double, ForceEval& e) const {
-  e.wrench.setZero();
-  e.K.setZero();
-  e.C.setZero();
   const bool patch = marker_j >= 0;
   if (relaxed() != patch)
     throw InputError(relaxed() ? "a tire with relaxation_length > 0 needs a contact-patch marker j"
@@ -171,6 +168,10 @@ void Tire::Evaluate(const MarkerState& mi, const MarkerState& mj, double, ForceE
   Mat3 Ri = mi.R_WM;
   auto eval = [&]() { return Compute(pi, Ri, vi, wi, patch ? &pj : nullptr, patch ? &vj : nullptr, nullptr); };
   e.wrench = eval();
+  // the tangents cost 24 (with patch: 36) more evaluations: only when asked
+  if (!e.tangents) return;
+  e.K.setZero();
+  e.C.setZero();
   Vec12 fp, fm;
   // forces at var = base +- step into fp, fm; var restored to base
   auto central = [&](Vec3& var, const Vec3& base, const Vec3& step) {
