@@ -12,20 +12,6 @@ namespace {
 using Vec2 = Eigen::Vector2d;
 using Mat2 = Eigen::Matrix2d;
 using BeamElVec = AncfBeam2d::Vec;
-using BeamElMat = AncfBeam2d::Mat;
-
-AncfBeam2d MakeElement(const std::string& name, const AncfBeam2dData& d) {
-  const ErrorContext ctx{"", 0, "body '" + name + "'"};
-  if (!(d.length > 0.0) || !std::isfinite(d.length))
-    throw InputError("ANCF beam length must be positive, got " + std::to_string(d.length), ctx);
-  if (d.elements <= 0)
-    throw InputError("ANCF beam element count must be positive, got " + std::to_string(d.elements), ctx);
-  try {
-    return AncfBeam2d(d.length / d.elements, d.section, d.curvature0, d.order);
-  } catch (const InputError& e) {
-    throw InputError(e.message(), ctx);
-  }
-}
 
 // rotation of the node frame in plane axes: x along the slope a
 Mat3 PlaneRotation(const Vec2& a) {
@@ -39,8 +25,11 @@ Mat3 PlaneRotation(const Vec2& a) {
 }  // namespace
 
 AncfBeam2dBody::AncfBeam2dBody(std::string name, const AncfBeam2dData& data)
-    : Body(std::move(name)), data_(data), n_el_(data.elements), element_(MakeElement(this->name(), data)) {
-  const ErrorContext ctx{"", 0, "body '" + this->name() + "'"};
+    : Base(std::move(name), data.length, data.elements),
+      data_(data),
+      element_(NamingBody(
+          [&] { return AncfBeam2d(data.length / data.elements, data.section, data.curvature0, data.order); })) {
+  const ErrorContext ctx = BodyContext();
   const Vec3 n = data_.normal_W.normalized();
   const Vec3 d = data_.direction_W - n * n.dot(data_.direction_W);
   if (!(data_.normal_W.norm() > 0.0) || !(d.norm() > 1e-9 * data_.direction_W.norm()))
@@ -49,9 +38,7 @@ AncfBeam2dBody::AncfBeam2dBody(std::string name, const AncfBeam2dData& data)
   R_WP_.col(2) = n;
   R_WP_.col(1) = n.cross(R_WP_.col(0));
   if (!data_.load_per_length_W.allFinite()) throw InputError("ANCF beam load is not finite", ctx);
-  const int nv = this->nv();
-  mass_.setZero(nv, nv);
-  for (int i = 0; i < n_el_; ++i) mass_.block<8, 8>(4 * i, 4 * i) += element_.MassMatrix();
+  AssembleMass();
 }
 
 void AncfBeam2dBody::InitialCoordinates(double* q, double* v) const {
@@ -67,44 +54,6 @@ void AncfBeam2dBody::InitialCoordinates(double* q, double* v) const {
     }
   }
   for (int j = 0; j < nv(); ++j) v[j] = 0.0;
-}
-
-void AncfBeam2dBody::Retract(const double* q, const double* dx, double* q_out) const {
-  for (int j = 0; j < nq(); ++j) q_out[j] = q[j] + dx[j];
-}
-
-void AncfBeam2dBody::MassMatrix(const double*, MatX& M) const { M = mass_; }
-
-void AncfBeam2dBody::AddForces(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q,
-                               Eigen::Ref<MatX> dQdq, Eigen::Ref<MatX> dQdv) const {
-  const BeamSection& sec = element_.section();
-  const Vec3 f_W = sec.rho * sec.A * g_W + data_.load_per_length_W;
-  const Vec2 f(R_WP_.col(0).dot(f_W), R_WP_.col(1).dot(f_W));
-  const BeamElVec Qf = element_.DistributedLoad(f);
-  for (int i = 0; i < n_el_; ++i) {
-    const Eigen::Map<const BeamElVec> e(q + 4 * i), edot(v + 4 * i);
-    BeamElVec Qe = Qf;
-    BeamElMat K = BeamElMat::Zero(), C = BeamElMat::Zero();
-    element_.AddInternalForces(e, edot, Qe, K, C);
-    Q.segment<8>(4 * i) += Qe;
-    dQdq.block<8, 8>(4 * i, 4 * i) += K;
-    dQdv.block<8, 8>(4 * i, 4 * i) += C;
-  }
-}
-
-int AncfBeam2dBody::NodeOf(const Marker& m) const {
-  if (m.node < 0 || m.node > n_el_)
-    throw InputError("marker on node " + std::to_string(m.node) + ", but the beam has nodes 0.." +
-                         std::to_string(n_el_),
-                     {"", 0, "marker '" + m.name + "'"});
-  return m.node;
-}
-
-bool AncfBeam2dBody::BlockPattern(std::vector<std::pair<int, int>>& entries) const {
-  for (int e = 0; e < n_el_; ++e)
-    for (int j = 0; j < 8; ++j)
-      for (int i = 0; i < 8; ++i) entries.emplace_back(4 * e + i, 4 * e + j);
-  return true;
 }
 
 void AncfBeam2dBody::EvaluateMarker(const double* q, const double* v, const Marker& m,
@@ -181,25 +130,6 @@ void AncfBeam2dBody::MarkerTwistTangent(const double* q, const double* v, const 
   out.block<3, 2>(3, 4 * k + 2) = n * dthetad;
 }
 
-double AncfBeam2dBody::KineticEnergy(const double*, const double* v) const {
-  double T = 0.0;
-  for (int i = 0; i < n_el_; ++i) {
-    const Eigen::Map<const BeamElVec> ve(v + 4 * i);
-    T += 0.5 * ve.dot(element_.MassMatrix() * ve);
-  }
-  return T;
-}
-
-double AncfBeam2dBody::GravityPotential(const double* q, const Vec3& g_W) const {
-  const BeamSection& sec = element_.section();
-  const double rhoA = sec.rho * sec.A;
-  const Vec2 g(R_WP_.col(0).dot(g_W), R_WP_.col(1).dot(g_W));
-  const BeamElVec Qg = element_.DistributedLoad(rhoA * g);
-  double V = -rhoA * data_.length * g_W.dot(data_.start_W);
-  for (int i = 0; i < n_el_; ++i) V -= Eigen::Map<const BeamElVec>(q + 4 * i).dot(Qg);
-  return V;
-}
-
 Vec6 AncfBeam2dBody::Momentum(const double* q, const double* v) const {
   const BeamSection& sec = element_.section();
   const BeamElVec Sx = element_.DistributedLoad(sec.rho * sec.A * Vec2::UnitX());
@@ -219,26 +149,6 @@ Vec6 AncfBeam2dBody::Momentum(const double* q, const double* v) const {
   out.head<3>() = P;
   out.tail<3>() = data_.start_W.cross(P) + Lz * R_WP_.col(2);
   return out;
-}
-
-void AncfBeam2dBody::BodyFramePose(const double*, Vec3& p_WB, Mat3& R_WB) const {
-  p_WB = data_.start_W;
-  R_WB = R_WP_;
-}
-
-double AncfBeam2dBody::StrainEnergy(const double* q) const {
-  double W = 0.0;
-  for (int i = 0; i < n_el_; ++i) W += element_.StrainEnergy(Eigen::Map<const BeamElVec>(q + 4 * i));
-  return W;
-}
-
-Vec3 AncfBeam2dBody::PositionAt(const double* q, double s) const {
-  const double h = element_.length();
-  int i = 0;
-  double xi = 0.0;
-  LocateOnAncfLine(s, h, n_el_, i, xi);
-  const Vec2 r = element_.Position(Eigen::Map<const BeamElVec>(q + 4 * i), xi);
-  return data_.start_W + R_WP_.leftCols<2>() * r;
 }
 
 }  // namespace flexmb::ancf

@@ -12,9 +12,6 @@
 namespace flexmb::ancf {
 namespace {
 
-using Beam3dElVec = AncfBeam3d::Vec;
-using Beam3dElMat = AncfBeam3d::Mat;
-
 // (I - t t^T) / |a| = dt/da
 Mat3 Beam3dTangentDerivative(const Vec3& a) {
   const double la = a.norm();
@@ -25,12 +22,8 @@ Mat3 Beam3dTangentDerivative(const Vec3& a) {
 }  // namespace
 
 AncfBeam3dBody::AncfBeam3dBody(std::string name, const AncfBeam3dData& data)
-    : Body(std::move(name)), data_(data), n_el_(data.elements) {
-  const ErrorContext ctx{"", 0, "body '" + this->name() + "'"};
-  if (!(data_.length > 0.0) || !std::isfinite(data_.length))
-    throw InputError("ANCF beam length must be positive, got " + std::to_string(data_.length), ctx);
-  if (n_el_ <= 0)
-    throw InputError("ANCF beam element count must be positive, got " + std::to_string(n_el_), ctx);
+    : Base(std::move(name), data.length, data.elements), data_(data) {
+  const ErrorContext ctx = BodyContext();
   if (!(data_.radius >= 0.0) || !std::isfinite(data_.radius))
     throw InputError("ANCF beam radius must not be negative (0: straight)", ctx);
   if (data_.radius > 0.0 && !(data_.length / data_.radius < std::numbers::pi))
@@ -63,15 +56,10 @@ AncfBeam3dBody::AncfBeam3dBody(std::string name, const AncfBeam3dData& data)
   }
   elements_.reserve(n_el_);
   for (int i = 0; i < n_el_; ++i) {
-    try {
-      elements_.emplace_back(h, data_.section, R_W0_, data_.order);
-    } catch (const InputError& e) {
-      throw InputError(e.message(), ctx);
-    }
+    NamingBody([&] { elements_.emplace_back(h, data_.section, R_W0_, data_.order); });
     elements_.back().SetReference(q0_.segment<14>(7 * i));
   }
-  mass_.setZero(nv(), nv());
-  for (int i = 0; i < n_el_; ++i) mass_.block<14, 14>(7 * i, 7 * i) += elements_[i].MassMatrix();
+  AssembleMass();
 }
 
 void AncfBeam3dBody::InitialCoordinates(double* q, double* v) const {
@@ -79,42 +67,6 @@ void AncfBeam3dBody::InitialCoordinates(double* q, double* v) const {
     q[j] = q0_(j);
     v[j] = 0.0;
   }
-}
-
-void AncfBeam3dBody::Retract(const double* q, const double* dx, double* q_out) const {
-  for (int j = 0; j < nq(); ++j) q_out[j] = q[j] + dx[j];
-}
-
-void AncfBeam3dBody::MassMatrix(const double*, MatX& M) const { M = mass_; }
-
-void AncfBeam3dBody::AddForces(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q,
-                               Eigen::Ref<MatX> dQdq, Eigen::Ref<MatX> dQdv) const {
-  const Beam3dSection& sec = data_.section;
-  const Vec3 f = sec.rho * sec.A * g_W + data_.load_per_length_W;
-  for (int i = 0; i < n_el_; ++i) {
-    const Eigen::Map<const Beam3dElVec> e(q + 7 * i), edot(v + 7 * i);
-    Beam3dElVec Qe = elements_[i].DistributedLoad(f);
-    Beam3dElMat K = Beam3dElMat::Zero(), C = Beam3dElMat::Zero();
-    elements_[i].AddInternalForces(e, edot, Qe, K, C);
-    Q.segment<14>(7 * i) += Qe;
-    dQdq.block<14, 14>(7 * i, 7 * i) += K;
-    dQdv.block<14, 14>(7 * i, 7 * i) += C;
-  }
-}
-
-bool AncfBeam3dBody::BlockPattern(std::vector<std::pair<int, int>>& entries) const {
-  for (int e = 0; e < n_el_; ++e)
-    for (int j = 0; j < 14; ++j)
-      for (int i = 0; i < 14; ++i) entries.emplace_back(7 * e + i, 7 * e + j);
-  return true;
-}
-
-int AncfBeam3dBody::NodeOf(const Marker& m) const {
-  if (m.node < 0 || m.node > n_el_)
-    throw InputError("marker on node " + std::to_string(m.node) + ", but the beam has nodes 0.." +
-                         std::to_string(n_el_),
-                     {"", 0, "marker '" + m.name + "'"});
-  return m.node;
 }
 
 Mat3 AncfBeam3dBody::NodeFrame(const double* q, int k) const {
@@ -138,25 +90,15 @@ Mat3 AncfBeam3dBody::MarkerFrame(const double* q, const Marker& m) const {
 
 void AncfBeam3dBody::EvaluateMarker(const double* q, const double* v, const Marker& m, MarkerState& out) const {
   const int k = NodeOf(m);
-  const Eigen::Map<const Vec3> r(q + 7 * k), a(q + 7 * k + 3), rd(v + 7 * k), ad(v + 7 * k + 3);
+  const Eigen::Map<const Vec3> a(q + 7 * k + 3), ad(v + 7 * k + 3);
   const double phid = v[7 * k + 6];
   const Mat3 R_WN = MarkerFrame(q, m);
   const Vec3 t = R_WN.col(0);
   const Mat3 G = AncfBeam3d::FrameRate(R_W0_.col(0), a);
-  const Vec3 s = R_WN * m.p_BM;
-  const Vec3 w = G * ad + phid * t;
-  out.p_WM = r + s;
-  out.R_WM = R_WN * m.R_BM;
-  out.v_WM = rd + w.cross(s);
-  out.w_WM = w;
-  out.J.setZero(6, nv());
-  out.J.block<3, 3>(0, 7 * k).setIdentity();
-  out.J.block<3, 3>(0, 7 * k + 3) = -Skew(s) * G;
+  // the twist rate turns the frame about the tangent t
+  const Vec3 s = FillNodeMarker(q, v, k, R_WN, G, G * ad + phid * t, m, out);
   out.J.block<3, 1>(0, 7 * k + 6) = t.cross(s);
-  out.J.block<3, 3>(3, 7 * k + 3) = G;
   out.J.block<3, 1>(3, 7 * k + 6) = t;
-  out.v_offset = v_offset;
-  out.nv = nv();
 }
 
 Vec6 AncfBeam3dBody::MarkerAccelerationBias(const double* q, const double* v, const Marker& m) const {
@@ -168,10 +110,7 @@ Vec6 AncfBeam3dBody::MarkerAccelerationBias(const double* q, const double* v, co
   const Vec3 s = R_WN * m.p_BM;
   const Vec3 w = AncfBeam3d::FrameRate(t0, a) * ad + phid * R_WN.col(0);
   const Vec3 alpha = AncfBeam3d::FrameRateDerivative(t0, a, ad) * ad + phid * (Beam3dTangentDerivative(a) * ad);
-  Vec6 b;
-  b.head<3>() = alpha.cross(s) + w.cross(w.cross(s));
-  b.tail<3>() = alpha;
-  return b;
+  return OffsetMarkerBias(alpha, w, s);
 }
 
 void AncfBeam3dBody::AddMarkerWrenchTangent(const double* q, const Marker& m, const Vec6& wrench_W,
@@ -211,49 +150,10 @@ void AncfBeam3dBody::MarkerTwistTangent(const double* q, const double* v, const 
   out.block<3, 3>(3, 7 * k + 3) = Hd;
 }
 
-double AncfBeam3dBody::KineticEnergy(const double*, const double* v) const {
-  double T = 0.0;
-  for (int i = 0; i < n_el_; ++i) {
-    const Eigen::Map<const Beam3dElVec> ve(v + 7 * i);
-    T += 0.5 * ve.dot(elements_[i].MassMatrix() * ve);
-  }
-  return T;
-}
-
-double AncfBeam3dBody::GravityPotential(const double* q, const Vec3& g_W) const {
-  const Beam3dSection& sec = data_.section;
-  double V = 0.0;
-  for (int i = 0; i < n_el_; ++i)
-    V -= Eigen::Map<const Beam3dElVec>(q + 7 * i).dot(elements_[i].DistributedLoad(sec.rho * sec.A * g_W));
-  return V;
-}
-
-double AncfBeam3dBody::ElasticEnergy(const double* q) const {
-  double W = 0.0;
-  for (int i = 0; i < n_el_; ++i) W += elements_[i].StrainEnergy(Eigen::Map<const Beam3dElVec>(q + 7 * i));
-  return W;
-}
-
 Vec6 AncfBeam3dBody::Momentum(const double* q, const double* v) const {
   // translational mass m_ab (x) I3 over the vector slots r0, r'0, r1, r'1
   constexpr int off[4] = {0, 3, 7, 10};
-  Vec3 p = Vec3::Zero(), L = Vec3::Zero();
-  for (int i = 0; i < n_el_; ++i) AddAncfElementMomentum(elements_[i].MassMatrix(), q + 7 * i, v + 7 * i, off, p, L);
-  Vec6 out;
-  out << p, L;
-  return out;
-}
-
-void AncfBeam3dBody::BodyFramePose(const double*, Vec3& p_WB, Mat3& R_WB) const {
-  p_WB = data_.start_W;
-  R_WB = R_W0_;
-}
-
-Vec3 AncfBeam3dBody::PositionAt(const double* q, double s) const {
-  int i = 0;
-  double xi = 0.0;
-  LocateOnAncfLine(s, data_.length / n_el_, n_el_, i, xi);
-  return elements_[i].Position(Eigen::Map<const Beam3dElVec>(q + 7 * i), xi);
+  return CentreLineMomentum(q, v, off);
 }
 
 }  // namespace flexmb::ancf

@@ -21,47 +21,30 @@
 #include <vector>
 
 #include "flexmb/ancf/ancf_beam3d.h"
-#include "flexmb/bodies/body.h"
+#include "flexmb/ancf/ancf_line_body.h"
 
 namespace flexmb::ancf {
 
 /// Specification of a 3D ANCF beam body. The reference shape starts at
 /// start_W with tangent direction_W; it is straight (radius 0) or an arc of
 /// the given radius turning about the normal (towards y0 = z0 x t0).
-struct AncfBeam3dData {
-  double length = 0.0;               ///< undeformed length (arc length) [m], > 0
-  int elements = 0;                  ///< number of elements N, > 0
-  Beam3dSection section;             ///< section, material and damping
-  QuadratureOrder order;             ///< quadrature of the elastic forces
-  Vec3 start_W = Vec3::Zero();       ///< position of node 0 [m]
-  Vec3 direction_W = Vec3::UnitX();  ///< tangent t0 at node 0 (normalized on use)
+struct AncfBeam3dData : AncfLineData {
+  Beam3dSection section;  ///< section, material and damping
   /// Section z axis z0 at node 0 (its part normal to direction_W); a zero
   /// vector picks world z, or world x if direction_W is along z.
   Vec3 normal_W = Vec3::Zero();
-  double radius = 0.0;                    ///< radius of the reference arc [m]; 0: straight
-  Vec3 load_per_length_W = Vec3::Zero();  ///< constant distributed load [N/m]
+  double radius = 0.0;  ///< radius of the reference arc [m]; 0: straight
 };
 
 /// 3D ANCF beam body with torsion; see the file comment.
-class AncfBeam3dBody final : public Body {
+class AncfBeam3dBody final : public AncfLineBody<AncfBeam3dBody, AncfBeam3d, 7> {
  public:
   /// Throws InputError (naming the body) on a non-positive length, element
   /// count or section value, a negative radius, an arc turning by 180 degrees
   /// or more, a zero direction, or a normal parallel to it.
   AncfBeam3dBody(std::string name, const AncfBeam3dData& data);
 
-  int nq() const override { return 7 * (n_el_ + 1); }
-  int nv() const override { return 7 * (n_el_ + 1); }
   void InitialCoordinates(double* q, double* v) const override;
-  void Retract(const double* q, const double* dx, double* q_out) const override;
-  void MassMatrix(const double* q, MatX& M) const override;
-  bool HasConstantMass() const override { return true; }
-  void AddForces(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q,
-                 Eigen::Ref<MatX> dQdq, Eigen::Ref<MatX> dQdv) const override;
-  /// Element-wise coupling: 14x14 blocks overlapping at the shared nodes.
-  bool BlockPattern(std::vector<std::pair<int, int>>& entries) const override;
-  /// The 7 velocities of the marker's node.
-  std::pair<int, int> MarkerColumns(const Marker& m) const override { return {7 * NodeOf(m), 7}; }
   void EvaluateMarker(const double* q, const double* v, const Marker& m,
                       MarkerState& out) const override;
   Vec6 MarkerAccelerationBias(const double* q, const double* v, const Marker& m) const override;
@@ -69,42 +52,32 @@ class AncfBeam3dBody final : public Body {
                               Eigen::Ref<MatX> dQdq) const override;
   void MarkerTwistTangent(const double* q, const double* v, const Marker& m,
                           Eigen::Ref<MatX> out) const override;
-  double KineticEnergy(const double* q, const double* v) const override;
-  double GravityPotential(const double* q, const Vec3& g_W) const override;
-  /// Strain energy of the whole beam [J].
-  double ElasticEnergy(const double* q) const override;
   /// Momentum of the centre line (the twist rotary inertia is left out).
   Vec6 Momentum(const double* q, const double* v) const override;
-  /// The reference frame: origin start_W, axes R_0 = [t0, y0, z0].
-  void BodyFramePose(const double* q, Vec3& p_WB, Mat3& R_WB) const override;
 
-  /// Number of elements N.
-  int elements() const { return n_el_; }
-  /// Number of nodes N + 1.
-  int nodes() const { return n_el_ + 1; }
   /// Element i (0..N-1).
   const AncfBeam3d& element(int i) const { return elements_[i]; }
   /// Reference frame R_0 = [t0, y0, z0] in world.
   const Mat3& R_W0() const { return R_W0_; }
   /// Total undeformed length [m].
   double length() const { return data_.length; }
-  /// World position [m] of the centre line at reference arc length s in [0, L].
-  Vec3 PositionAt(const double* q, double s) const;
   /// Section frame [t, d2, d3] of node k (the node frame of its markers).
   Mat3 NodeFrame(const double* q, int k) const;
 
  private:
-  // checks the marker's node index
-  int NodeOf(const Marker& m) const;
+  using Base = AncfLineBody<AncfBeam3dBody, AncfBeam3d, 7>;
+  friend Base;
+  static constexpr const char* kLineKind = "beam";
+  // hooks of the shared element loops (see ancf_line_body.h)
+  const AncfBeam3d& ElementAt(int i) const { return elements_[i]; }
+  const Mat3& FrameAxes() const { return R_W0_; }
   // node frame of marker m, with a NumericalError naming it at a singular slope
   Mat3 MarkerFrame(const double* q, const Marker& m) const;
 
   AncfBeam3dData data_;
-  int n_el_;
   Mat3 R_W0_;
   std::vector<AncfBeam3d> elements_;
   VecX q0_;
-  MatX mass_;
 };
 
 }  // namespace flexmb::ancf

@@ -11,9 +11,6 @@
 namespace flexmb::ancf {
 namespace {
 
-using CableElVec = AncfCable3d::Vec;
-using CableElMat = AncfCable3d::Mat;
-
 // value and directional derivative (forward-mode dual numbers) of a scalar
 // and of a 3-vector: the exact derivatives of the node-frame rate
 struct Ds {
@@ -47,24 +44,13 @@ Dv Rate(const Vec3& t0, const Dv& a, const Dv& ad) {
   return Scale(f, Add(Sub(Scale(w, cd), Scale(wd, c)), Cross(c, cd)));
 }
 
-AncfCable3d MakeElement(const std::string& name, const AncfCable3dData& d) {
-  const ErrorContext ctx{"", 0, "body '" + name + "'"};
-  if (!(d.length > 0.0) || !std::isfinite(d.length))
-    throw InputError("ANCF cable length must be positive, got " + std::to_string(d.length), ctx);
-  if (d.elements <= 0)
-    throw InputError("ANCF cable element count must be positive, got " + std::to_string(d.elements), ctx);
-  try {
-    return AncfCable3d(d.length / d.elements, d.section, d.order);
-  } catch (const InputError& e) {
-    throw InputError(e.message(), ctx);
-  }
-}
-
 }  // namespace
 
 AncfCable3dBody::AncfCable3dBody(std::string name, const AncfCable3dData& data)
-    : Body(std::move(name)), data_(data), n_el_(data.elements), element_(MakeElement(this->name(), data)) {
-  const ErrorContext ctx{"", 0, "body '" + this->name() + "'"};
+    : Base(std::move(name), data.length, data.elements),
+      data_(data),
+      element_(NamingBody([&] { return AncfCable3d(data.length / data.elements, data.section, data.order); })) {
+  const ErrorContext ctx = BodyContext();
   if (!data_.direction_W.allFinite() || !(data_.direction_W.norm() > 0.0))
     throw InputError("ANCF cable direction must be a non-zero vector", ctx);
   if (!data_.normal_W.allFinite() || !data_.load_per_length_W.allFinite() ||
@@ -79,9 +65,7 @@ AncfCable3dBody::AncfCable3dBody(std::string name, const AncfCable3dData& data)
   R_W0_.col(0) = t0_;
   R_W0_.col(2) = z.normalized();
   R_W0_.col(1) = R_W0_.col(2).cross(t0_);
-  const int nv = this->nv();
-  mass_.setZero(nv, nv);
-  for (int i = 0; i < n_el_; ++i) mass_.block<12, 12>(6 * i, 6 * i) += element_.MassMatrix();
+  AssembleMass();
 }
 
 void AncfCable3dBody::InitialCoordinates(double* q, double* v) const {
@@ -94,35 +78,6 @@ void AncfCable3dBody::InitialCoordinates(double* q, double* v) const {
     Eigen::Map<Vec3>(v + 6 * i) = w.cross(r - data_.start_W);
     Eigen::Map<Vec3>(v + 6 * i + 3) = w.cross(t0_);
   }
-}
-
-void AncfCable3dBody::Retract(const double* q, const double* dx, double* q_out) const {
-  for (int j = 0; j < nq(); ++j) q_out[j] = q[j] + dx[j];
-}
-
-void AncfCable3dBody::MassMatrix(const double*, MatX& M) const { M = mass_; }
-
-void AncfCable3dBody::AddForces(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q,
-                                Eigen::Ref<MatX> dQdq, Eigen::Ref<MatX> dQdv) const {
-  const BeamSection& sec = element_.section();
-  const CableElVec Qf = element_.DistributedLoad(sec.rho * sec.A * g_W + data_.load_per_length_W);
-  for (int i = 0; i < n_el_; ++i) {
-    const Eigen::Map<const CableElVec> e(q + 6 * i), edot(v + 6 * i);
-    CableElVec Qe = Qf;
-    CableElMat K = CableElMat::Zero(), C = CableElMat::Zero();
-    element_.AddInternalForces(e, edot, Qe, K, C);
-    Q.segment<12>(6 * i) += Qe;
-    dQdq.block<12, 12>(6 * i, 6 * i) += K;
-    dQdv.block<12, 12>(6 * i, 6 * i) += C;
-  }
-}
-
-int AncfCable3dBody::NodeOf(const Marker& m) const {
-  if (m.node < 0 || m.node > n_el_)
-    throw InputError("marker on node " + std::to_string(m.node) + ", but the cable has nodes 0.." +
-                         std::to_string(n_el_),
-                     {"", 0, "marker '" + m.name + "'"});
-  return m.node;
 }
 
 Mat3 AncfCable3dBody::NodeFrame(const Vec3& a, const std::string& marker) const {
@@ -159,31 +114,13 @@ Mat3 AncfCable3dBody::RateTransposeDerivative(const Vec3& a, const Vec3& y) cons
   return W;
 }
 
-bool AncfCable3dBody::BlockPattern(std::vector<std::pair<int, int>>& entries) const {
-  for (int e = 0; e < n_el_; ++e)
-    for (int j = 0; j < 12; ++j)
-      for (int i = 0; i < 12; ++i) entries.emplace_back(6 * e + i, 6 * e + j);
-  return true;
-}
-
 void AncfCable3dBody::EvaluateMarker(const double* q, const double* v, const Marker& m,
                                      MarkerState& out) const {
   const int k = NodeOf(m);
-  const Eigen::Map<const Vec3> r(q + 6 * k), a(q + 6 * k + 3), rd(v + 6 * k), ad(v + 6 * k + 3);
+  const Eigen::Map<const Vec3> a(q + 6 * k + 3), ad(v + 6 * k + 3);
   const Mat3 R_WN = NodeFrame(a, m.name);
   const Mat3 G = RateMatrix(a, m);
-  const Vec3 s = R_WN * m.p_BM;
-  const Vec3 w = G * ad;
-  out.p_WM = r + s;
-  out.R_WM = R_WN * m.R_BM;
-  out.v_WM = rd + w.cross(s);
-  out.w_WM = w;
-  out.J.setZero(6, nv());
-  out.J.block<3, 3>(0, 6 * k).setIdentity();
-  out.J.block<3, 3>(0, 6 * k + 3) = -Skew(s) * G;
-  out.J.block<3, 3>(3, 6 * k + 3) = G;
-  out.v_offset = v_offset;
-  out.nv = nv();
+  FillNodeMarker(q, v, k, R_WN, G, G * ad, m, out);
 }
 
 Vec6 AncfCable3dBody::MarkerAccelerationBias(const double* q, const double* v, const Marker& m) const {
@@ -192,10 +129,7 @@ Vec6 AncfCable3dBody::MarkerAccelerationBias(const double* q, const double* v, c
   const Vec3 s = NodeFrame(a, m.name) * m.p_BM;
   const Vec3 w = RateMatrix(a, m) * ad;
   const Vec3 alpha = RateDerivative(a, ad) * ad;
-  Vec6 b;
-  b.head<3>() = alpha.cross(s) + w.cross(w.cross(s));
-  b.tail<3>() = alpha;
-  return b;
+  return OffsetMarkerBias(alpha, w, s);
 }
 
 void AncfCable3dBody::AddMarkerWrenchTangent(const double* q, const Marker& m, const Vec6& wrench_W,
@@ -223,49 +157,9 @@ void AncfCable3dBody::MarkerTwistTangent(const double* q, const double* v, const
   out.block<3, 3>(3, 6 * k + 3) = H;
 }
 
-double AncfCable3dBody::KineticEnergy(const double*, const double* v) const {
-  double T = 0.0;
-  for (int i = 0; i < n_el_; ++i) {
-    const Eigen::Map<const CableElVec> ve(v + 6 * i);
-    T += 0.5 * ve.dot(element_.MassMatrix() * ve);
-  }
-  return T;
-}
-
-double AncfCable3dBody::GravityPotential(const double* q, const Vec3& g_W) const {
-  const BeamSection& sec = element_.section();
-  const CableElVec Qg = element_.DistributedLoad(sec.rho * sec.A * g_W);
-  double V = 0.0;
-  for (int i = 0; i < n_el_; ++i) V -= Eigen::Map<const CableElVec>(q + 6 * i).dot(Qg);
-  return V;
-}
-
-double AncfCable3dBody::ElasticEnergy(const double* q) const {
-  double W = 0.0;
-  for (int i = 0; i < n_el_; ++i) W += element_.StrainEnergy(Eigen::Map<const CableElVec>(q + 6 * i));
-  return W;
-}
-
 Vec6 AncfCable3dBody::Momentum(const double* q, const double* v) const {
-  // M = m (x) I3 per element: p = sum m_ab v_b, L = sum m_ab r_a x v_b
   constexpr int off[4] = {0, 3, 6, 9};
-  Vec3 p = Vec3::Zero(), L = Vec3::Zero();
-  for (int i = 0; i < n_el_; ++i) AddAncfElementMomentum(element_.MassMatrix(), q + 6 * i, v + 6 * i, off, p, L);
-  Vec6 out;
-  out << p, L;
-  return out;
-}
-
-void AncfCable3dBody::BodyFramePose(const double*, Vec3& p_WB, Mat3& R_WB) const {
-  p_WB = data_.start_W;
-  R_WB = R_W0_;
-}
-
-Vec3 AncfCable3dBody::PositionAt(const double* q, double s) const {
-  int i = 0;
-  double xi = 0.0;
-  LocateOnAncfLine(s, element_.length(), n_el_, i, xi);
-  return element_.Position(Eigen::Map<const CableElVec>(q + 6 * i), xi);
+  return CentreLineMomentum(q, v, off);
 }
 
 }  // namespace flexmb::ancf

@@ -24,48 +24,30 @@
 #include <vector>
 
 #include "flexmb/ancf/ancf_cable3d.h"
-#include "flexmb/bodies/body.h"
+#include "flexmb/ancf/ancf_line_body.h"
 
 namespace flexmb::ancf {
 
 /// Specification of a 3D ANCF cable body. The initial shape is straight from
 /// start_W along direction_W, moving as a rigid body with angular velocity
 /// angular_velocity_W about start_W.
-struct AncfCable3dData {
-  double length = 0.0;               ///< undeformed length [m], > 0
-  int elements = 0;                  ///< number of elements N, > 0
-  BeamSection section;               ///< section, material and damping
-  QuadratureOrder order;             ///< quadrature of the elastic forces
-  Vec3 start_W = Vec3::Zero();       ///< initial position of node 0 [m]
-  Vec3 direction_W = Vec3::UnitX();  ///< initial direction t0 (normalized on use)
+struct AncfCable3dData : AncfLineData {
+  BeamSection section;  ///< section, material and damping
   /// Reference z axis of the node frames (its part normal to direction_W);
   /// a zero vector picks world z, or world x if direction_W is along z.
   Vec3 normal_W = Vec3::Zero();
-  Vec3 load_per_length_W = Vec3::Zero();   ///< constant distributed load [N/m]
   Vec3 angular_velocity_W = Vec3::Zero();  ///< initial rigid rotation rate about start_W [rad/s]
 };
 
 /// 3D ANCF cable body; see the file comment.
-class AncfCable3dBody final : public Body {
+class AncfCable3dBody final : public AncfLineBody<AncfCable3dBody, AncfCable3d, 6> {
  public:
   /// Throws InputError (naming the body) on a non-positive length, element
   /// count or section value, a zero direction, or a normal parallel to it.
   AncfCable3dBody(std::string name, const AncfCable3dData& data);
 
-  int nq() const override { return 6 * (n_el_ + 1); }
-  int nv() const override { return 6 * (n_el_ + 1); }
   void InitialCoordinates(double* q, double* v) const override;
-  void Retract(const double* q, const double* dx, double* q_out) const override;
-  void MassMatrix(const double* q, MatX& M) const override;
-  bool HasConstantMass() const override { return true; }
   bool MarkerJacobianFullRank() const override { return false; }
-  void AddForces(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q,
-                 Eigen::Ref<MatX> dQdq, Eigen::Ref<MatX> dQdv) const override;
-  /// Element-wise coupling: the 12x12 blocks of the elements, overlapping
-  /// at the shared nodes (banded, half bandwidth 11).
-  bool BlockPattern(std::vector<std::pair<int, int>>& entries) const override;
-  /// The 6 velocities of the marker's node.
-  std::pair<int, int> MarkerColumns(const Marker& m) const override { return {6 * NodeOf(m), 6}; }
   void EvaluateMarker(const double* q, const double* v, const Marker& m,
                       MarkerState& out) const override;
   Vec6 MarkerAccelerationBias(const double* q, const double* v, const Marker& m) const override;
@@ -73,31 +55,24 @@ class AncfCable3dBody final : public Body {
                               Eigen::Ref<MatX> dQdq) const override;
   void MarkerTwistTangent(const double* q, const double* v, const Marker& m,
                           Eigen::Ref<MatX> out) const override;
-  double KineticEnergy(const double* q, const double* v) const override;
-  double GravityPotential(const double* q, const Vec3& g_W) const override;
-  /// Strain energy of the whole cable [J].
-  double ElasticEnergy(const double* q) const override;
+  /// Momentum of the centre line (mass m (x) I3 per element).
   Vec6 Momentum(const double* q, const double* v) const override;
-  /// The reference frame: origin start_W, axes R_0 = [t0, y0, z0].
-  void BodyFramePose(const double* q, Vec3& p_WB, Mat3& R_WB) const override;
 
-  /// Number of elements N.
-  int elements() const { return n_el_; }
-  /// Number of nodes N + 1.
-  int nodes() const { return n_el_ + 1; }
   /// The (identical) element.
   const AncfCable3d& element() const { return element_; }
   /// Reference node frame R_0 = [t0, y0, z0] in world.
   const Mat3& R_W0() const { return R_W0_; }
-  /// World position [m] of the centre line at reference arc length s in [0, L].
-  Vec3 PositionAt(const double* q, double s) const;
   /// Rotation R_WN of the node frame for the slope a (see the file comment);
   /// throws NumericalError naming the marker `marker` at the singular slope -t0.
   Mat3 NodeFrame(const Vec3& a, const std::string& marker) const;
 
  private:
-  // checks the marker's node index
-  int NodeOf(const Marker& m) const;
+  using Base = AncfLineBody<AncfCable3dBody, AncfCable3d, 6>;
+  friend Base;
+  static constexpr const char* kLineKind = "cable";
+  // hooks of the shared element loops (see ancf_line_body.h)
+  const AncfCable3d& ElementAt(int) const { return element_; }
+  const Mat3& FrameAxes() const { return R_W0_; }
   // node frame angular velocity w = G(a) adot: G (3 x 3)
   Mat3 RateMatrix(const Vec3& a, const Marker& m) const;
   // d(G(a) u)/da at fixed u (3 x 3)
@@ -106,11 +81,9 @@ class AncfCable3dBody final : public Body {
   Mat3 RateTransposeDerivative(const Vec3& a, const Vec3& y) const;
 
   AncfCable3dData data_;
-  int n_el_;
   AncfCable3d element_;
   Vec3 t0_;
   Mat3 R_W0_;
-  MatX mass_;
 };
 
 }  // namespace flexmb::ancf
