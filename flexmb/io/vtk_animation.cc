@@ -1,6 +1,7 @@
 #include "flexmb/io/vtk_animation.h"
 
 #include <algorithm>
+#include <bit>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -11,6 +12,7 @@
 #include "flexmb/bodies/flexible_body.h"
 #include "flexmb/common/error.h"
 #include "flexmb/model/model.h"
+#include "flexmb/model/state.h"
 #include "flexmb/reduction/stress_modes.h"
 
 namespace flexmb {
@@ -104,11 +106,14 @@ void Sphere(ShapeMesh& m, double r, int slices) {
 
 ShapeMesh MakeShapeMesh(const Model& model, int body, int segments) {
   const Body& b = *model.bodies[body];
-  const Shape& s = b.shape;
+  return MakeShapeMesh(b.shape, body, "body '" + b.name() + "'", segments);
+}
+
+ShapeMesh MakeShapeMesh(const Shape& s, int body, const std::string& what, int segments) {
   ShapeMesh m;
   m.body = body;
   if (s.type == Shape::Type::kNone) return m;
-  const ErrorContext ctx{"", 0, "body '" + b.name() + "'"};
+  const ErrorContext ctx{"", 0, what};
   auto positive = [&](double x, const char* what) {
     if (!(x > 0) || !std::isfinite(x))
       throw InputError(std::string("shape ") + what + " must be positive", ctx);
@@ -150,8 +155,8 @@ ShapeMesh MakeMeshShape(int body, const fe::Mesh& mesh) {
   return m;
 }
 
-VtkAnimationWriter::VtkAnimationWriter(const std::string& dir, const Model& model)
-    : model_(model), dir_(dir), pvd_((std::filesystem::path(dir) / "anim.pvd").string()) {
+VtkAnimationWriter::VtkAnimationWriter(const std::string& dir, const Model& model, VtkEncoding encoding)
+    : model_(model), dir_(dir), pvd_((std::filesystem::path(dir) / "anim.pvd").string()), encoding_(encoding) {
   std::error_code ec;
   std::filesystem::create_directories(std::filesystem::path(dir) / "frames", ec);
   if (ec)
@@ -247,34 +252,73 @@ void VtkAnimationWriter::UpdateFlexMesh(FlexMesh& m, const double* w) {
   }
 }
 
-void VtkAnimationWriter::WriteFrame(const State& state) {
-  const std::string path = FramePath(frames());
-  std::FILE* f = OpenOrThrow(path);
-  std::fprintf(f,
-               "<?xml version=\"1.0\"?>\n"
-               "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-               "  <UnstructuredGrid>\n"
-               "    <FieldData>\n"
-               "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" "
-               "format=\"ascii\">%.15g</DataArray>\n"
-               "    </FieldData>\n"
-               "    <Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n",
-               state.t, n_points_, n_cells_);
+void VtkAnimationWriter::AddLink(int marker_i, int marker_j) {
+  const ErrorContext ctx{pvd_, 0, "animation link"};
+  if (frames() > 0) throw InputError("a link cannot be added after the first frame", ctx);
+  const int n = static_cast<int>(model_.markers.size());
+  for (int k : {marker_i, marker_j})
+    if (k < 0 || k >= n) throw InputError("marker index " + std::to_string(k) + " out of range", ctx);
+  links_.emplace_back(marker_i, marker_j);
+  n_points_ += 2;
+  n_cells_ += 1;
+  n_conn_ += 2;
+}
 
-  // points: shape vertices moved by each body's current frame pose
-  std::fprintf(f,
-               "      <Points>\n"
-               "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
+void VtkAnimationWriter::FillArrays(const State& state) {
+  VtkFrameArrays& a = arrays_;
+  a.points.clear();
+  a.connectivity.clear();
+  a.offsets.clear();
+  a.types.clear();
+  a.displacement.clear();
+  a.body_id.clear();
+  a.von_mises.clear();
+  a.points.reserve(3 * static_cast<size_t>(n_points_));
+  a.displacement.reserve(3 * static_cast<size_t>(n_points_));
+  a.connectivity.reserve(static_cast<size_t>(n_conn_));
+  a.offsets.reserve(static_cast<size_t>(n_cells_));
+  a.types.reserve(static_cast<size_t>(n_cells_));
+  a.body_id.reserve(static_cast<size_t>(n_cells_));
+  a.von_mises.reserve(static_cast<size_t>(n_cells_));
+  auto point = [&](const Vec3& p) { a.points.insert(a.points.end(), {p.x(), p.y(), p.z()}); };
+  std::int32_t base = 0, offset = 0;
+  auto cells = [&](const std::vector<int>& conn, const std::vector<int>& sizes,
+                   const std::vector<unsigned char>& types, int body, std::int32_t points) {
+    for (int v : conn) a.connectivity.push_back(base + v);
+    for (int size : sizes) a.offsets.push_back(offset += size);
+    a.types.insert(a.types.end(), types.begin(), types.end());
+    a.body_id.insert(a.body_id.end(), types.size(), body);
+    base += points;
+  };
+
+  // shape vertices moved by each body's current frame pose
   for (const ShapeMesh& m : meshes_) {
     const Body& b = *model_.bodies[m.body];
     Vec3 p_WB;
     Mat3 R_WB;
     b.BodyFramePose(state.q.data() + b.q_offset, p_WB, R_WB);
-    for (const Vec3& p_B : m.points_B) {
-      const Vec3 p_W = p_WB + R_WB * p_B;
-      std::fprintf(f, "          %.10g %.10g %.10g\n", p_W.x(), p_W.y(), p_W.z());
-    }
+    for (const Vec3& p_B : m.points_B) point(p_WB + R_WB * p_B);
+    cells(m.connectivity, m.cell_sizes, m.cell_types, m.body, static_cast<std::int32_t>(m.points_B.size()));
+    a.displacement.insert(a.displacement.end(), 3 * m.points_B.size(), 0.0);
+    a.von_mises.insert(a.von_mises.end(), m.cell_types.size(), 0.0);
   }
+  // links: a line between the marker origins
+  for (const auto& link : links_) {
+    for (int k : {link.first, link.second}) {
+      const Marker& mk = model_.markers[static_cast<size_t>(k)];
+      const Body& b = *model_.bodies[mk.body];
+      b.EvaluateMarker(state.q.data() + b.q_offset, state.v.data() + b.v_offset, mk, marker_state_);
+      point(marker_state_.p_WM);
+    }
+    a.connectivity.insert(a.connectivity.end(), {base, base + 1});
+    a.offsets.push_back(offset += 2);
+    a.types.push_back(kLine);
+    a.body_id.push_back(model_.markers[static_cast<size_t>(link.first)].body);
+    base += 2;
+    a.displacement.insert(a.displacement.end(), 6, 0.0);
+    a.von_mises.push_back(0.0);
+  }
+  // flexible bodies: nodes at r + R (rho + s u), displacement u in body axes
   const double scale = model_.output.deformation_scale;
   for (FlexMesh& m : flex_) {
     const Body& b = *model_.bodies[m.body];
@@ -285,77 +329,112 @@ void VtkAnimationWriter::WriteFrame(const State& state) {
     b.BodyFramePose(q, p_WB, R_WB);
     const auto& nodes = m.flexible->reduced().mesh.nodes;
     for (size_t k = 0; k < nodes.size(); ++k) {
-      const Vec3 p_W = p_WB + R_WB * (nodes[k].x + scale * m.u.segment<3>(6 * k));
-      std::fprintf(f, "          %.10g %.10g %.10g\n", p_W.x(), p_W.y(), p_W.z());
+      const Vec3 u = m.u.segment<3>(6 * static_cast<Eigen::Index>(k));
+      point(p_WB + R_WB * (nodes[k].x + scale * u));
+      a.displacement.insert(a.displacement.end(), {u.x(), u.y(), u.z()});
+    }
+    cells(m.connectivity, m.cell_sizes, m.cell_types, m.body, static_cast<std::int32_t>(nodes.size()));
+    a.von_mises.insert(a.von_mises.end(), m.von_mises.begin(), m.von_mises.end());
+  }
+}
+
+namespace {
+
+constexpr char kVtkBase64Digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+
+// appends the base64 code of n bytes at p to out; `carry` holds 0-2 bytes
+// left from the previous call, flushed with padding when `last`
+void VtkBase64Append(const unsigned char* p, size_t n, unsigned char carry[3], int& carried, bool last,
+                     std::string& out) {
+  auto emit = [&](const unsigned char b[3], int count) {
+    const unsigned v = (unsigned(b[0]) << 16) | (unsigned(count > 1 ? b[1] : 0) << 8) | unsigned(count > 2 ? b[2] : 0);
+    out.push_back(kVtkBase64Digits[(v >> 18) & 63]);
+    out.push_back(kVtkBase64Digits[(v >> 12) & 63]);
+    out.push_back(count > 1 ? kVtkBase64Digits[(v >> 6) & 63] : '=');
+    out.push_back(count > 2 ? kVtkBase64Digits[v & 63] : '=');
+  };
+  size_t i = 0;
+  while (carried > 0 && carried < 3 && i < n) carry[carried++] = p[i++];
+  if (carried == 3) {
+    emit(carry, 3);
+    carried = 0;
+  }
+  for (; i + 3 <= n; i += 3) emit(p + i, 3);
+  while (i < n) carry[carried++] = p[i++];
+  if (last && carried > 0) {
+    emit(carry, carried);
+    carried = 0;
+  }
+}
+
+const char* VtkByteOrder() {
+  return std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
+}
+
+}  // namespace
+
+template <class T>
+void VtkAnimationWriter::WriteArray(std::FILE* f, const char* type, const char* name, int components,
+                                    const std::vector<T>& values, const char* ascii_format) {
+  std::fprintf(f, "        <DataArray type=\"%s\"", type);
+  if (name) std::fprintf(f, " Name=\"%s\"", name);
+  if (components > 1) std::fprintf(f, " NumberOfComponents=\"%d\"", components);
+  text_.clear();
+  if (encoding_ == VtkEncoding::kBinary) {
+    std::fprintf(f, " format=\"binary\">\n          ");
+    const std::uint64_t bytes = values.size() * sizeof(T);
+    text_.reserve(4 * ((bytes + sizeof(bytes)) / 3 + 1));
+    unsigned char carry[3];
+    int carried = 0;
+    VtkBase64Append(reinterpret_cast<const unsigned char*>(&bytes), sizeof(bytes), carry, carried, false, text_);
+    VtkBase64Append(reinterpret_cast<const unsigned char*>(values.data()), bytes, carry, carried, true, text_);
+    text_.push_back('\n');
+  } else {
+    std::fprintf(f, " format=\"ascii\">\n");
+    char buf[96];
+    for (size_t k = 0; k < values.size(); k += static_cast<size_t>(components)) {
+      text_ += "         ";
+      for (int c = 0; c < components && k + static_cast<size_t>(c) < values.size(); ++c) {
+        const int n = std::snprintf(buf, sizeof(buf), ascii_format, values[k + static_cast<size_t>(c)]);
+        text_.push_back(' ');
+        text_.append(buf, static_cast<size_t>(n));
+      }
+      text_.push_back('\n');
     }
   }
-  std::fprintf(f, "        </DataArray>\n      </Points>\n      <Cells>\n");
+  std::fwrite(text_.data(), 1, text_.size(), f);
+  std::fprintf(f, "        </DataArray>\n");
+}
 
-  // connectivity with global vertex numbers, then offsets and types
-  std::fprintf(f, "        <DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n");
-  int base = 0;
-  for (const ShapeMesh& m : meshes_) {
-    size_t c = 0;
-    for (int size : m.cell_sizes) {
-      std::fprintf(f, "         ");
-      for (int k = 0; k < size; ++k) std::fprintf(f, " %d", base + m.connectivity[c++]);
-      std::fputc('\n', f);
-    }
-    base += static_cast<int>(m.points_B.size());
-  }
-  for (const FlexMesh& m : flex_) {
-    size_t c = 0;
-    for (int size : m.cell_sizes) {
-      std::fprintf(f, "         ");
-      for (int k = 0; k < size; ++k) std::fprintf(f, " %d", base + m.connectivity[c++]);
-      std::fputc('\n', f);
-    }
-    base += static_cast<int>(m.u.size() / 6);
-  }
-  std::fprintf(f, "        </DataArray>\n"
-                  "        <DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n");
-  int offset = 0;
-  for (const ShapeMesh& m : meshes_)
-    for (int size : m.cell_sizes) std::fprintf(f, "          %d\n", offset += size);
-  for (const FlexMesh& m : flex_)
-    for (int size : m.cell_sizes) std::fprintf(f, "          %d\n", offset += size);
-  std::fprintf(f, "        </DataArray>\n"
-                  "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
-  for (const ShapeMesh& m : meshes_)
-    for (unsigned char t : m.cell_types) std::fprintf(f, "          %d\n", t);
-  for (const FlexMesh& m : flex_)
-    for (unsigned char t : m.cell_types) std::fprintf(f, "          %d\n", t);
-  std::fprintf(f, "        </DataArray>\n      </Cells>\n");
-
-  // point data: elastic displacement of flexible bodies' nodes (body axes)
-  std::fprintf(f, "      <PointData Vectors=\"displacement\">\n"
-                  "        <DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" "
-                  "format=\"ascii\">\n");
-  for (const ShapeMesh& m : meshes_)
-    for (size_t k = 0; k < m.points_B.size(); ++k) std::fprintf(f, "          0 0 0\n");
-  for (const FlexMesh& m : flex_)
-    for (Eigen::Index k = 0; k < m.u.size(); k += 6)
-      std::fprintf(f, "          %.10g %.10g %.10g\n", m.u(k), m.u(k + 1), m.u(k + 2));
-  std::fprintf(f, "        </DataArray>\n      </PointData>\n");
-
-  // cell data: the body index, von Mises stress
-  std::fprintf(f, "      <CellData Scalars=\"body_id\">\n"
-                  "        <DataArray type=\"Int32\" Name=\"body_id\" format=\"ascii\">\n");
-  for (const ShapeMesh& m : meshes_)
-    for (size_t c = 0; c < m.cell_types.size(); ++c) std::fprintf(f, "          %d\n", m.body);
-  for (const FlexMesh& m : flex_)
-    for (size_t c = 0; c < m.cell_types.size(); ++c) std::fprintf(f, "          %d\n", m.body);
-  std::fprintf(f, "        </DataArray>\n"
-                  "        <DataArray type=\"Float64\" Name=\"von_mises\" format=\"ascii\">\n");
-  for (const ShapeMesh& m : meshes_)
-    for (size_t c = 0; c < m.cell_types.size(); ++c) std::fprintf(f, "          0\n");
-  for (const FlexMesh& m : flex_)
-    for (double vm : m.von_mises) std::fprintf(f, "          %.8g\n", vm);
-  std::fprintf(f, "        </DataArray>\n      </CellData>\n"
-                  "    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n");
+void VtkAnimationWriter::WriteFrame(const State& state) {
+  FillArrays(state);
+  const VtkFrameArrays& a = arrays_;
+  const std::string path = FramePath(frames());
+  std::FILE* f = OpenOrThrow(path);
+  std::fprintf(f,
+               "<?xml version=\"1.0\"?>\n"
+               "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"%s\" header_type=\"UInt64\">\n"
+               "  <UnstructuredGrid>\n"
+               "    <FieldData>\n"
+               "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" "
+               "format=\"ascii\">%.17g</DataArray>\n"
+               "    </FieldData>\n"
+               "    <Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n",
+               VtkByteOrder(), state.t, n_points_, n_cells_);
+  std::fprintf(f, "      <Points>\n");
+  WriteArray(f, "Float64", nullptr, 3, a.points, "%.10g");
+  std::fprintf(f, "      </Points>\n      <Cells>\n");
+  WriteArray(f, "Int32", "connectivity", 1, a.connectivity, "%d");
+  WriteArray(f, "Int32", "offsets", 1, a.offsets, "%d");
+  WriteArray(f, "UInt8", "types", 1, a.types, "%d");
+  std::fprintf(f, "      </Cells>\n      <PointData Vectors=\"displacement\">\n");
+  WriteArray(f, "Float64", "displacement", 3, a.displacement, "%.10g");
+  std::fprintf(f, "      </PointData>\n      <CellData Scalars=\"body_id\">\n");
+  WriteArray(f, "Int32", "body_id", 1, a.body_id, "%d");
+  WriteArray(f, "Float64", "von_mises", 1, a.von_mises, "%.8g");
+  std::fprintf(f, "      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n");
   const bool ok = std::ferror(f) == 0;
-  std::fclose(f);
-  if (!ok) throw InputError("error writing animation frame", {path, 0, ""});
+  if (std::fclose(f) != 0 || !ok) throw InputError("error writing animation frame", {path, 0, ""});
   times_.push_back(state.t);
   AppendToPvd(state.t);
 }

@@ -1,7 +1,7 @@
 #pragma once
 /// \file vtk_animation.h
-/// Animation output for ParaView: one XML VTK unstructured grid (.vtu, ASCII)
-/// per frame in DIR/frames/, and a collection file DIR/anim.pvd listing the
+/// Animation output for ParaView: one XML VTK unstructured grid (.vtu) per
+/// frame in DIR/frames/, and a collection file DIR/anim.pvd listing the
 /// frames with their times. After every frame the new entry and the closing
 /// tags are written over the previous closing tags and flushed, so the .pvd
 /// is complete XML between frames and an interrupted run leaves a loadable
@@ -16,6 +16,13 @@
 /// its deformed FE mesh: every node at r + R (rho_k + s H_k^t w) in world,
 /// s = OutputSettings::deformation_scale; shells as quads and triangles,
 /// beams as lines, solids as tetrahedra (4 and 10 nodes) and hexahedra.
+///
+/// Encoding (VtkEncoding): binary by default, every DataArray
+/// format="binary": base64 of one stream holding a UInt64 byte count
+/// (header_type="UInt64" in <VTKFile>, version 1.0) followed by the raw
+/// values in the machine's byte order (byte_order attribute); the values
+/// are bit-exact. ASCII writes the numbers as text (points, displacement
+/// with 10 significant digits, von Mises with 8).
 /// Point data "displacement": the elastic displacement H_k^t w of each node
 /// relative to the floating frame, body axes, unscaled [m] (0 on shape
 /// vertices). Cell data "von_mises": the largest von Mises stress over the
@@ -23,9 +30,13 @@
 /// top surface; solids: centroid); 0 for beams (the section's shape is not
 /// stored), elements without stress modes and shape cells.
 
+#include <cstdint>
+#include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "flexmb/bodies/body.h"
 #include "flexmb/model/marker.h"
 
 namespace flexmb {
@@ -51,18 +62,42 @@ struct ShapeMesh {
 /// Throws InputError naming the body if a size is not positive.
 ShapeMesh MakeShapeMesh(const Model& model, int body, int segments = 24);
 
+/// The mesh of `shape` (in the user's body frame of body `body`) as
+/// MakeShapeMesh builds it for a body's own shape: a further shape of a
+/// body, added with VtkAnimationWriter::AddShapeMesh. Throws InputError
+/// naming `what` if a size is not positive.
+ShapeMesh MakeShapeMesh(const Shape& shape, int body, const std::string& what, int segments = 24);
+
 /// The elements of an FE mesh as the cells of a shape of body `body` (cell
 /// types as for flexible bodies' meshes), vertices at the nodes' positions
 /// in the mesh's basic frame taken as the user's body frame: the undeformed
 /// mesh moving with the body, e.g. a rigid body standing for an FE part.
 ShapeMesh MakeMeshShape(int body, const fe::Mesh& mesh);
 
+/// How the frames' DataArrays are stored.
+enum class VtkEncoding {
+  kBinary,  ///< format="binary": base64 of a UInt64 byte count and the raw values (bit-exact)
+  kAscii,   ///< format="ascii": numbers as text
+};
+
+/// The arrays of the last frame written, as they are stored in the .vtu
+/// (the writer's own copy, e.g. to check a file read back).
+struct VtkFrameArrays {
+  std::vector<double> points;            ///< x y z per point, world [m]
+  std::vector<std::int32_t> connectivity;  ///< global point indices of all cells
+  std::vector<std::int32_t> offsets;       ///< end of each cell in connectivity
+  std::vector<std::uint8_t> types;         ///< VTK cell type per cell
+  std::vector<double> displacement;      ///< point data: elastic displacement, body axes [m]
+  std::vector<std::int32_t> body_id;       ///< cell data: index in Model::bodies
+  std::vector<double> von_mises;         ///< cell data: von Mises stress [Pa]
+};
+
 /// Writer of the frames and the .pvd collection of one run.
 class VtkAnimationWriter {
  public:
   /// Creates DIR/frames/ and the shape meshes. Throws InputError if the
   /// directory cannot be created. `model` must outlive the writer.
-  VtkAnimationWriter(const std::string& dir, const Model& model);
+  VtkAnimationWriter(const std::string& dir, const Model& model, VtkEncoding encoding = VtkEncoding::kBinary);
   ~VtkAnimationWriter();
   VtkAnimationWriter(const VtkAnimationWriter&) = delete;
   VtkAnimationWriter& operator=(const VtkAnimationWriter&) = delete;
@@ -78,12 +113,23 @@ class VtkAnimationWriter {
   /// `state`, then appends it to anim.pvd.
   void WriteFrame(const State& state);
 
+  /// Adds a straight link drawn as a line cell between the origins of
+  /// markers marker_i and marker_j (indices in Model::markers), e.g. a
+  /// distance joint's rod; cell data body_id is the body of marker_i. Before
+  /// the first frame only; throws InputError otherwise or for an index out
+  /// of range.
+  void AddLink(int marker_i, int marker_j);
+
   /// Number of frames written.
   int frames() const { return static_cast<int>(times_.size()); }
   /// Path of the .pvd file.
   const std::string& pvd_path() const { return pvd_; }
   /// Path of frame i.
   std::string FramePath(int i) const;
+  /// The encoding of the frames.
+  VtkEncoding encoding() const { return encoding_; }
+  /// The arrays of the last frame written (empty before the first).
+  const VtkFrameArrays& last_frame() const { return arrays_; }
 
  private:
   // the FE mesh of one flexible body with its per-frame scratch
@@ -101,11 +147,20 @@ class VtkAnimationWriter {
   };
   void AppendToPvd(double t);
   void UpdateFlexMesh(FlexMesh& m, const double* w);
+  void FillArrays(const State& state);
+  template <class T>
+  void WriteArray(std::FILE* f, const char* type, const char* name, int components, const std::vector<T>& values,
+                  const char* ascii_format);
 
   const Model& model_;
   std::string dir_, pvd_;
   std::vector<ShapeMesh> meshes_;
   std::vector<FlexMesh> flex_;
+  std::vector<std::pair<int, int>> links_;  ///< marker pairs drawn as lines
+  VtkEncoding encoding_;
+  VtkFrameArrays arrays_;                   ///< scratch: the arrays of the frame
+  std::string text_;                        ///< scratch: base64 or ASCII text of one array
+  MarkerState marker_state_;                ///< scratch: a link's marker
   std::vector<double> times_;
   std::FILE* pvd_file_ = nullptr;
   long pvd_tail_ = 0;  ///< file position of the closing tags in anim.pvd

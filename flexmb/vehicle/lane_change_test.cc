@@ -46,6 +46,7 @@ struct LaneChangeFile {
   DriverData driver;
   double dt = 0.002, rho_inf = 0.8, output_interval = 0.01, newton_tol = 1e-10;
   bool jacobian_reuse = false;
+  double jacobian_reuse_rate = SolverSettings{}.jacobian_reuse_rate;
   bool animation = false;
   TruckAnimationData animation_data;
   TruckData truck;
@@ -126,12 +127,16 @@ LaneChangeFile ReadFile(const std::string& path) {
     dd.max_drive_torque = ctx.Double(d, "max_drive_torque", dd.max_drive_torque);
     dd.hold_speed = ctx.Bool(d, "hold_speed", dd.hold_speed);
   }
-  if (const YAML::Node s = Section(t, "solver", ctx, {"dt", "rho_inf", "output_interval", "newton_tol", "jacobian_reuse"})) {
+  if (const YAML::Node s = Section(t, "solver", ctx, {"dt", "rho_inf", "output_interval", "newton_tol", "jacobian_reuse",
+                                                         "jacobian_reuse_rate"})) {
     if (s["dt"]) f.dt = ctx.Positive(s, "dt");
     f.rho_inf = ctx.Double(s, "rho_inf", f.rho_inf);
     f.output_interval = ctx.Double(s, "output_interval", f.output_interval);
     if (s["newton_tol"]) f.newton_tol = ctx.Positive(s, "newton_tol");
     f.jacobian_reuse = ctx.Bool(s, "jacobian_reuse", f.jacobian_reuse);
+    f.jacobian_reuse_rate = ctx.Double(s, "jacobian_reuse_rate", f.jacobian_reuse_rate);
+    if (!(f.jacobian_reuse_rate > 0.0 && f.jacobian_reuse_rate < 1.0))
+      ctx.Fail(s["jacobian_reuse_rate"], "'jacobian_reuse_rate' must lie in (0, 1)");
   }
   const YAML::Node tr = root["truck"];
   if (!tr) ctx.Fail(root, "missing the 'truck' map");
@@ -342,6 +347,7 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
   model.solver.dt_min = 1e-6 * f.dt;
   model.solver.newton_tol = f.newton_tol;
   model.solver.jacobian_reuse = f.jacobian_reuse;
+  model.solver.jacobian_reuse_rate = f.jacobian_reuse_rate;
   const TruckHandles h =
       BuildTruck(f.truck, v0, f.mu, driver.steering_wheel_angle(), driver.drive_torque(), model, driver.brake_torque());
   model.Finalize();

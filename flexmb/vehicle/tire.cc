@@ -52,6 +52,13 @@ Tire::Tire(std::string name, const TireData& d, double mu) : ForceElement(std::m
     positive(d.patch_mass, "patch_mass");
     k_carcass_ = d.count * CorneringStiffness(d.nominal_load) / d.relaxation_length;
   }
+  if (!(d.longitudinal_relaxation_length >= 0) || !std::isfinite(d.longitudinal_relaxation_length))
+    throw InputError("longitudinal_relaxation_length must be >= 0", ctx);
+  if (d.longitudinal_relaxation_length > 0) {
+    if (!(d.relaxation_length > 0))
+      throw InputError("longitudinal_relaxation_length > 0 needs relaxation_length > 0 (the contact-patch body)", ctx);
+    k_long_ = d.count * d.pkx1 * d.nominal_load / d.longitudinal_relaxation_length;
+  }
 }
 
 double Tire::CorneringStiffness(double fz1) const {
@@ -76,7 +83,7 @@ Vec12 Tire::Compute(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, 
   if (contact) *contact = TireContact{};
   const TireData& d = data_;
   // carcass spring between the wheel centre and the contact patch
-  const Vec3 spring = p_j ? Vec3(k_carcass_ * (*p_j - p)) : Vec3::Zero();
+  Vec3 spring = p_j ? Vec3(k_carcass_ * (*p_j - p)) : Vec3::Zero();
   out.segment<3>(0) = spring;
   out.segment<3>(6) = -spring;
   const Vec3 n(0, 0, 1);
@@ -92,10 +99,22 @@ Vec12 Tire::Compute(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, 
   const double rho = p.z() / s;
   const double defl = d.unloaded_radius - rho;
   const Vec3 c = p - rho * r;
+  // longitudinally relaxed: the spring is stiffer along x_t and acts on both
+  // bodies at the patch's contact point c + u
+  const bool along = p_j && k_long_ > 0;
+  if (along) {
+    const Vec3 u = *p_j - p;
+    spring += (k_long_ - k_carcass_) * u.dot(xt) * xt;
+    out.segment<3>(0) = spring;
+    out.segment<3>(3) = (c - p + u).cross(spring);
+    out.segment<3>(6) = -spring;
+    out.segment<3>(9) = -(c - p).cross(spring);
+  }
   if (contact) {
     contact->deflection = defl;
     contact->contact_W = c;
     contact->fy_wheel = spring.dot(yt);
+    contact->fx_wheel = along ? spring.dot(xt) : 0.0;
   }
   if (defl <= 0) return out;
   const double n_t = d.count;
@@ -107,7 +126,8 @@ Vec12 Tire::Compute(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, 
   const Vec3 vc = v + w.cross(c - p);
   const double re = d.unloaded_radius - d.rolling_radius_factor * defl;
   const double omega = w.dot(a);
-  const double vsx = vx - re * omega;
+  // the longitudinally relaxed tire slips with the patch as well
+  const double vsx = vx - re * omega + (along ? (*v_j - v).dot(xt) : 0.0);
   // the relaxed tire slips with the patch, which slides relative to the centre
   const double vsy = vc.dot(yt) + (v_j ? (*v_j - v).dot(yt) : 0.0);
   const double vref = std::sqrt(vx * vx + d.low_speed * d.low_speed);
@@ -134,7 +154,15 @@ Vec12 Tire::Compute(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, 
   const Vec3 fl = fy * yt;
   const double trail = d.trail * std::cos(std::atan(d.trail_decay * alpha));
   const Vec3 mz = -trail * fy * std::tanh(vx / 0.5) * n;
-  if (p_j) {
+  if (along) {
+    // slip forces and aligning moment on the patch, Fz on the wheel
+    const Vec3 fz_n = fz * n;
+    const Vec3 fs = fx * xt + fl;
+    out.segment<3>(0) += fz_n;
+    out.segment<3>(3) += (c - p).cross(fz_n) + my;
+    out.segment<3>(6) += fs;
+    out.segment<3>(9) += (c - p).cross(fs) + mz;
+  } else if (p_j) {
     // lateral force and aligning moment on the patch (arm c - p from its marker)
     out.segment<3>(0) += fw;
     out.segment<3>(3) = (c - p).cross(fw) + my;
@@ -149,6 +177,7 @@ Vec12 Tire::Compute(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, 
     contact->fx = fx;
     contact->fy = fy;
     if (!p_j) contact->fy_wheel = fy;
+    if (!along) contact->fx_wheel = fx;
     contact->kappa = kappa;
     contact->alpha = alpha;
   }

@@ -48,19 +48,31 @@ struct TireData {
   /// Mass of the contact-patch body per tire [kg], > 0 (used with
   /// relaxation_length > 0; small against Ky / V * sigma / V).
   double patch_mass = 0.5;
+  /// Longitudinal relaxation length sigma_kappa0 at the nominal load [m],
+  /// >= 0; 0: no longitudinal relaxation (the slip ratio is the wheel's).
+  /// With sigma_kappa0 > 0 (needs relaxation_length > 0: the patch body) the
+  /// patch also slides along x_t, tied to the wheel by the longitudinal
+  /// carcass stiffness k_x = Kx(Fz0) / sigma_kappa0 per tire, so that
+  /// sigma_kappa(Fz) = Kx(Fz) / k_x (Pacejka, 3rd ed., sec. 7.2.1, the
+  /// single-contact-point model in the longitudinal direction).
+  double longitudinal_relaxation_length = 0.0;
 };
 
 /// Contact quantities of one evaluation of a Tire (for sensors and tests).
 struct TireContact {
   double deflection = 0.0;  ///< R0 minus the centre height along the wheel plane [m]
   double fz = 0.0;          ///< vertical force of the set [N] (0 when lifted off)
-  double fx = 0.0;          ///< longitudinal force of the set [N]
+  double fx = 0.0;          ///< longitudinal slip force of the set [N] (on the contact patch when longitudinally relaxed)
   double fy = 0.0;          ///< lateral slip force of the set [N] (on the contact patch when relaxed)
   /// Lateral force of the set passed to the wheel along y_t [N]: the carcass
   /// spring's force when relaxed, fy otherwise.
   double fy_wheel = 0.0;
-  double kappa = 0.0;       ///< longitudinal slip ratio [-]
-  double alpha = 0.0;       ///< slip angle [rad]
+  /// Longitudinal force of the set passed to the wheel along x_t [N]: the
+  /// longitudinal carcass spring's force when longitudinally relaxed, fx
+  /// otherwise.
+  double fx_wheel = 0.0;
+  double kappa = 0.0;       ///< longitudinal slip ratio [-] (the patch's when longitudinally relaxed)
+  double alpha = 0.0;       ///< slip angle [rad] (the patch's when relaxed)
   Vec3 contact_W = Vec3::Zero();  ///< contact point on the road [m]
 };
 
@@ -101,6 +113,16 @@ struct TireContact {
 /// patch mass neglected, Fy lags its steady value by
 /// sigma dFy/dx + Fy = Fy_ss (x the travelled distance), sigma = Ky / k_y
 /// (docs/design.md "Vehicle: tire relaxation length").
+/// Longitudinal relaxation (longitudinal_relaxation_length > 0 as well): the
+/// patch slides in the plane of the spin axis and the carrier's forward axis
+/// (a ContactPatchJoint, built by the truck); the carcass spring becomes
+/// S = k_y u + (k_x - k_y) (u . x_t) x_t with u = p_j - p, and acts with
+/// opposite signs on wheel and patch at one point, the patch's contact point
+/// c + u (so its x_t part turns the wheel about the spin axis with the lever
+/// rho, as the slip force did); the longitudinal slip force Fx acts on the
+/// patch, from its slip Vsx' = Vsx + (v_j - v) . x_t, kappa = -Vsx' / V; Fz
+/// and the rolling resistance stay on the wheel. Linear range, massless
+/// patch: sigma_kappa dFx/dx + Fx = Fx_ss, sigma_kappa = Kx / k_x.
 /// K and C are central finite differences of the wrench (the element's
 /// documented choice, docs/design.md "Vehicle: tire tangent").
 class Tire final : public ForceElement {
@@ -122,9 +144,15 @@ class Tire final : public ForceElement {
                       TireContact* contact) const;
   /// True when the tire has a relaxation length (needs a patch marker j).
   bool relaxed() const { return data_.relaxation_length > 0; }
+  /// True when the tire also relaxes longitudinally (its patch slides along x_t).
+  bool longitudinally_relaxed() const { return data_.longitudinal_relaxation_length > 0; }
   /// Lateral carcass stiffness of the set, count * Ky(Fz0) / sigma0 [N/m]
   /// (0 without relaxation).
   double carcass_stiffness() const { return k_carcass_; }
+  /// Longitudinal carcass stiffness of the set, count * Kx(Fz0) /
+  /// sigma_kappa0 with Kx(Fz0) = pkx1 Fz0 [N/m] (0 without longitudinal
+  /// relaxation).
+  double longitudinal_carcass_stiffness() const { return k_long_; }
   /// Cornering stiffness per tire Ky(Fz1) = pky1 Fz0 sin(2 atan(Fz1 / (pky2 Fz0))) [N/rad].
   double CorneringStiffness(double fz1) const;
   /// The tire's coefficients.
@@ -139,6 +167,7 @@ class Tire final : public ForceElement {
   TireData data_;
   double mu_;
   double k_carcass_ = 0.0;
+  double k_long_ = 0.0;
 };
 
 }  // namespace flexmb::vehicle

@@ -18,6 +18,7 @@
 #include "flexmb/joints/prismatic.h"
 #include "flexmb/joints/revolute.h"
 #include "flexmb/vehicle/command_signal.h"
+#include "flexmb/vehicle/contact_patch_joint.h"
 #include "flexmb/vehicle/wheel_brake.h"
 
 namespace flexmb::vehicle {
@@ -140,10 +141,26 @@ std::array<double, 2> WheelCentreHeights(const TruckData& d, double g) {
 // left kingpin on the axle at wheel-centre height zf
 Vec3 LeftKingpin(const TruckData& d, double zf) { return Vec3(0, 0.5 * d.front_track - d.kingpin_offset, zf); }
 
-// pitman arm pivot (the steering gear's output shaft) on the frame; see BuildTruck
-Vec3 SteeringGearPivot(const TruckData& d, double zf) {
-  const double a = d.pitman_arm_length, hz = 0.15;
-  return LeftKingpin(d, zf) + Vec3(d.drag_link_length, -a, hz + a);
+// ball of the left knuckle's inboard steering arm (drag link's rear end)
+Vec3 SteeringArmBall(const TruckData& d, double zf) {
+  return LeftKingpin(d, zf) + Vec3(0, -d.pitman_arm_length, d.steering_arm_height);
+}
+
+// pitman ball (drag link's front end): the drag link is horizontal
+Vec3 PitmanBall(const TruckData& d, double zf) { return SteeringArmBall(d, zf) + Vec3(d.drag_link_length, 0, 0); }
+
+// pitman arm pivot (the steering gear's output shaft) on the frame, the
+// pitman arm hanging down from it to the ball; see BuildTruck
+Vec3 SteeringGearPivot(const TruckData& d, double zf) { return PitmanBall(d, zf) + Vec3(0, 0, d.pitman_arm_length); }
+
+// the steering gear box's mount on the left rail's outer web, mid-height,
+// ahead of the pitman pivot by twice the spider radius: clear of the front
+// arm pivot's bracket (the spring hanger at x = arm_length, where the pitman
+// sits); the elastic frame's interface point of the gear, whose node carries
+// the pitman and column markers offset to the pivot
+Vec3 SteeringGearMount(const TruckData& d, double zf) {
+  return Vec3(SteeringGearPivot(d, zf).x() + 2 * d.ladder.spider_radius, d.ladder.half_spacing,
+              d.ladder.bottom_z + 0.5 * d.ladder.web_height);
 }
 
 // mount points of a part: per station left then right, at the rails' top corners
@@ -179,7 +196,7 @@ std::vector<FrameAttachment> FrameAttachments(const TruckData& d, double g) {
     a.push_back({"spring_seat_" + side + "_right", Vec3(x, -s.spring_half_spacing, zw[axle] + s.spring_length)});
     a.push_back({"arm_pivot_" + side, Vec3(x + s.arm_length, 0, zw[axle])});
   }
-  a.push_back({"steering_gear", SteeringGearPivot(d, zw[0])});
+  a.push_back({"steering_gear", SteeringGearMount(d, zw[0])});
   for (const auto& [name, mounts] : {std::pair<std::string, const MountData*>{"cab", &d.cab_mounts},
                                      {"powertrain", &d.powertrain_mounts},
                                      {"cargo", &d.cargo_mounts}}) {
@@ -348,14 +365,18 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
     h.wheel_marker[k] = wm;
     int patch_marker = -1;
     if (td.relaxation_length > 0) {
-      // contact-patch body sliding along the spin axis on the carrier
+      // contact-patch body sliding along the spin axis on the carrier, and
+      // forward too when the tire relaxes longitudinally
       PartData pp;
       pp.mass = TruckPatchMass(td);
       pp.inertia = Vec3::Constant(0.01 * pp.mass);
       const int pb = AddPart(m, name + "_patch", pp, c, speed, zero);
       patch_marker = m.AddMarker(pb, "centre", c, AxisY());
-      m.AddJoint(std::make_unique<PrismaticJoint>(name + "_carcass"), m.AddMarker(carrier, name + "_carcass", c, AxisY()),
-                 patch_marker);
+      const int cm = m.AddMarker(carrier, name + "_carcass", c, AxisY());
+      if (td.longitudinal_relaxation_length > 0)
+        m.AddJoint(std::make_unique<ContactPatchJoint>(name + "_carcass"), cm, patch_marker);
+      else
+        m.AddJoint(std::make_unique<PrismaticJoint>(name + "_carcass"), cm, patch_marker);
     }
     h.tire_force[k] = m.AddForce(std::make_unique<Tire>(name + "_tire", td, mu), wm, patch_marker);
     return jm;
@@ -391,17 +412,19 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
     // pitman arm on the frame (axis y) hanging down, ahead of the left kingpin;
     // its ball and the end of the left knuckle's inboard steering arm are
     // joined by the drag link; a pitman rotation theta turns the knuckle by
-    // -theta (equal lever lengths)
-    const double a = d.pitman_arm_length, hz = 0.15;
-    const Vec3 arm_end = kingpin[0] + Vec3(0, -a, hz);
-    const Vec3 ball = arm_end + Vec3(d.drag_link_length, 0, 0);
-    const Vec3 pivot = SteeringGearPivot(d, zf);
+    // -theta (equal lever lengths). With the ball at the arm pivot's height
+    // (steering_arm_height 0) axle heave, brake wind-up and roll move the
+    // steering arm's ball across the link and do not steer (roll: to first
+    // order).
+    const Vec3 arm_end = SteeringArmBall(d, zf);
+    const Vec3 ball = PitmanBall(d, zf);
+    const Vec3 pivot = SteeringGearPivot(d, zf), mount = SteeringGearMount(d, zf);
     PartData pitman;
     pitman.mass = d.pitman_arm_mass;
     pitman.inertia = Vec3(0.03, 0.03, 0.01);
     const int pb = AddPart(m, "pitman_arm", pitman, 0.5 * (ball + pivot), speed, zero);
     const int pj = m.AddJoint(std::make_unique<RevoluteJoint>("steering_gear"),
-                              frame_marker("steering_gear", pivot, AxisY()), m.AddMarker(pb, "gear", pivot, AxisY()));
+                              frame_marker("steering_gear", pivot, AxisY(), &mount), m.AddMarker(pb, "gear", pivot, AxisY()));
     m.AddJoint(std::make_unique<DistanceJoint>("drag_link", (ball - arm_end).norm()), m.AddMarker(pb, "ball", ball, I),
                m.AddMarker(knuckle[0], "steering_arm", arm_end, I));
     // one-piece tie rod between trapezoid arms aimed at the rear-axle centre
@@ -438,7 +461,7 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
       column.products = Vec3(Ic(0, 1), Ic(0, 2), Ic(1, 2));
       const int cb = AddPart(m, "steering_column", column, cg, speed, zero);
       const int cj = m.AddJoint(std::make_unique<RevoluteJoint>("steering_column"),
-                                frame_marker("steering_column", pivot, Rc), m.AddMarker(cb, "column", pivot, Rc));
+                                frame_marker("steering_column", pivot, Rc, &mount), m.AddMarker(cb, "column", pivot, Rc));
       m.AddJoint(std::make_unique<GearJoint>("steering_gear_ratio", -d.steering_ratio),
                  m.AddMarker(cb, "gear", pivot, Rg), m.AddMarker(pb, "gear_coupling", pivot, Rp));
       const double r2 = d.steering_ratio * d.steering_ratio;
@@ -476,7 +499,7 @@ TireData LoadTireFile(const std::string& path) {
   ctx.CheckKeys(t, {"name", "note", "count", "unloaded_radius", "vertical_stiffness", "vertical_damping",
                     "rolling_radius_factor", "nominal_load", "pcx1", "pdx1", "pdx2", "pex1", "pkx1", "pcy1", "pdy1",
                     "pdy2", "pey1", "pky1", "pky2", "rbx1", "rby1", "trail", "trail_decay", "rolling_resistance",
-                    "low_speed", "relaxation_length", "patch_mass"});
+                    "low_speed", "relaxation_length", "patch_mass", "longitudinal_relaxation_length"});
   TireData d;
   d.count = ctx.Integer(t, "count", d.count);
   d.unloaded_radius = ctx.Positive(t, "unloaded_radius");
@@ -503,6 +526,7 @@ TireData LoadTireFile(const std::string& path) {
   d.low_speed = ctx.Double(t, "low_speed", d.low_speed);
   d.relaxation_length = ctx.Double(t, "relaxation_length", d.relaxation_length);
   d.patch_mass = ctx.Double(t, "patch_mass", d.patch_mass);
+  d.longitudinal_relaxation_length = ctx.Double(t, "longitudinal_relaxation_length", d.longitudinal_relaxation_length);
   // validate now, naming the file
   ctx.Guard(t, [&] { Tire("check", d, 1.0); });
   return d;
@@ -534,7 +558,8 @@ TruckData ParseTruck(const YAML::Node& n, ParseContext& ctx, const std::string& 
   const YAML::Node st = n["steering"];
   if (!st) ctx.Fail(n, "missing 'steering'");
   ctx.CheckKeys(st, {"ratio", "stiffness", "damping", "linkage", "pitman_arm_length", "tie_rod_arm_length", "column",
-                     "column_mass", "column_inertia", "column_length", "column_inclination_deg"});
+                     "column_mass", "column_inertia", "column_length", "column_inclination_deg", "pitman_x",
+                     "steering_arm_height"});
   d.steering_ratio = ctx.Positive(st, "ratio");
   d.steering_stiffness = ctx.Positive(st, "stiffness");
   d.steering_damping = ctx.Double(st, "damping", d.steering_damping);
@@ -549,8 +574,12 @@ TruckData ParseTruck(const YAML::Node& n, ParseContext& ctx, const std::string& 
   if (!(d.column_mass > 0) || !(d.column_inertia > 0) || !(d.column_length > 0) ||
       !(std::abs(d.column_inclination) < 0.5 * M_PI))
     ctx.Fail(st, "column_mass, column_inertia, column_length must be positive, |column_inclination_deg| < 90");
+  d.drag_link_length = ctx.Double(st, "pitman_x", d.drag_link_length);
+  d.steering_arm_height = ctx.Double(st, "steering_arm_height", d.steering_arm_height);
   if (!(d.pitman_arm_length > 0) || !(d.tie_rod_arm_length > 0))
     ctx.Fail(st, "pitman_arm_length and tie_rod_arm_length must be positive");
+  if (!(d.drag_link_length > 0) || !std::isfinite(d.steering_arm_height))
+    ctx.Fail(st, "pitman_x must be positive and steering_arm_height finite");
   if (const YAML::Node br = n["brakes"]) {
     ctx.SetEntity("brakes");
     ctx.CheckKeys(br, {"front_share", "smoothing_spin", "note"});

@@ -102,8 +102,22 @@ struct TruckData {
   bool steering_linkage = true;
   double pitman_arm_length = 0.25;  ///< pitman arm and steering arm length [m] (1:1 lever)
   double tie_rod_arm_length = 0.3;  ///< trapezoid arm length [m], pointing at the rear-axle centre
-  double drag_link_length = 0.65;   ///< drag link length; the pitman arm is this far ahead of the front axle [m]
+  /// Pitman arm (pivot and ball) this far ahead of the front axle [m], the
+  /// horizontal drag link's length (truck.yaml: steering.pitman_x); the
+  /// default equals the default front arm_length: the pitman ball then lies
+  /// on the front arm's pivot axis.
+  double drag_link_length = 0.7;
   double pitman_arm_mass = 5.0;     ///< [kg], centre of mass at x = drag_link_length
+  /// Height of the steering arm's ball (the drag link's rear end) above the
+  /// wheel centre [m]; the drag link is horizontal. The axle pitches with its
+  /// arm about the arm pivot (at the wheel centre's height): a pitch phi
+  /// (heave, brake wind-up) moves the ball by steering_arm_height * phi along
+  /// the link and steers the wheels by -(steering_arm_height /
+  /// pitman_arm_length) phi. 0 (the default): the link is level with the arm,
+  /// no brake or roll steer to first order (examples/truck_lane_change/
+  /// README.md, "Brake steer"); 0.15 was the first version's (truck.yaml:
+  /// steering.steering_arm_height).
+  double steering_arm_height = 0.0;
   /// Steering column (seed Fig. 4, with the linkage): steering wheel and
   /// column as one rotating body on a revolute on the frame at the steering
   /// gear, turned by the servo (gains steering_stiffness / ratio^2 and

@@ -5,6 +5,7 @@
 
 #include "flexmb/bodies/rigid_body.h"
 #include "flexmb/common/error.h"
+#include "flexmb/joints/joint.h"
 #include "flexmb/model/model.h"
 #include "flexmb/model/state.h"
 
@@ -14,6 +15,24 @@ namespace {
 constexpr unsigned char kTruckAnimLine = 3, kTruckAnimQuad = 9;
 constexpr double kTruckAnimLineWidth = 0.12;  // painted line width [m]
 constexpr double kTruckAnimLineZ = 0.002;     // lines just above the road [m]
+
+constexpr double kTruckAnimHubSize = 0.12, kTruckAnimHubWidth = 0.3;  // axle hub box [m]
+constexpr double kTruckAnimPatchLength = 0.2, kTruckAnimPatchThickness = 0.02;  // contact patch box [m]
+constexpr double kTruckAnimColumnRadius = 0.025;  // steering column [m]
+constexpr double kTruckAnimWheelRadius = 0.25, kTruckAnimWheelThickness = 0.04;  // steering wheel [m]
+// distance joints drawn as lines between their markers
+constexpr const char* kTruckAnimLinks[] = {"drag_link", "tie_rod", "front_extra_arm", "rear_extra_arm"};
+
+// shape axes of the steering column: z along the column, leaning rearwards
+// by column_inclination from the vertical
+Mat3 TruckAnimColumnAxes(const TruckData& d) {
+  const Vec3 ac(-std::sin(d.column_inclination), 0, std::cos(d.column_inclination));
+  Mat3 R;
+  R.col(0) = Vec3(0, 1, 0);
+  R.col(1) = ac.cross(R.col(0));
+  R.col(2) = ac;
+  return R;
+}
 
 // cylinder axis (shape z) along the vehicle's y axis
 Mat3 TruckAnimAxisY() {
@@ -99,6 +118,22 @@ void SetTruckShapes(const TruckData& d, Model& model) {
     } else if (name == "pitman_arm") {
       s.type = Shape::Type::kBox;
       s.size = Vec3(0.05, 0.05, d.pitman_arm_length);
+    } else if (name == "front_axle_hub" || name == "rear_axle_hub") {
+      // from the axle centre up to the additional arm's end
+      const double h = (name[0] == 'f' ? d.front : d.rear).extra_arm_height;
+      s.type = Shape::Type::kBox;
+      s.size = Vec3(kTruckAnimHubSize, kTruckAnimHubWidth, h + kTruckAnimHubSize);
+      s.p_BS += Vec3(0, 0, 0.5 * h);
+    } else if (name.size() == 14 && name.starts_with("wheel_") && name.ends_with("_patch")) {
+      // flat on the road under the wheel centre (body frame = vehicle frame, road at z = 0)
+      const TireData& t = name[6] == 'f' ? d.front_tire : d.rear_tire;
+      s.type = Shape::Type::kBox;
+      s.size = Vec3(kTruckAnimPatchLength, 0.28 * t.count, kTruckAnimPatchThickness);
+      s.p_BS.z() = 0.5 * kTruckAnimPatchThickness;
+    } else if (name == "steering_column") {
+      s.type = Shape::Type::kCylinder;
+      s.size = Vec3(kTruckAnimColumnRadius, d.column_length, 0);
+      s.R_BS = TruckAnimColumnAxes(d);
     } else {
       continue;
     }
@@ -117,6 +152,21 @@ TruckAnimation::TruckAnimation(const std::string& dir, const TruckData& d, const
   model.output.deformation_scale = a.deformation_scale;
   writer_ = std::make_unique<VtkAnimationWriter>(dir, model);
   if (!h.elastic && d.frame_mesh) writer_->AddShapeMesh(MakeMeshShape(h.frame_body, *d.frame_mesh));
+  // the steering wheel: a disc at the column's upper end
+  for (int b = 0; b < static_cast<int>(model.bodies.size()); ++b) {
+    const auto* rb = dynamic_cast<const RigidBody*>(model.bodies[b].get());
+    if (!rb || rb->name() != "steering_column") continue;
+    Shape wheel;
+    wheel.type = Shape::Type::kCylinder;
+    wheel.size = Vec3(kTruckAnimWheelRadius, kTruckAnimWheelThickness, 0);
+    wheel.R_BS = TruckAnimColumnAxes(d);
+    wheel.p_BS = rb->com_B() + 0.5 * d.column_length * wheel.R_BS.col(2);
+    writer_->AddShapeMesh(MakeShapeMesh(wheel, b, "steering wheel"));
+  }
+  for (const char* name : kTruckAnimLinks) {
+    const int j = model.FindJoint(name);
+    if (j >= 0) writer_->AddLink(model.joints[j]->marker_i, model.joints[j]->marker_j);
+  }
   writer_->AddShapeMesh(TruckAnimCorridor(course));
 }
 

@@ -6,9 +6,14 @@
 // r + R (rho_k + s H_k w), computed here from the body's coordinates and
 // the reduced body's mode matrix, to 1e-9 m; the loaded frame's von Mises
 // stress is non-zero; the rigid-frame run draws the undeformed frame mesh.
+// The frames are binary (base64) and read back by an independent decoder
+// (tests/unit/io/vtu_test_reader.h); the rods (drag link, tie rod, extra
+// arm) are line cells ending at their joints' marker origins to 1e-9 m, and
+// the axle hub, contact patches and steering column have cells.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -16,7 +21,9 @@
 #include <vector>
 
 #include "flexmb/bodies/flexible_body.h"
+#include "flexmb/joints/joint.h"
 #include "flexmb/model/model.h"
+#include "tests/unit/io/vtu_test_reader.h"
 #include "truck_harness.h"
 
 namespace flexmb::vehicle::testing {
@@ -24,21 +31,26 @@ namespace truck_animation_test {
 
 namespace fs = std::filesystem;
 
-// the numbers of the DataArray named `name` (or the Points array) of a .vtu
-std::vector<double> TruckAnimVtuArray(const std::string& path, const std::string& name) {
-  std::ifstream in(path);
-  std::stringstream buf;
-  buf << in.rdbuf();
-  const std::string s = buf.str();
-  size_t at = name == "Points" ? s.find("<Points>") : s.find("Name=\"" + name + "\"");
-  if (at == std::string::npos) return {};
-  at = s.find('>', s.find("<DataArray", name == "Points" ? at : s.rfind("<DataArray", at))) + 1;
-  const size_t end = s.find("</DataArray>", at);
-  std::istringstream values(s.substr(at, end - at));
-  std::vector<double> out;
-  double v = 0;
-  while (values >> v) out.push_back(v);
-  return out;
+// the numbers of the DataArray named `name` (or the Points array) of a
+// .vtu, decoded by the tests' own reader; `format` gets its encoding
+std::vector<double> TruckAnimVtuArray(const std::string& path, const std::string& name,
+                                      std::string* format = nullptr) {
+  return vtu_test::VtuTestArray(path, name, format);
+}
+
+// origins of markers i and j of joint `name` in world (empty if no such joint)
+std::vector<Vec3> TruckAnimLinkEnds(const Model& m, const State& st, const char* name) {
+  const int j = m.FindJoint(name);
+  if (j < 0) return {};
+  std::vector<Vec3> ends;
+  for (int k : {m.joints[j]->marker_i, m.joints[j]->marker_j}) {
+    const Marker& mk = m.markers[static_cast<size_t>(k)];
+    const Body& b = *m.bodies[mk.body];
+    MarkerState ms;
+    b.EvaluateMarker(st.q.data() + b.q_offset, st.v.data() + b.v_offset, mk, ms);
+    ends.push_back(ms.p_WM);
+  }
+  return ends;
 }
 
 int TruckAnimPvdEntries(const std::string& path) {
@@ -78,6 +90,8 @@ TEST(TruckAnimation, ElasticFrameFramesShowTheFlexibleBodyNodes) {
   o.animation_fps = 25.0;
   // expected node positions of every frame, from the body's coordinates
   std::vector<std::vector<Vec3>> expected;
+  std::vector<std::vector<std::vector<Vec3>>> link_ends;  // per frame, per rod: its two ends
+  std::vector<int> shaped_bodies;
   double scale = -1;
   o.on_animation_frame = [&](const Model& m, const State& st) {
     const FlexibleBody* flex = nullptr;
@@ -96,6 +110,17 @@ TEST(TruckAnimation, ElasticFrameFramesShowTheFlexibleBodyNodes) {
       p[static_cast<size_t>(k)] = r + R * (rb.mesh.nodes[static_cast<size_t>(k)].x + scale * u);
     }
     expected.push_back(std::move(p));
+    std::vector<std::vector<Vec3>> links;
+    for (const char* name : {"drag_link", "tie_rod", "rear_extra_arm"}) {
+      links.push_back(TruckAnimLinkEnds(m, st, name));
+      ASSERT_EQ(links.back().size(), 2u) << name;
+    }
+    link_ends.push_back(std::move(links));
+    if (shaped_bodies.empty())
+      for (const char* name : {"rear_axle_hub", "wheel_fl_patch", "wheel_fr_patch", "wheel_rl_patch",
+                               "wheel_rr_patch", "steering_column", "pitman_arm"})
+        for (size_t b = 0; b < m.bodies.size(); ++b)
+          if (m.bodies[b]->name() == name) shaped_bodies.push_back(static_cast<int>(b));
   };
   const LaneChangeResult res = RunLaneChange(o);
   ASSERT_TRUE(res.completed) << res.message;
@@ -110,7 +135,9 @@ TEST(TruckAnimation, ElasticFrameFramesShowTheFlexibleBodyNodes) {
     char name[32];
     std::snprintf(name, sizeof(name), "frame_%05d.vtu", i);
     const std::string path = (dir / "animation" / "frames" / name).string();
-    const std::vector<double> pts = TruckAnimVtuArray(path, "Points");
+    std::string format;
+    const std::vector<double> pts = TruckAnimVtuArray(path, "Points", &format);
+    EXPECT_EQ(format, "binary");
     ASSERT_GE(static_cast<int>(pts.size()), 3 * nodes) << path;
     // the frame's mesh is the last block of points
     const size_t base = pts.size() - 3 * static_cast<size_t>(nodes);
@@ -122,6 +149,26 @@ TEST(TruckAnimation, ElasticFrameFramesShowTheFlexibleBodyNodes) {
     EXPECT_LT(err, 1e-9) << path;
     // more points than the frame: the parts' shapes and the corridor
     EXPECT_GT(pts.size(), 3 * static_cast<size_t>(nodes) + 100);
+    // every rod is a line cell between its joint's marker origins
+    const std::vector<double> conn = TruckAnimVtuArray(path, "connectivity"),
+                              offsets = TruckAnimVtuArray(path, "offsets"),
+                              types = TruckAnimVtuArray(path, "types"), body_id = TruckAnimVtuArray(path, "body_id");
+    ASSERT_EQ(types.size(), offsets.size());
+    ASSERT_EQ(types.size(), body_id.size());
+    for (const std::vector<Vec3>& ends : link_ends[static_cast<size_t>(i)]) {
+      double best = 1e300;
+      for (size_t c = 0; c < types.size(); ++c) {
+        if (types[c] != 3) continue;
+        const auto end = static_cast<size_t>(offsets[c]);
+        const auto a = static_cast<size_t>(conn[end - 2]), b = static_cast<size_t>(conn[end - 1]);
+        const Vec3 pa(pts[3 * a], pts[3 * a + 1], pts[3 * a + 2]), pb(pts[3 * b], pts[3 * b + 1], pts[3 * b + 2]);
+        best = std::min(best, std::max((pa - ends[0]).norm(), (pb - ends[1]).norm()));
+      }
+      EXPECT_LT(best, 1e-9) << path;
+    }
+    // the parts that got shapes in this session draw cells
+    for (int b : shaped_bodies)
+      EXPECT_GT(std::count(body_id.begin(), body_id.end(), static_cast<double>(b)), 0) << "body " << b;
     const std::vector<double> vm = TruckAnimVtuArray(path, "von_mises");
     for (double v : vm) max_vm = std::max(max_vm, v);
     const std::vector<double> u = TruckAnimVtuArray(path, "displacement");
@@ -131,6 +178,7 @@ TEST(TruckAnimation, ElasticFrameFramesShowTheFlexibleBodyNodes) {
   EXPECT_GT(max_vm, 1e6);
   EXPECT_LT(max_vm, 1e9);
   EXPECT_GT(max_u, 1e-5);
+  EXPECT_EQ(shaped_bodies.size(), 7u);
   std::printf("%d frames to t = %.3f s, %d frame nodes, deformation scale %g, max von Mises %.1f MPa, max "
               "displacement %.3f mm; writing took %.3f s\n",
               n_frames, res.t_end, nodes, scale, max_vm / 1e6, max_u * 1e3, res.animation_wall_time_s);

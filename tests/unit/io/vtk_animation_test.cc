@@ -18,6 +18,7 @@
 #include "flexmb/math/rotation.h"
 #include "flexmb/model/model.h"
 #include "tests/unit/bodies/flexible_test_bodies.h"
+#include "tests/unit/io/vtu_test_reader.h"
 
 namespace flexmb {
 namespace {
@@ -65,18 +66,32 @@ std::string Python(const std::string& script, const std::string& arg) {
 }
 
 // parses a .vtu as XML and prints: points, connectivity, offsets, types,
-// body_id, each as "count values..." on one line, after the piece sizes
+// body_id, displacement, von_mises, each as "count values..." on one line,
+// after the piece sizes; binary arrays are decoded with base64 and struct
+// (floats printed with repr, which reads back to the same double)
 const char* kReadVtu = R"(
-import sys, xml.etree.ElementTree as E
+import sys, base64, struct, xml.etree.ElementTree as E
 r = E.parse(sys.argv[1]).getroot()
 assert r.get("type") == "UnstructuredGrid"
+head = {"UInt32": "<I", "UInt64": "<Q"}[r.get("header_type", "UInt32")]
+code = {"Float64": "d", "Float32": "f", "Int32": "i", "Int64": "q", "UInt8": "B"}
+def values(a):
+  if a.get("format") == "ascii":
+    return (a.text or "").split()
+  assert a.get("format") == "binary" and r.get("byte_order") == "LittleEndian"
+  raw = base64.b64decode("".join((a.text or "").split()))
+  h = struct.calcsize(head)
+  n = struct.unpack(head, raw[:h])[0]
+  assert n == len(raw) - h
+  c = code[a.get("type")]
+  return [repr(x) for x in struct.unpack("<%d%s" % (n // struct.calcsize(c), c), raw[h:])]
 p = r.find("UnstructuredGrid/Piece")
 print(p.get("NumberOfPoints"), p.get("NumberOfCells"))
-cells = {a.get("Name"): (a.text or "").split() for a in p.find("Cells").findall("DataArray")}
+cells = {a.get("Name"): values(a) for a in p.find("Cells").findall("DataArray")}
 bid = [a for a in p.find("CellData").findall("DataArray") if a.get("Name") == "body_id"][0]
 disp = [a for a in p.find("PointData").findall("DataArray") if a.get("Name") == "displacement"][0]
 vm = [a for a in p.find("CellData").findall("DataArray") if a.get("Name") == "von_mises"][0]
-for x in ((p.find("Points/DataArray").text or "").split(), cells["connectivity"], cells["offsets"], cells["types"], (bid.text or "").split(), (disp.text or "").split(), (vm.text or "").split()):
+for x in (values(p.find("Points/DataArray")), cells["connectivity"], cells["offsets"], cells["types"], values(bid), values(disp), values(vm)):
   print(len(x), " ".join(x))
 )";
 
@@ -257,6 +272,122 @@ TEST_F(VtkAnimation, FlexibleBodyMeshAtRhoPlusScaledModes) {
     largest = std::max(largest, 40.0 * u.norm());
   }
   EXPECT_GT(largest, 1e-3);  // the deformation is visible in the positions
+}
+
+// the written arrays equal the writer's in-memory arrays: exactly for the
+// binary encoding, to the printed digits for ASCII
+void VtkExpectFileHasArrays(const std::string& path, const VtkFrameArrays& a, bool exact) {
+  const Vtu v = ReadVtu(path);
+  auto same = [&](const std::vector<double>& got, const std::vector<double>& want, const char* what) {
+    ASSERT_EQ(got.size(), want.size()) << what;
+    for (size_t k = 0; k < got.size(); ++k) {
+      if (exact)
+        EXPECT_EQ(got[k], want[k]) << what << " " << k;
+      else
+        EXPECT_NEAR(got[k], want[k], 1e-9 * std::max(1.0, std::abs(want[k]))) << what << " " << k;
+    }
+  };
+  auto ints = [](const auto& x) { return std::vector<int>(x.begin(), x.end()); };
+  EXPECT_EQ(v.n_points, static_cast<int>(a.points.size() / 3));
+  EXPECT_EQ(v.n_cells, static_cast<int>(a.types.size()));
+  same(v.points, a.points, "points");
+  same(v.displacement, a.displacement, "displacement");
+  same(v.von_mises, a.von_mises, "von_mises");
+  EXPECT_EQ(v.connectivity, ints(a.connectivity));
+  EXPECT_EQ(v.offsets, ints(a.offsets));
+  EXPECT_EQ(v.types, ints(a.types));
+  EXPECT_EQ(v.body_id, ints(a.body_id));
+  // the tests' own C++ decoder (tests/unit/io/vtu_test_reader.h) agrees
+  std::string format;
+  const std::vector<double> pts = vtu_test::VtuTestArray(path, "Points", &format);
+  EXPECT_EQ(format, exact ? "binary" : "ascii");
+  same(pts, a.points, "points (C++ reader)");
+  same(vtu_test::VtuTestArray(path, "von_mises"), a.von_mises, "von_mises (C++ reader)");
+  same(vtu_test::VtuTestArray(path, "displacement"), a.displacement, "displacement (C++ reader)");
+  const std::vector<double> types = vtu_test::VtuTestArray(path, "types");
+  EXPECT_EQ(ints(types), ints(a.types));
+}
+
+// the flexible bar (non-zero displacement and irrational coordinates) and a
+// boxed body and a cylinder, at general poses
+TEST_F(VtkAnimation, BinaryAndAsciiFramesHoldTheWrittenArrays) {
+  const auto reduced = testing::FreeBentBar(3, 3);
+  FlexibleBodyData d;
+  d.reduced = reduced;
+  d.p_WB = Vec3(1, -2, 0.5);
+  d.R_WB = FromRollPitchYaw(Vec3(0.3, -0.2, 0.5));
+  d.w0 = 1e-3 * VecX::LinSpaced(reduced->invariants.n, 1.0, -2.0);
+  Model model;
+  model.AddBody(std::make_unique<FlexibleBody>("bar", d));
+  RigidBodyData rd;
+  rd.mass = 1.0;
+  rd.inertia_C = 0.01 * Mat3::Identity();
+  rd.p_WB = Vec3(0.1, 0.7, -0.3);
+  rd.R_WB = FromRollPitchYaw(Vec3(0.1, 0.9, -0.4));
+  auto box = std::make_unique<RigidBody>("box", rd);
+  box->shape = BoxShape();
+  model.AddBody(std::move(box));
+  model.output.deformation_scale = 7.0;
+  model.Finalize();
+  Shape cyl;
+  cyl.type = Shape::Type::kCylinder;
+  cyl.size = Vec3(0.3, 1.1, 0.0);
+  cyl.p_BS = Vec3(0.2, 0.1, 0.0);
+  for (VtkEncoding e : {VtkEncoding::kBinary, VtkEncoding::kAscii}) {
+    const bool binary = e == VtkEncoding::kBinary;
+    VtkAnimationWriter w((dir_ / (binary ? "bin" : "txt")).string(), model, e);
+    EXPECT_EQ(w.encoding(), e);
+    w.AddShapeMesh(MakeShapeMesh(cyl, 2, "cylinder", 7));
+    State s = model.InitialState();
+    s.t = 0.1 / 3.0;
+    w.WriteFrame(s);
+    const VtkFrameArrays& a = w.last_frame();
+    // box 8 + cylinder 2 (7 + 1) + bar nodes; 1 + 7 + 6 cells
+    const size_t nodes = reduced->mesh.nodes.size();
+    ASSERT_EQ(a.points.size(), 3 * (8 + 16 + nodes));
+    ASSERT_EQ(a.types.size(), 14u);
+    EXPECT_GT(*std::max_element(a.displacement.begin(), a.displacement.end()), 0.0);
+    VtkExpectFileHasArrays(w.FramePath(0), a, binary);
+    // the bar's last node at r + R (rho + s u) (the writer's arrays are right)
+    const Vec3 u = reduced->modes.middleRows(6 * (nodes - 1), 3) * d.w0;
+    const Vec3 p = d.p_WB + d.R_WB * (reduced->mesh.nodes.back().x + 7.0 * u);
+    EXPECT_LT((Vec3(a.points[a.points.size() - 3], a.points[a.points.size() - 2], a.points.back()) - p).norm(),
+              1e-12);
+    EXPECT_EQ(Python(kReadPvd, w.pvd_path()), "1\n0.0333333333333333 frames/frame_00000.vtu\n");
+  }
+  // binary is smaller than ASCII
+  EXPECT_LT(std::filesystem::file_size(dir_ / "bin" / "frames" / "frame_00000.vtu"),
+            std::filesystem::file_size(dir_ / "txt" / "frames" / "frame_00000.vtu"));
+}
+
+TEST_F(VtkAnimation, LinkIsALineBetweenItsMarkers) {
+  const Vec3 p_WB(1, 2, 3);
+  const Mat3 R_WB = FromRollPitchYaw(Vec3(0.3, -0.2, 0.5));
+  auto model = std::make_unique<Model>();
+  RigidBodyData d;
+  d.mass = 1.0;
+  d.inertia_C = 0.01 * Mat3::Identity();
+  d.p_WB = p_WB;
+  d.R_WB = R_WB;
+  d.c_B = Vec3(0.2, 0, 0);
+  model->AddBody(std::make_unique<RigidBody>("a", d));
+  const int mi = model->AddMarker(1, "end", Vec3(0.5, -0.1, 0.2), Mat3::Identity());
+  const int mj = model->AddMarker(0, "fixed", Vec3(-1, 4, 0.5), Mat3::Identity());
+  model->Finalize();
+  VtkAnimationWriter w(dir_.string(), *model);
+  w.AddLink(mi, mj);
+  EXPECT_THROW(w.AddLink(mi, 99), InputError);
+  w.WriteFrame(model->InitialState());
+  EXPECT_THROW(w.AddLink(mi, mj), InputError);
+  const Vtu v = ReadVtu(w.FramePath(0));
+  ASSERT_EQ(v.n_points, 2);
+  ASSERT_EQ(v.n_cells, 1);
+  EXPECT_EQ(v.types, std::vector<int>{3});
+  EXPECT_EQ(v.body_id, std::vector<int>{1});
+  EXPECT_EQ(v.connectivity, (std::vector<int>{0, 1}));
+  // marker positions in the user's body frame moved by the body's pose
+  EXPECT_LT((Vec3(v.points[0], v.points[1], v.points[2]) - (p_WB + R_WB * Vec3(0.5, -0.1, 0.2))).norm(), 1e-12);
+  EXPECT_LT((Vec3(v.points[3], v.points[4], v.points[5]) - Vec3(-1, 4, 0.5)).norm(), 1e-12);
 }
 
 // signed volume of the tetrahedron (a, b, c, d)

@@ -1,12 +1,24 @@
 // Tire force element: analytic pure-slip and vertical values, lift-off,
-// and the tangents K, C against independent finite differences.
+// the tangents K, C against independent finite differences, and the
+// longitudinal relaxation (step in slip ratio on a rig against the
+// first-order lag in travelled distance).
 #include "flexmb/vehicle/tire.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <memory>
+#include <vector>
 
+#include "flexmb/bodies/rigid_body.h"
 #include "flexmb/common/error.h"
+#include "flexmb/joints/motion_driver.h"
+#include "flexmb/joints/prismatic.h"
+#include "flexmb/joints/revolute.h"
+#include "flexmb/math/scalar_function.h"
+#include "flexmb/solver/simulator.h"
+#include "flexmb/vehicle/contact_patch_joint.h"
 
 namespace flexmb::vehicle {
 namespace {
@@ -197,10 +209,8 @@ TEST(Tire, RelaxedPatchAtRestMatchesStatelessResultant) {
 
 // Tangents of the relaxed tire (two markers) against independent central
 // differences of RelaxedWrench with another step; the patch's rotation does
-// not enter.
-TEST(Tire, RelaxedTangentsMatchFiniteDifferences) {
-  TireData d = Truck();
-  d.relaxation_length = 0.6;
+// not enter. `pj_offset`: patch position relative to the wheel centre.
+void TireCheckRelaxedTangents(const TireData& d, const Vec3& pj_offset, const Vec3& vj_offset, ForceEval& e) {
   Tire tire("t", d, 0.8);
   tire.marker_i = 0;
   tire.marker_j = 1;
@@ -209,9 +219,8 @@ TEST(Tire, RelaxedTangentsMatchFiniteDifferences) {
   m.R_WM = (Eigen::AngleAxisd(0.1, Vec3::UnitZ()) * Eigen::AngleAxisd(0.02, Vec3::UnitX())).toRotationMatrix() * m.R_WM;
   m.w_WM = m.R_WM.col(2) * 1.05 * 14.0 / re + Vec3(0.01, 0.0, 0.2);
   MarkerState pm = m;
-  pm.p_WM = m.p_WM + 0.003 * m.R_WM.col(2);
-  pm.v_WM = m.v_WM - 0.3 * m.R_WM.col(2);
-  ForceEval e;
+  pm.p_WM = m.p_WM + m.R_WM * pj_offset;
+  pm.v_WM = m.v_WM + m.R_WM * vj_offset;
   tire.Evaluate(m, pm, 0.0, e);
   auto W = [&](const MarkerState& i, const MarkerState& j) {
     return tire.RelaxedWrench(i.p_WM, i.R_WM, i.v_WM, i.w_WM, j.p_WM, j.v_WM, nullptr);
@@ -249,9 +258,35 @@ TEST(Tire, RelaxedTangentsMatchFiniteDifferences) {
   }
   EXPECT_LT((e.K - K).norm(), 1e-5 * K.norm()) << "K\n" << e.K << "\nFD\n" << K;
   EXPECT_LT((e.C - C).norm(), 1e-5 * C.norm()) << "C\n" << e.C << "\nFD\n" << C;
-  // the carcass spring's block: d f_j / d p_j = -k_y I
-  EXPECT_NEAR(e.K(6, 6), -tire.carcass_stiffness(), 1e-4 * tire.carcass_stiffness());
   EXPECT_EQ(e.K.rightCols<3>().norm() + e.C.rightCols<3>().norm(), 0.0);
+}
+
+TEST(Tire, RelaxedTangentsMatchFiniteDifferences) {
+  TireData d = Truck();
+  d.relaxation_length = 0.6;
+  ForceEval e;
+  TireCheckRelaxedTangents(d, Vec3(0, 0, 0.003), Vec3(0, 0, -0.3), e);
+  // the carcass spring's block: d f_j / d p_j = -k_y I
+  const double ky = 2 * 8.5 * 25e3 * 0.8 / 0.6;
+  EXPECT_NEAR(e.K(6, 6), -ky, 1e-4 * ky);
+}
+
+// Longitudinally relaxed tire: the patch displaced along x_t and y_t and
+// sliding in both directions; the spring block d f_j / d p_j is
+// -(k_y I + (k_x - k_y) x_t x_t^T), analytic.
+TEST(Tire, LongitudinallyRelaxedTangentsMatchFiniteDifferences) {
+  TireData d = Truck();
+  d.relaxation_length = 0.6;
+  d.longitudinal_relaxation_length = 0.3;
+  ForceEval e;
+  // marker frame of Wheel(): x forward, z the spin axis
+  TireCheckRelaxedTangents(d, Vec3(-0.006, 0, 0.003), Vec3(0.2, 0, -0.3), e);
+  const double ky = 2 * 8.5 * 25e3 * 0.8 / 0.6, kx = 2 * 15.0 * 25e3 / 0.3;
+  const Vec3 a = (Eigen::AngleAxisd(0.1, Vec3::UnitZ()) * Eigen::AngleAxisd(0.02, Vec3::UnitX())) * Vec3::UnitY();
+  const Vec3 xt = a.cross(Vec3::UnitZ()).normalized();
+  const Mat3 Kjj = e.K.block<3, 3>(6, 6);
+  const Mat3 ref = -(ky * Mat3::Identity() + (kx - ky) * xt * xt.transpose());
+  EXPECT_LT((Kjj - ref).norm(), 1e-4 * kx) << Kjj << "\nref\n" << ref;
 }
 
 TEST(Tire, RejectsBadData) {
@@ -265,6 +300,199 @@ TEST(Tire, RejectsBadData) {
   d.relaxation_length = 0.5;
   d.patch_mass = 0.0;
   EXPECT_THROW(Tire("t", d, 0.8), InputError);
+  d = Truck();
+  d.longitudinal_relaxation_length = -0.1;
+  EXPECT_THROW(Tire("t", d, 0.8), InputError);
+  // longitudinal relaxation needs the patch body of the lateral one
+  d.longitudinal_relaxation_length = 0.3;
+  EXPECT_THROW(Tire("t", d, 0.8), InputError);
+  d.relaxation_length = 0.6;
+  EXPECT_NO_THROW(Tire("t", d, 0.8));
+}
+
+// Longitudinally relaxed tire with the patch not sliding (v_j = v): the slip
+// is the wheel's, so the resultant force of wheel and patch is the stateless
+// tire's, and the moments about the wheel centre add up to the stateless
+// moment plus u x (slip force) (the slip force acts at the contact point
+// carried along by the patch, u = p_j - p). The wheel feels the carcass
+// spring k_x (u . x_t) along x_t, k_x = count pkx1 Fz0 / sigma_kappa0, with
+// the lever of the contact point (spin moment rho S_x, as for the slip force
+// of the stateless tire); a patch sliding at (v_j - v) . x_t = -Vsx has no
+// longitudinal slip.
+TEST(Tire, LongitudinallyRelaxedPatchAtRestMatchesStatelessResultant) {
+  TireData d = Truck();
+  d.rolling_resistance = 0.0;
+  const Tire stateless("s", d, 0.8);
+  d.relaxation_length = 0.6;
+  d.longitudinal_relaxation_length = 0.3;
+  const Tire relaxed("r", d, 0.8);
+  const double kx = 2 * 15.0 * 25e3 / 0.3;
+  EXPECT_NEAR(relaxed.longitudinal_carcass_stiffness(), kx, 1e-6);
+  const double re = 0.527 - 0.012 / 3.0;
+  MarkerState m = Wheel(0.515, Vec3(14.0, 0.8, 0.0), 0.97 * 14.0 / re);
+  m.R_WM = Eigen::AngleAxisd(0.05, Vec3::UnitZ()).toRotationMatrix() * m.R_WM;
+  m.w_WM = m.R_WM.col(2) * 0.97 * 14.0 / re;
+  const Vec3 a = m.R_WM.col(2);
+  const Vec3 xt = a.cross(Vec3::UnitZ()).normalized(), yt = Vec3::UnitZ().cross(xt);
+  const Vec3 u = -0.008 * xt + 0.004 * a;
+  TireContact cs, cr;
+  const Vec6 ws = stateless.Wrench(m.p_WM, m.R_WM, m.v_WM, m.w_WM, &cs);
+  const Vec12 wr = relaxed.RelaxedWrench(m.p_WM, m.R_WM, m.v_WM, m.w_WM, m.p_WM + u, m.v_WM, &cr);
+  ASSERT_LT(cs.kappa, -0.02);
+  const Vec3 f = wr.segment<3>(0) + wr.segment<3>(6);
+  const Vec3 mom = wr.segment<3>(3) + wr.segment<3>(9) + u.cross(wr.segment<3>(6));
+  const Vec3 fs = cs.fx * xt + cs.fy * yt;
+  EXPECT_LT((f - ws.head<3>()).norm(), 1e-9 * ws.head<3>().norm());
+  EXPECT_LT((mom - ws.tail<3>() - u.cross(fs)).norm(), 1e-9 * ws.tail<3>().norm());
+  EXPECT_NEAR(cr.fx, cs.fx, 1e-9 * std::abs(cs.fx));
+  EXPECT_NEAR(cr.fy, cs.fy, 1e-9 * std::abs(cs.fy));
+  // the wheel feels the spring: k_x u_x along x_t, spin moment rho k_x u_x
+  EXPECT_NEAR(cr.fx_wheel, kx * -0.008, 1e-6);
+  EXPECT_NEAR(cr.fy_wheel, relaxed.carcass_stiffness() * 0.004 * a.dot(yt), 1e-6);
+  // (a backward force at the contact point drives the spin: moment +rho |S_x| a)
+  EXPECT_NEAR(wr.segment<3>(3).dot(a), 0.515 * kx * 0.008, 1e-6 * 0.515 * kx * 0.008);
+  EXPECT_EQ(cs.fx_wheel, cs.fx);
+  // the spring pair alone conserves angular momentum: total moment about the
+  // world origin of the wheel and patch wrenches equals that of the slip and
+  // vertical forces at their points
+  const Vec3 pj = m.p_WM + u;
+  const Vec3 l_total =
+      m.p_WM.cross(wr.segment<3>(0)) + wr.segment<3>(3) + pj.cross(wr.segment<3>(6)) + wr.segment<3>(9);
+  const Vec3 c = cr.contact_W;
+  const double trail = 0.04 * std::cos(std::atan(8.0 * cr.alpha));
+  const Vec3 l_ref = c.cross(cr.fz * Vec3::UnitZ()) + (c + u).cross(fs) -
+                     trail * cr.fy * std::tanh(m.v_WM.dot(xt) / 0.5) * Vec3::UnitZ();
+  EXPECT_LT((l_total - l_ref).norm(), 1e-9 * l_ref.norm());
+  // a patch sliding back at -Vsx cancels the longitudinal slip
+  const double vsx = m.v_WM.dot(xt) - re * m.w_WM.dot(a);
+  TireContact c0;
+  relaxed.RelaxedWrench(m.p_WM, m.R_WM, m.v_WM, m.w_WM, pj, m.v_WM - vsx * xt, &c0);
+  EXPECT_NEAR(c0.kappa, 0.0, 1e-12);
+  EXPECT_NEAR(c0.fx, 0.0, 1e-9 * std::abs(cs.fx));
+}
+
+// one 11R22.5 tire (examples/truck_lane_change/tire_11r22_5.yaml) without
+// rolling resistance and trail, slip regularisation sqrt(Vx^2 + v_low^2) = Vx
+// to 5e-5 at 10 m/s
+TireData TireLongRigData(double sigma_kappa) {
+  TireData d;
+  d.unloaded_radius = 0.527;
+  d.vertical_stiffness = 9e5;
+  d.vertical_damping = 1.5e3;
+  d.nominal_load = 25e3;
+  d.pdx1 = 1.0;
+  d.pkx1 = 15.0;
+  d.pdy1 = 1.0;
+  d.pey1 = -0.2;
+  d.pky1 = 8.5;
+  d.rolling_resistance = 0.0;
+  d.trail = 0.0;
+  d.low_speed = 0.1;
+  d.relaxation_length = 0.6;
+  d.longitudinal_relaxation_length = sigma_kappa;
+  return d;
+}
+
+// Rig: a carrier driven along world x at V (prismatic on the ground with a
+// motion driver), the wheel centre at the height of the nominal load, the
+// wheel's spin prescribed (a motion driver on its bearing) at
+// Omega = V (1 + kappa0) / Re from t = 0: a step in slip ratio. The patch
+// slides on a ContactPatchJoint and starts with the velocity that makes its
+// slip zero (force-free start of the massless carcass). Returns (travelled
+// distance, Fx on the wheel) every dt and the stateless tire's Fx at kappa0.
+std::vector<std::array<double, 2>> TireLongStepRun(const TireData& td, double V, double kappa0, double t_end,
+                                                   double dt, double* fx_steady) {
+  Model m;
+  m.gravity_W.setZero();
+  m.solver.dt = dt;
+  m.solver.rho_inf = 0.8;
+  const double zc = td.unloaded_radius - td.nominal_load / (td.count * td.vertical_stiffness);
+  const Vec3 c(0, 0, zc);
+  Mat3 axis_x;  // z along world x
+  axis_x << 0, 0, 1, 1, 0, 0, 0, 1, 0;
+  Mat3 spin;  // z along world y, x forward
+  spin << 1, 0, 0, 0, 0, 1, 0, -1, 0;
+  const double re = td.unloaded_radius - td.rolling_radius_factor * (td.unloaded_radius - zc);
+  const double omega = V * (1 + kappa0) / re;
+  const Vec3 v(V, 0, 0), w(0, omega, 0);
+  auto body = [&](const char* name, double mass, const Vec3& vel, const Vec3& om) {
+    RigidBodyData b;
+    b.mass = mass;
+    b.inertia_C = Mat3::Identity() * (0.1 * mass);
+    b.c_B = c;
+    b.v_WB = vel - om.cross(c);
+    b.w_WB = om;
+    return m.AddBody(std::make_unique<RigidBody>(name, b));
+  };
+  auto ramp = [](double rate) {
+    return std::make_shared<TableFunction>(std::vector<double>{0.0, 1.0}, std::vector<double>{0.0, rate},
+                                           TableFunction::Interpolation::kLinear, true);
+  };
+  const int carrier = body("carrier", 100.0, v, Vec3::Zero());
+  const int wheel = body("wheel", 50.0, v, w);
+  // zero patch slip at t = 0: (v_patch - v) . x_t = -Vsx = kappa0 V
+  const int patch = body("patch", td.patch_mass, Vec3(V * (1 + kappa0), 0, 0), Vec3::Zero());
+  const int slide = m.AddJoint(std::make_unique<PrismaticJoint>("slide"), m.AddMarker(0, "rail", c, axis_x),
+                               m.AddMarker(carrier, "rail", c, axis_x));
+  m.AddJoint(std::make_unique<MotionDriver>("drive", m.joints[slide].get(), 0, ramp(V)), m.joints[slide]->marker_i,
+             m.joints[slide]->marker_j);
+  const int bearing = m.AddJoint(std::make_unique<RevoluteJoint>("bearing"), m.AddMarker(carrier, "bearing", c, spin),
+                                 m.AddMarker(wheel, "bearing", c, spin));
+  m.AddJoint(std::make_unique<MotionDriver>("spin", m.joints[bearing].get(), 0, ramp(omega)),
+             m.joints[bearing]->marker_i, m.joints[bearing]->marker_j);
+  const int wm = m.AddMarker(wheel, "centre", c, spin);
+  const int pm = m.AddMarker(patch, "centre", c, spin);
+  m.AddJoint(std::make_unique<ContactPatchJoint>("carcass"), m.AddMarker(carrier, "carcass", c, spin), pm);
+  const int tire = m.AddForce(std::make_unique<Tire>("tire", td, 1.0), wm, pm);
+  TireData stateless = td;
+  stateless.relaxation_length = 0.0;
+  stateless.longitudinal_relaxation_length = 0.0;
+  TireContact ss;
+  Tire("probe", stateless, 1.0).Wrench(c, spin, v, w, &ss);
+  *fx_steady = ss.fx;
+  m.Finalize();
+  Simulator sim(m);
+  sim.Initialize();
+  std::vector<std::array<double, 2>> out;
+  sim.Run(t_end, dt, [&](const State& st, const Workspace& ws) {
+    const MarkerState& wc = ws.markers[wm];
+    const MarkerState& pc = ws.markers[pm];
+    TireContact tc;
+    static_cast<const Tire&>(*m.forces[tire]).RelaxedWrench(wc.p_WM, wc.R_WM, wc.v_WM, wc.w_WM, pc.p_WM, pc.v_WM, &tc);
+    out.push_back({V * st.t, tc.fx_wheel});
+  });
+  return out;
+}
+
+// Step in slip ratio kappa0 = -0.002 (braking) at 10 m/s, sigma_kappa = 0.3 m.
+// Reference: the single-contact-point transient model (Pacejka, Tire and
+// Vehicle Dynamics, 3rd ed., sec. 7.2.1) in the longitudinal direction,
+// patch mass neglected: sigma_kappa dFx/dx + Fx = Fx_ss with sigma_kappa =
+// Kx / k_x, so Fx(x) = Fx_ss (1 - exp(-x / sigma_kappa)). Deviations: the patch
+// mass (relative m V^2 / (Kx sigma_kappa) = 4e-4), the Magic Formula's
+// curvature at Bx kappa = 0.018 (~2e-4), the slip regularisation (5e-5) and
+// the time step (1 ms against sigma_kappa / V = 30 ms). Tolerance 3e-3 of
+// Fx_ss; an error of 2 % in sigma_kappa would show as 7e-3.
+TEST(Tire, LongitudinalSlipStepFollowsFirstOrderLagInDistance) {
+  const double sigma = 0.3, V = 10.0, kappa0 = -0.002;
+  double fss = 0.0;
+  const std::vector<std::array<double, 2>> s =
+      TireLongStepRun(TireLongRigData(sigma), V, kappa0, 5 * sigma / V, 1e-3, &fss);
+  ASSERT_LT(fss, -500.0);
+  ASSERT_GT(s.size(), 140u);
+  EXPECT_NEAR(s.front()[1], 0.0, 1e-9 * std::abs(fss));
+  double worst = 0.0, x63 = 0.0;
+  const double target = 1.0 - std::exp(-1.0);
+  for (size_t k = 0; k < s.size(); ++k) {
+    const double ref = fss * (1.0 - std::exp(-s[k][0] / sigma));
+    worst = std::max(worst, std::abs(s[k][1] - ref) / std::abs(fss));
+    if (k == 0) continue;
+    const double f0 = s[k - 1][1] / fss, f1 = s[k][1] / fss;
+    if (f0 < target && f1 >= target) x63 = s[k - 1][0] + (target - f0) / (f1 - f0) * (s[k][0] - s[k - 1][0]);
+  }
+  EXPECT_LT(worst, 3e-3);
+  // the distance to 63.2 % of the steady force is sigma_kappa (2 %)
+  EXPECT_NEAR(x63, sigma, 0.02 * sigma);
 }
 
 }  // namespace
