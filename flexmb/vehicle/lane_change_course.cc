@@ -12,17 +12,18 @@ LaneChangeCourse::LaneChangeCourse(const LaneChangeCourseData& d) : data_(d) {
   for (double v : {d.section1_length, d.section2_length, d.section1_width, d.section3_width})
     if (!(v > 0) || !std::isfinite(v))
       throw InputError("lane-change course: lengths and widths must be positive", {"", 0, "course"});
-  if (!std::isfinite(d.offset)) throw InputError("lane-change course: offset must be finite", {"", 0, "course"});
+  if (!std::isfinite(d.offset) || !std::isfinite(d.start_x)) throw InputError("lane-change course: offset and start must be finite", {"", 0, "course"});
 }
 
-int LaneChangeCourse::Section(double x) const {
+int LaneChangeCourse::Section(double x_W) const {
+  const double x = x_W - data_.start_x;
   if (x < data_.section1_length) return 1;
   if (x < data_.section1_length + data_.section2_length) return 2;
   return 3;
 }
 
 double LaneChangeCourse::CentreLine(double x) const {
-  const double u = std::clamp((x - data_.section1_length) / data_.section2_length, 0.0, 1.0);
+  const double u = std::clamp((x - data_.start_x - data_.section1_length) / data_.section2_length, 0.0, 1.0);
   return data_.offset * 0.5 * (1.0 - std::cos(std::numbers::pi * u));
 }
 

@@ -7,7 +7,7 @@
 namespace flexmb::vehicle {
 
 /// Geometry of the corridor in the road plane: x along the original lane
-/// from the start of section 1, y to the left [m]. Defaults and their
+/// (world x; section 1 begins at start_x), y to the left [m]. Defaults and their
 /// reasoning: examples/truck_lane_change/README.md.
 struct LaneChangeCourseData {
   double section1_length = 20.0;  ///< L0: straight before the lane change [m]
@@ -15,6 +15,9 @@ struct LaneChangeCourseData {
   double section1_width = 3.0;    ///< corridor width in section 1 [m]
   double section3_width = 3.0;    ///< corridor width in section 3 [m]
   double offset = 3.5;            ///< lateral offset of the section-3 centre line [m], to the left
+  /// World x where section 1 begins [m]; the road before it is straight
+  /// with section 1's corridor (the truck's run-up).
+  double start_x = 0.0;
 };
 
 /// The corridor and its centre line. The centre line is y = 0 in section 1,
@@ -28,7 +31,7 @@ class LaneChangeCourse {
   explicit LaneChangeCourse(const LaneChangeCourseData& data);
   /// Centre-line lateral position y(x) [m].
   double CentreLine(double x) const;
-  /// Section (1, 2, 3) containing x; x < 0 counts as section 1.
+  /// Section (1, 2, 3) containing world x; x < start_x counts as section 1.
   int Section(double x) const;
   /// Signed distance of the point (x, y) inside the corridor to its nearest
   /// line [m]: positive inside, negative outside.

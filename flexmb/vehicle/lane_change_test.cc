@@ -39,6 +39,7 @@ struct EndOfTest {};
 /// Everything a lane-change file holds.
 struct LaneChangeFile {
   double speed_kmh = 55.0;
+  double run_up_time = 1.0;
   std::string frame = "rigid";
   FrameReductionData reduction;
   double mu = 0.8;
@@ -77,9 +78,11 @@ LaneChangeFile ReadFile(const std::string& path) {
   ctx.CheckKeys(root, {"lane_change_test", "truck", "name", "note"});
   const YAML::Node t = root["lane_change_test"];
   ctx.SetEntity("lane_change_test");
-  ctx.CheckKeys(t, {"entry_speed_kmh", "frame", "frame_modes", "frame_damping", "frame_keep_modes", "road_mu", "course", "driver", "solver",
+  ctx.CheckKeys(t, {"entry_speed_kmh", "run_up_time", "frame", "frame_modes", "frame_damping", "frame_keep_modes", "road_mu", "course", "driver", "solver",
                      "animation", "animation_fps", "animation_deformation_scale"});
   f.speed_kmh = ctx.Double(t, "entry_speed_kmh", f.speed_kmh);
+  f.run_up_time = ctx.Double(t, "run_up_time", f.run_up_time);
+  if (!(f.run_up_time >= 0)) ctx.Fail(t["run_up_time"], "run_up_time must be >= 0");
   f.frame = ctx.String(t, "frame", f.frame);
   FrameReductionData& fr = f.reduction;
   fr.normal_modes = ctx.Integer(t, "frame_modes", fr.normal_modes);
@@ -309,6 +312,8 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
   if (opt.speed_kmh) f.speed_kmh = *opt.speed_kmh;
   if (opt.frame) f.frame = *opt.frame;
   if (opt.dt) f.dt = *opt.dt;
+  if (opt.run_up_time) f.run_up_time = *opt.run_up_time;
+  if (!(f.run_up_time >= 0) || !std::isfinite(f.run_up_time)) throw InputError("run-up time must be >= 0 s");
   if (!std::isfinite(f.speed_kmh) || f.speed_kmh < 0) throw InputError("entry speed must be >= 0 km/h");
   if (f.frame != "rigid" && f.frame != "elastic") throw InputError("frame must be 'rigid' or 'elastic', got '" + f.frame + "'");
   if (!(f.dt > 0)) throw InputError("dt must be positive");
@@ -320,9 +325,14 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
   if (f.animation && opt.out_dir.empty()) f.animation = false;
 
   const double v0 = f.speed_kmh / 3.6;
+  const bool by_time = v0 <= 0.1;
+  // the truck starts at x = 0 and reaches section 1 after the run-up
+  f.course.start_x = by_time ? 0.0 : v0 * f.run_up_time;
+  const double x_start = f.course.start_x;
   const LaneChangeCourse course(f.course);
   Driver driver(f.driver, course, v0);
   LaneChangeResult r;
+  r.run_up = x_start;
   r.frame = f.frame;
   Model model;
   if (!opt.out_dir.empty()) {
@@ -359,8 +369,7 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
   r.min_axle_load[0] = r.min_axle_load[1] = 1e300;
   r.min_corridor_margin = 1e300;
   const double distance = opt.stop_distance ? std::min(*opt.stop_distance, course.TestDistance()) : course.TestDistance();
-  const bool by_time = v0 <= 0.1;
-  const double t_limit = by_time ? 10.0 : 1.5 * distance / v0 + 5.0;
+  const double t_limit = by_time ? 10.0 : 1.5 * distance / v0 + f.run_up_time + 5.0;
 
   std::FILE* csv = nullptr;
   if (!opt.out_dir.empty()) {
@@ -385,7 +394,6 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
   const auto wall0 = std::chrono::steady_clock::now();
   const std::clock_t cpu0 = std::clock();
   double next_row = 0.0;
-  const double x0 = 0.0;
   const Body* frame_body = model.bodies[h.frame_body].get();
   const Marker& frame_ref = model.markers[static_cast<size_t>(h.frame_ref)];
   FrameResponse frame_response(h.elastic ? static_cast<const FlexibleBody*>(frame_body) : nullptr, csv);
@@ -430,8 +438,8 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
         const Joint& j = *model.joints[h.kingpin_joint[k]];
         return j.Coordinate(0, ws.markers[j.marker_i], ws.markers[j.marker_j], nullptr);
       };
-      // the settling of the first instant is not part of the test
-      const bool record = st.t > 0.0;
+      // the settling in the run-up is not part of the test
+      const bool record = st.t > 0.0 && (by_time || pf.x() >= x_start);
       if (record) {
         r.min_corridor_margin = std::min(r.min_corridor_margin, margin);
         r.max_lateral_acceleration = std::max(r.max_lateral_acceleration, std::abs(ay));
@@ -444,7 +452,7 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
         if ((lift[0] || lift[1] || lift[2] || lift[3]) && r.lift_off_time < 0) r.lift_off_time = st.t;
       }
       r.t_end = st.t;
-      r.distance = pf.x() - x0;
+      r.distance = pf.x() - x_start;
       const bool done = by_time ? st.t >= 10.0 - 1e-9 : r.distance >= distance;
       const bool row = st.t >= next_row - 1e-9 || done;
       if (row) next_row = st.t + f.output_interval;
@@ -453,7 +461,7 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
             line, sizeof(line),
             "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%d,%d,%d,"
             "%d,%.6g,%.6g,%.6g,%.6g",
-            st.t, pf.x(), pf.y(), course.CentreLine(pf.x()), speed * 3.6, ay, *driver.steering_wheel_angle() * kDeg,
+            st.t, pf.x() - x_start, pf.y(), course.CentreLine(pf.x()), speed * 3.6, ay, *driver.steering_wheel_angle() * kDeg,
             driver.road_wheel_angle() * kDeg, rpy.x() * kDeg, rpy.y() * kDeg, yaw * kDeg, yaw_rate * kDeg, front / 1e3,
             rear / 1e3, fz[0] / 1e3, fz[1] / 1e3, fz[2] / 1e3, fz[3] / 1e3, lift[0], lift[1], lift[2], lift[3], margin,
             *driver.drive_torque() / 1e3, KingpinAngle(0) * kDeg, KingpinAngle(1) * kDeg);
@@ -574,6 +582,7 @@ std::string LaneChangeJson(const LaneChangeResult& r) {
   add("completed", b(r.completed));
   add("entry_speed_kmh", JsonNumber(r.entry_speed_kmh));
   add("distance", JsonNumber(r.distance));
+  add("run_up", JsonNumber(r.run_up));
   add("t_end", JsonNumber(r.t_end));
   add("corridor_exit", b(r.corridor_exit_time >= 0));
   add("corridor_exit_time", JsonNumber(r.corridor_exit_time));

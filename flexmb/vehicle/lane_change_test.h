@@ -30,9 +30,14 @@ struct LaneChangeOptions {
   /// file's frame (ReduceTruckFrame of the same file's truck and modes; a
   /// bisection or a benchmark reduces once). Not written to frame.h5.
   std::shared_ptr<const reduction::ReducedBody> frame_body;
-  /// End the run when the front axle has travelled this far [m] (a shorter
+  /// End the run when the front axle has travelled this far from the start
+  /// of section 1 [m] (a shorter
   /// run for tests); the run counts as completed when it gets there.
   std::optional<double> stop_distance;
+  /// Time [s] at the entry speed on straight road before section 1 (the
+  /// settling of the start: frame sag, suspension, tire patches, speed
+  /// control; not monitored), overrides the file's `run_up_time` (1 s).
+  std::optional<double> run_up_time;
   /// Write the ParaView animation to out_dir/animation (anim.pvd and
   /// frames/): overrides the file's `animation` (default off).
   std::optional<bool> animation;
@@ -51,7 +56,8 @@ struct LaneChangeResult {
   bool rolled_over = false;           ///< the run ended because |roll| exceeded 45 deg
   std::string message;                ///< error message if the simulation failed
   double entry_speed_kmh = 0.0;       ///< [km/h]
-  double distance = 0.0;              ///< front-axle travel reached [m]
+  double distance = 0.0;              ///< front-axle travel reached from the start of section 1 [m]
+  double run_up = 0.0;                ///< straight road before section 1, run_up_time * entry speed [m]
   double t_end = 0.0;                 ///< simulated time [s]
   double corridor_exit_time = -1.0;   ///< first time a gauge point left the corridor [s], -1: never
   double lift_off_time = -1.0;        ///< first time a tire lost contact [s], -1: never

@@ -1,5 +1,6 @@
 #include "flexmb/vehicle/truck_animation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -60,8 +61,8 @@ ShapeMesh TruckAnimCorridor(const LaneChangeCourse& course) {
   const LaneChangeCourseData& c = course.data();
   ShapeMesh m;
   m.body = 0;
-  const double x_start = -10.0, x_end = course.TestDistance() + 10.0;
-  const double x2 = c.section1_length, x3 = c.section1_length + c.section2_length;
+  const double x_start = std::min(0.0, c.start_x) - 10.0, x_end = c.start_x + course.TestDistance() + 10.0;
+  const double x2 = c.start_x + c.section1_length, x3 = x2 + c.section2_length;
   TruckAnimRoadLine(m, x_start, x2, 0.5 * c.section1_width);
   TruckAnimRoadLine(m, x_start, x2, -0.5 * c.section1_width);
   TruckAnimRoadLine(m, x3, x_end, c.offset + 0.5 * c.section3_width);

@@ -15,30 +15,10 @@
 #include "flexmb/math/scalar_function.h"
 #include "flexmb/solver/simulator.h"
 #include "flexmb/vehicle/tire.h"
+#include "tests/unit/vehicle/tire_test_data.h"
 
 namespace flexmb::vehicle {
 namespace tire_relaxation_test {
-
-// one 11R22.5 tire (examples/truck_lane_change/tire_11r22_5.yaml), without
-// rolling resistance and trail; a small slip regularisation speed so that
-// sqrt(Vx^2 + v_low^2) = Vx to 5e-5 at 10 m/s
-TireData RelaxTire(double sigma) {
-  TireData d;
-  d.unloaded_radius = 0.527;
-  d.vertical_stiffness = 9e5;
-  d.vertical_damping = 1.5e3;
-  d.nominal_load = 25e3;
-  d.pdy1 = 1.0;
-  d.pey1 = -0.2;
-  d.pky1 = 8.5;
-  d.pky2 = 2.0;
-  d.rolling_resistance = 0.0;
-  d.trail = 0.0;
-  d.low_speed = 0.1;
-  d.relaxation_length = sigma;
-  d.patch_mass = 0.5;
-  return d;
-}
 
 struct RelaxSample {
   double x = 0.0;         // travelled distance [m]
@@ -136,7 +116,7 @@ std::vector<RelaxSample> RunStepSteer(const TireData& td, double V, double psi, 
 TEST(TireRelaxation, StepSteerFollowsFirstOrderLagInDistance) {
   const double sigma = 0.6, V = 10.0, psi = 0.2 * M_PI / 180;
   double fss = 0.0;
-  const std::vector<RelaxSample> s = RunStepSteer(RelaxTire(sigma), V, psi, 5 * sigma / V, 1e-3, &fss);
+  const std::vector<RelaxSample> s = RunStepSteer(Tire11R22Rig(sigma), V, psi, 5 * sigma / V, 1e-3, &fss);
   ASSERT_GT(std::abs(fss), 100.0);
   ASSERT_GT(s.size(), 250u);
   EXPECT_NEAR(s.front().fy_wheel, 0.0, 1e-9 * std::abs(fss));
@@ -161,8 +141,8 @@ TEST(TireRelaxation, StepSteerFollowsFirstOrderLagInDistance) {
 TEST(TireRelaxation, ShortRelaxationLengthRecoversStatelessTire) {
   const double V = 10.0, psi = 0.2 * M_PI / 180;
   double fss = 0.0, fss0 = 0.0;
-  const std::vector<RelaxSample> s = RunStepSteer(RelaxTire(0.005), V, psi, 0.05, 1e-3, &fss);
-  const std::vector<RelaxSample> s0 = RunStepSteer(RelaxTire(0.0), V, psi, 0.05, 1e-3, &fss0);
+  const std::vector<RelaxSample> s = RunStepSteer(Tire11R22Rig(0.005), V, psi, 0.05, 1e-3, &fss);
+  const std::vector<RelaxSample> s0 = RunStepSteer(Tire11R22Rig(0.0), V, psi, 0.05, 1e-3, &fss0);
   EXPECT_EQ(fss, fss0);
   for (const RelaxSample& r : s0) EXPECT_NEAR(r.fy_wheel, fss0, 1e-6 * std::abs(fss0));
   for (const RelaxSample& r : s) {

@@ -50,6 +50,28 @@ void ElasticAgainstRigid(double kmh) {
   EXPECT_NEAR(e.max_roll_deg, r.max_roll_deg, 0.1 * r.max_roll_deg);
 }
 
+// the run-up (straight road before section 1, for the settling of the
+// start) moves the course and nothing else: a run without it reaches the
+// same corridor margin and maxima through the lane change; a driver or
+// monitor still on the unshifted course would steer or measure 15 m off
+TEST(TruckValidation, RunUpShiftsOnlyTheStart) {
+  LaneChangeOptions o;
+  o.file = TruckFile();
+  o.speed_kmh = 55.0;
+  o.frame = "rigid";
+  o.stop_distance = 45.0;
+  const LaneChangeResult with = RunLaneChange(o);
+  o.run_up_time = 0.0;
+  const LaneChangeResult without = RunLaneChange(o);
+  EXPECT_NEAR(with.run_up, 55.0 / 3.6, 1e-12);
+  EXPECT_EQ(without.run_up, 0.0);
+  EXPECT_NEAR(with.distance, without.distance, 0.1);
+  EXPECT_NEAR(with.t_end - without.t_end, 1.0, 0.01);
+  EXPECT_NEAR(with.min_corridor_margin, without.min_corridor_margin, 0.01);
+  EXPECT_NEAR(with.max_lateral_acceleration, without.max_lateral_acceleration, 0.02 * without.max_lateral_acceleration);
+  EXPECT_NEAR(with.max_roll_deg, without.max_roll_deg, 0.02 * without.max_roll_deg);
+}
+
 TEST(TruckValidation, LaneChangeAt30KmhRunsToTheEnd) { RunAt(30.0, "rigid"); }
 TEST(TruckValidation, LaneChangeAt55KmhRunsToTheEnd) { RunAt(55.0, "rigid"); }
 TEST(TruckValidation, ElasticFrameLaneChangeAt30Kmh) { ElasticAgainstRigid(30.0); }

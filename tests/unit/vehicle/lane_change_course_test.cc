@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "flexmb/common/error.h"
 #include "flexmb/vehicle/driver.h"
 #include "flexmb/vehicle/lane_change_course.h"
 
@@ -22,6 +23,22 @@ TEST(LaneChangeCourse, CentreLineMarginAndDistance) {
   EXPECT_NEAR(c.Margin(50, 3.0), 1.25, 1e-12);    // section 3: 1.75 .. 5.25
   EXPECT_NEAR(c.Margin(30, -1.0), 0.5, 1e-12);    // section 2: -1.5 .. 5.25
   EXPECT_DOUBLE_EQ(c.TestDistance(), (20 + 4 * 20) * 1.2);
+}
+
+TEST(LaneChangeCourse, StartShiftsTheWholeCourse) {
+  // the same course beginning at world x = 15 (a run-up of 15 m)
+  const LaneChangeCourse c0(LaneChangeCourseData{20, 20, 3.0, 3.5, 3.5});
+  const LaneChangeCourse c(LaneChangeCourseData{20, 20, 3.0, 3.5, 3.5, 15.0});
+  for (double x : {-30.0, -1.0, 0.0, 14.9, 19.99, 25.0, 31.0, 39.99, 40.0, 100.0}) {
+    EXPECT_EQ(c.Section(x + 15), c0.Section(x)) << x;
+    EXPECT_EQ(c.CentreLine(x + 15), c0.CentreLine(x)) << x;
+    for (double y : {-2.0, 0.3, 2.0, 4.0}) EXPECT_EQ(c.Margin(x + 15, y), c0.Margin(x, y)) << x << " " << y;
+  }
+  EXPECT_EQ(c.Section(10), 1);  // the run-up counts as section 1
+  EXPECT_DOUBLE_EQ(c.CentreLine(45), 1.75);
+  EXPECT_DOUBLE_EQ(c.TestDistance(), c0.TestDistance());
+  LaneChangeCourseData bad{20, 20, 3.0, 3.5, 3.5, std::nan("")};
+  EXPECT_THROW(LaneChangeCourse{bad}, InputError);
 }
 
 TEST(Driver, NeutralInSection1RateLimitedInSection2) {

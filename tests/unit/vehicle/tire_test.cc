@@ -19,22 +19,16 @@
 #include "flexmb/math/scalar_function.h"
 #include "flexmb/solver/simulator.h"
 #include "flexmb/vehicle/contact_patch_joint.h"
+#include "tests/unit/vehicle/tire_test_data.h"
 
 namespace flexmb::vehicle {
 namespace {
 
+// a twin set of 11R22.5 tires
 TireData Truck() {
-  TireData d;
+  TireData d = Tire11R22();
   d.count = 2;
-  d.unloaded_radius = 0.527;
-  d.vertical_stiffness = 9e5;
-  d.vertical_damping = 1.5e3;
-  d.nominal_load = 25e3;
-  d.pky1 = 8.5;
-  d.pky2 = 2.0;
-  d.pdy1 = 1.0;
   d.pdy2 = -0.1;
-  d.pey1 = -0.2;
   return d;
 }
 
@@ -371,24 +365,12 @@ TEST(Tire, LongitudinallyRelaxedPatchAtRestMatchesStatelessResultant) {
   EXPECT_NEAR(c0.fx, 0.0, 1e-9 * std::abs(cs.fx));
 }
 
-// one 11R22.5 tire (examples/truck_lane_change/tire_11r22_5.yaml) without
-// rolling resistance and trail, slip regularisation sqrt(Vx^2 + v_low^2) = Vx
-// to 5e-5 at 10 m/s
+// one 11R22.5 tire on the rig (lateral relaxation 0.6 m), longitudinal
+// pure-slip coefficients and relaxation length sigma_kappa
 TireData TireLongRigData(double sigma_kappa) {
-  TireData d;
-  d.unloaded_radius = 0.527;
-  d.vertical_stiffness = 9e5;
-  d.vertical_damping = 1.5e3;
-  d.nominal_load = 25e3;
+  TireData d = Tire11R22Rig(0.6);
   d.pdx1 = 1.0;
   d.pkx1 = 15.0;
-  d.pdy1 = 1.0;
-  d.pey1 = -0.2;
-  d.pky1 = 8.5;
-  d.rolling_resistance = 0.0;
-  d.trail = 0.0;
-  d.low_speed = 0.1;
-  d.relaxation_length = 0.6;
   d.longitudinal_relaxation_length = sigma_kappa;
   return d;
 }
@@ -493,6 +475,31 @@ TEST(Tire, LongitudinalSlipStepFollowsFirstOrderLagInDistance) {
   EXPECT_LT(worst, 3e-3);
   // the distance to 63.2 % of the steady force is sigma_kappa (2 %)
   EXPECT_NEAR(x63, sigma, 0.02 * sigma);
+}
+
+// asked for the wrench only (ForceEval::tangents false, residual
+// evaluations with a kept iteration matrix): the same wrench as with
+// tangents, K and C left as they were
+TEST(TireWrenchOnly, SameWrenchAsWithTangentsAndTangentsUntouched) {
+  const Tire tire("t", Truck(), 0.8);
+  // rolling at 15 m/s with 3 degrees of slip angle and some longitudinal slip
+  MarkerState m;
+  m.p_WM = Vec3(1.0, 2.0, 0.515);
+  m.R_WM << 1, 0, 0, 0, 0, 1, 0, -1, 0;
+  m.v_WM = Vec3(15.0, 15.0 * std::tan(3.0 * M_PI / 180), 0.0);
+  m.w_WM = Vec3(0, 15.0 / 0.51, 0);
+  ForceEval full;
+  tire.Evaluate(m, MarkerState{}, 0.0, full);
+  ASSERT_GT(full.wrench.head<3>().norm(), 1e3);
+  ASSERT_GT(full.K.norm(), 0.0);
+  ForceEval only;
+  only.tangents = false;
+  only.K.setConstant(7.0);
+  only.C.setConstant(-3.0);
+  tire.Evaluate(m, MarkerState{}, 0.0, only);
+  EXPECT_EQ((only.wrench - full.wrench).norm(), 0.0);
+  EXPECT_EQ(only.K, Mat12::Constant(7.0));
+  EXPECT_EQ(only.C, Mat12::Constant(-3.0));
 }
 
 }  // namespace
