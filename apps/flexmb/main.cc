@@ -108,7 +108,11 @@ int main(int argc, char** argv) {
   max_speed->add_option("--frame", frame, "frame model, rigid or elastic (default: the file's)");
 
   CLI::App* check = app.add_subcommand("check", "validate a model file and report its constraints");
-  check->add_option("model", model, "model file (YAML)")->required();
+  check->add_option("model", model, "model file or lane-change file (YAML)")->required();
+  std::optional<std::string> check_frame;
+  std::optional<double> check_speed;
+  check->add_option("--frame", check_frame, "lane-change file: frame model, rigid or elastic (default: the file's)");
+  check->add_option("--speed", check_speed, "lane-change file: entry speed [km/h] (default: the file's)");
 
   CLI::App* fe = app.add_subcommand("fe", "finite-element models of parts: modes, info, export");
   fe->require_subcommand(1);
@@ -207,6 +211,14 @@ int main(int argc, char** argv) {
   if (reduce->parsed()) return Guarded([&] { return flexmb::io::Reduce(reduce_opt, std::cout); });
   if (body_info->parsed()) return Guarded([&] { return flexmb::io::BodyInfo(body_info_opt, std::cout); });
   return Guarded([&] {
+    if (flexmb::vehicle::IsLaneChangeFile(model)) {
+      flexmb::vehicle::LaneChangeOptions o;
+      o.file = model;
+      o.frame = check_frame;
+      o.speed_kmh = check_speed;
+      flexmb::vehicle::CheckLaneChange(o, stdout);
+      return 0;
+    }
     flexmb::CheckModel(model, stdout);
     return 0;
   });

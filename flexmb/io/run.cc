@@ -242,7 +242,10 @@ std::string SummaryJson(const RunSummary& s) {
 
 void CheckModel(const std::string& model_path, std::FILE* out) {
   std::unique_ptr<Model> model = LoadModelFile(model_path);
-  const Model& m = *model;
+  ReportModel(*model, model_path, out);
+}
+
+void ReportModel(const Model& m, const std::string& model_path, std::FILE* out) {
   std::fprintf(out, "model '%s' (%s)\n", m.name.c_str(), model_path.c_str());
   std::fprintf(out, "bodies: %d (plus ground)\n", static_cast<int>(m.bodies.size()) - 1);
   for (size_t b = 1; b < m.bodies.size(); ++b) std::fprintf(out, "  '%s'\n", m.bodies[b]->name().c_str());

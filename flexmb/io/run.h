@@ -82,4 +82,13 @@ std::string SummaryJson(const RunSummary& summary);
 /// and the redundancy warnings. Throws InputError / NumericalError.
 void CheckModel(const std::string& model_path, std::FILE* out);
 
+class Model;
+
+/// The report of CheckModel for a model built in code (e.g. the truck of a
+/// lane-change file): bodies, joints with their equations, forces, sensors,
+/// then the constraint analysis of the initialization (degrees of freedom,
+/// redundant equations, warnings). `model_path` names the file in the
+/// report and in errors without a file of their own.
+void ReportModel(const Model& model, const std::string& model_path, std::FILE* out);
+
 }  // namespace flexmb

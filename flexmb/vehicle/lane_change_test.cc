@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <numbers>
 #include <stdexcept>
 
@@ -18,6 +19,7 @@
 #include "flexmb/io/body_file.h"
 #include "flexmb/io/json_text.h"
 #include "flexmb/io/parse_context.h"
+#include "flexmb/io/run.h"
 #include "flexmb/reduction/craig_bampton.h"
 #include "flexmb/reduction/stress_modes.h"
 #include "flexmb/solver/simulator.h"
@@ -307,8 +309,26 @@ std::shared_ptr<reduction::ReducedBody> ReduceTruckFrame(const TruckData& d, con
   return std::make_shared<reduction::ReducedBody>(reduction::ReduceCraigBampton(model, o));
 }
 
-LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
-  LaneChangeFile f = ReadFile(opt.file);
+namespace {
+
+/// A run's set-up: the file with the caller's overrides, the course, the
+/// driver and the finalized truck model (the elastic frame reduced, or the
+/// caller's). Built in place: the driver refers to the course.
+struct LaneChangeSetup {
+  LaneChangeFile f;
+  double v0 = 0.0;
+  bool by_time = false;  // entry speed <= 0.1 m/s: the 10 s standing test
+  std::unique_ptr<LaneChangeCourse> course;
+  std::unique_ptr<Driver> driver;
+  Model model;
+  TruckHandles h;
+  double reduction_wall_time_s = 0.0;
+};
+
+std::unique_ptr<LaneChangeSetup> SetUpLaneChange(const LaneChangeOptions& opt) {
+  auto setup = std::make_unique<LaneChangeSetup>();
+  LaneChangeFile& f = setup->f;
+  f = ReadFile(opt.file);
   if (opt.speed_kmh) f.speed_kmh = *opt.speed_kmh;
   if (opt.frame) f.frame = *opt.frame;
   if (opt.dt) f.dt = *opt.dt;
@@ -324,17 +344,13 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
   }
   if (f.animation && opt.out_dir.empty()) f.animation = false;
 
-  const double v0 = f.speed_kmh / 3.6;
-  const bool by_time = v0 <= 0.1;
+  setup->v0 = f.speed_kmh / 3.6;
+  setup->by_time = setup->v0 <= 0.1;
   // the truck starts at x = 0 and reaches section 1 after the run-up
-  f.course.start_x = by_time ? 0.0 : v0 * f.run_up_time;
-  const double x_start = f.course.start_x;
-  const LaneChangeCourse course(f.course);
-  Driver driver(f.driver, course, v0);
-  LaneChangeResult r;
-  r.run_up = x_start;
-  r.frame = f.frame;
-  Model model;
+  f.course.start_x = setup->by_time ? 0.0 : setup->v0 * f.run_up_time;
+  setup->course = std::make_unique<LaneChangeCourse>(f.course);
+  setup->driver = std::make_unique<Driver>(f.driver, *setup->course, setup->v0);
+  Model& model = setup->model;
   if (!opt.out_dir.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(opt.out_dir, ec);
@@ -349,7 +365,7 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
       body = std::move(reduced);
     }
     f.truck.elastic_frame = body;
-    r.reduction_wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    setup->reduction_wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
   model.name = "truck_lane_change";
   model.solver.dt = f.dt;
@@ -358,10 +374,56 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
   model.solver.newton_tol = f.newton_tol;
   model.solver.jacobian_reuse = f.jacobian_reuse;
   model.solver.jacobian_reuse_rate = f.jacobian_reuse_rate;
-  const TruckHandles h =
-      BuildTruck(f.truck, v0, f.mu, driver.steering_wheel_angle(), driver.drive_torque(), model, driver.brake_torque());
+  Driver& driver = *setup->driver;
+  setup->h = BuildTruck(f.truck, setup->v0, f.mu, driver.steering_wheel_angle(), driver.drive_torque(), model,
+                        driver.brake_torque());
   model.Finalize();
+  return setup;
+}
 
+}  // namespace
+
+void CheckLaneChange(const LaneChangeOptions& opt, std::FILE* out) {
+  const std::unique_ptr<LaneChangeSetup> setup = SetUpLaneChange(opt);
+  const LaneChangeFile& f = setup->f;
+  ReportModel(setup->model, opt.file, out);
+  const double g = -setup->model.gravity_W.z();
+  const std::array<double, 2> axle = StaticAxleLoads(f.truck, g);
+  std::fprintf(out, "lane-change test: entry speed %.1f km/h, run-up %.1f m (%.2f s), %s frame", f.speed_kmh,
+               f.course.start_x, f.run_up_time, f.frame.c_str());
+  if (f.truck.elastic_frame)
+    std::fprintf(out, " (%d modal coordinates, reduced in %.2f s)", f.truck.elastic_frame->invariants.n,
+                 setup->reduction_wall_time_s);
+  const LaneChangeCourseData& c = f.course;
+  std::fprintf(out,
+               "\ncourse: section 1 %.1f m wide %.2f m, section 2 %.1f m, section 3 wide %.2f m at offset %.2f m; "
+               "test distance %.1f m\n",
+               c.section1_length, c.section1_width, c.section2_length, c.section3_width, c.offset,
+               setup->course->TestDistance());
+  std::fprintf(out, "static axle loads: front %.2f kN, rear %.2f kN (%.0f kg in all)\n", axle[0] / 1e3, axle[1] / 1e3,
+               (axle[0] + axle[1]) / g);
+  std::fprintf(out, "driver: %s, preview %.2f s (min %.1f m), speed %s\n",
+               f.driver.steering_law == SteeringLaw::kPreview ? "preview" : "pure pursuit", f.driver.preview_time,
+               f.driver.min_preview, f.driver.hold_speed ? "held" : "not held");
+  std::fprintf(out, "solver: dt %g s, rho_inf %g, newton_tol %g, jacobian_reuse %s (rate %g)\n", f.dt, f.rho_inf,
+               f.newton_tol, f.jacobian_reuse ? "on" : "off", f.jacobian_reuse_rate);
+  std::fflush(out);
+}
+
+LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
+  const std::unique_ptr<LaneChangeSetup> setup = SetUpLaneChange(opt);
+  LaneChangeFile& f = setup->f;
+  const double v0 = setup->v0;
+  const bool by_time = setup->by_time;
+  const double x_start = f.course.start_x;
+  const LaneChangeCourse& course = *setup->course;
+  Driver& driver = *setup->driver;
+  Model& model = setup->model;
+  const TruckHandles& h = setup->h;
+  LaneChangeResult r;
+  r.run_up = x_start;
+  r.frame = f.frame;
+  r.reduction_wall_time_s = setup->reduction_wall_time_s;
   r.entry_speed_kmh = f.speed_kmh;
   const std::array<double, 2> stat = StaticAxleLoads(f.truck, -model.gravity_W.z());
   r.static_axle_load[0] = stat[0];

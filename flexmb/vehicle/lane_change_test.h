@@ -105,6 +105,15 @@ bool IsLaneChangeFile(const std::string& path);
 /// with completed = false and the message set (results up to then are kept).
 LaneChangeResult RunLaneChange(const LaneChangeOptions& options);
 
+/// `flexmb check` of a lane-change file: reads and checks the file (and the
+/// options' overrides: speed, frame; the elastic frame is reduced), builds
+/// the truck, makes its initial state consistent and prints the model
+/// report of ReportModel (bodies, joints, degrees of freedom, redundant
+/// equations) and the test's set-up (speed, run-up, course, static axle
+/// loads, driver, solver) to `out`. Simulates nothing, writes no file.
+/// Throws InputError / NumericalError as RunLaneChange.
+void CheckLaneChange(const LaneChangeOptions& options, std::FILE* out);
+
 /// Highest entry speed [km/h] in [low, high] at which the test is passed,
 /// by bisection to `tol` [km/h] (each trial stops at the first failure).
 /// Returns low - 0 if even `low` fails (passed flag in `*at_low`).

@@ -8,6 +8,13 @@
 // properties: max lateral acceleration and roll within 10 %).
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "flexmb/common/error.h"
 #include "truck_harness.h"
 
 namespace flexmb::vehicle::testing {
@@ -70,6 +77,52 @@ TEST(TruckValidation, RunUpShiftsOnlyTheStart) {
   EXPECT_NEAR(with.min_corridor_margin, without.min_corridor_margin, 0.01);
   EXPECT_NEAR(with.max_lateral_acceleration, without.max_lateral_acceleration, 0.02 * without.max_lateral_acceleration);
   EXPECT_NEAR(with.max_roll_deg, without.max_roll_deg, 0.02 * without.max_roll_deg);
+}
+
+// `flexmb check` of a lane-change file: the truck's model report, without a
+// run. Reference: 21 bodies of 6 coordinates each (counted in truck.cc:
+// frame, cab, powertrain, cargo, 2 axles, 2 knuckles, 4 wheels, 4 contact
+// patches, 2 arm hubs, pitman arm, steering column), 85 independent
+// constraint equations: 6 * 21 - 85 = 41 degrees of freedom. A file error
+// names the file and line.
+TEST(TruckValidation, CheckReportsTheTruckWithoutRunning) {
+  LaneChangeOptions o;
+  o.file = TruckFile();
+  const std::string path = ::testing::TempDir() + "truck_check.txt";
+  std::FILE* out = std::fopen(path.c_str(), "w");
+  ASSERT_NE(out, nullptr);
+  CheckLaneChange(o, out);
+  std::fclose(out);
+  std::ifstream in(path);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("bodies: 21 (plus ground)"), std::string::npos) << text;
+  EXPECT_NE(text.find("constraint equations: 85 (0 redundant)"), std::string::npos) << text;
+  EXPECT_NE(text.find("degrees of freedom: 41"), std::string::npos) << text;
+  EXPECT_NE(text.find("run-up 15.3 m"), std::string::npos) << text;
+
+  // a bad solver key: the error names the file and the line
+  std::ifstream src(TruckFile());
+  std::string yaml((std::istreambuf_iterator<char>(src)), std::istreambuf_iterator<char>());
+  const size_t at = yaml.find("    jacobian_reuse_rate:");
+  ASSERT_NE(at, std::string::npos);
+  yaml.replace(at, std::string("    jacobian_reuse_rate:").size(), "    jacobian_reuse_ratio:");
+  // beside it the tire files it names
+  const std::string dir = ::testing::TempDir() + "truck_check/";
+  std::filesystem::create_directories(dir);
+  for (const char* tire : {"tire_11r22_5.yaml", "tire_11r22_5_twin.yaml"})
+    std::filesystem::copy_file(std::string(FLEXMB_SOURCE_DIR) + "/examples/truck_lane_change/" + tire, dir + tire,
+                               std::filesystem::copy_options::overwrite_existing);
+  const std::string bad = dir + "bad_check_copy.yaml";
+  std::ofstream(bad) << yaml;
+  o.file = bad;
+  try {
+    CheckLaneChange(o, stdout);
+    ADD_FAILURE() << "no error for an unknown key";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad_check_copy.yaml:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("jacobian_reuse_ratio"), std::string::npos) << e.what();
+  }
+  std::remove(bad.c_str());
 }
 
 TEST(TruckValidation, LaneChangeAt30KmhRunsToTheEnd) { RunAt(30.0, "rigid"); }
