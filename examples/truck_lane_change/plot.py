@@ -37,6 +37,17 @@ def load(run_dir):
     return label, cols
 
 
+def mark_run_up(ax, runs):
+    """Dotted line where the first run's front axle reaches section 1 (x = 0):
+    before it the run-up, where the start settles (not monitored)."""
+    c = runs[0][1]
+    t0 = next((t for t, x in zip(c["time"], c["x"]) if x >= 0.0), None)
+    if t0 is not None and t0 > 0.0:
+        ax.axvline(t0, color="0.5", ls=":", lw=0.8)
+        ax.annotate("section 1", (t0, 1.0), xycoords=("data", "axes fraction"), xytext=(3, -10),
+                    textcoords="offset points", fontsize=7, color="0.4")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("runs", nargs="+")
@@ -58,6 +69,7 @@ def main():
         for label, c in runs:
             for k in keys:
                 ax.plot(c["time"], c[k], label=label + ("" if len(keys) == 1 else " " + k.rsplit("_", 1)[0]))
+        mark_run_up(ax, runs)
         ax.set_xlabel("time [s]")
         ax.set_ylabel(ylabel)
         ax.grid(True, alpha=0.3)
@@ -78,6 +90,7 @@ def main():
             ax.plot(c["time"], c[key], label=label)
             ax2.plot(c["time"], c[pos], ".", ms=2, label=label)
         ax.set_ylabel(ylabel)
+        mark_run_up(ax, elastic)
         ax2.set_ylabel("x of the maximum [m]")
         ax2.set_xlabel("time [s]")
         for a_ in (ax, ax2):
