@@ -25,15 +25,22 @@ namespace {
 
 constexpr const char* kDebianPython = "/usr/bin/python3";
 
-// a model with an unshaped ground, one body of the given shape at a general
-// pose and one body without a shape
-std::unique_ptr<Model> ShapedModel(const Shape& shape, const Vec3& p_WB, const Mat3& R_WB) {
-  auto m = std::make_unique<Model>();
+// a rigid body of 1 kg, inertia 0.01 kg m^2 about each axis, at the pose
+// (p_WB, R_WB)
+RigidBodyData VtkAnimUnitBody(const Vec3& p_WB, const Mat3& R_WB) {
   RigidBodyData d;
   d.mass = 1.0;
   d.inertia_C = 0.01 * Mat3::Identity();
   d.p_WB = p_WB;
   d.R_WB = R_WB;
+  return d;
+}
+
+// a model with an unshaped ground, one body of the given shape at a general
+// pose and one body without a shape
+std::unique_ptr<Model> ShapedModel(const Shape& shape, const Vec3& p_WB, const Mat3& R_WB) {
+  auto m = std::make_unique<Model>();
+  RigidBodyData d = VtkAnimUnitBody(p_WB, R_WB);
   auto b = std::make_unique<RigidBody>("shaped", d);
   b->shape = shape;
   m->AddBody(std::move(b));
@@ -319,12 +326,8 @@ TEST_F(VtkAnimation, BinaryAndAsciiFramesHoldTheWrittenArrays) {
   d.w0 = 1e-3 * VecX::LinSpaced(reduced->invariants.n, 1.0, -2.0);
   Model model;
   model.AddBody(std::make_unique<FlexibleBody>("bar", d));
-  RigidBodyData rd;
-  rd.mass = 1.0;
-  rd.inertia_C = 0.01 * Mat3::Identity();
-  rd.p_WB = Vec3(0.1, 0.7, -0.3);
-  rd.R_WB = FromRollPitchYaw(Vec3(0.1, 0.9, -0.4));
-  auto box = std::make_unique<RigidBody>("box", rd);
+  auto box = std::make_unique<RigidBody>(
+      "box", VtkAnimUnitBody(Vec3(0.1, 0.7, -0.3), FromRollPitchYaw(Vec3(0.1, 0.9, -0.4))));
   box->shape = BoxShape();
   model.AddBody(std::move(box));
   model.output.deformation_scale = 7.0;
@@ -364,11 +367,7 @@ TEST_F(VtkAnimation, LinkIsALineBetweenItsMarkers) {
   const Vec3 p_WB(1, 2, 3);
   const Mat3 R_WB = FromRollPitchYaw(Vec3(0.3, -0.2, 0.5));
   auto model = std::make_unique<Model>();
-  RigidBodyData d;
-  d.mass = 1.0;
-  d.inertia_C = 0.01 * Mat3::Identity();
-  d.p_WB = p_WB;
-  d.R_WB = R_WB;
+  RigidBodyData d = VtkAnimUnitBody(p_WB, R_WB);
   d.c_B = Vec3(0.2, 0, 0);
   model->AddBody(std::make_unique<RigidBody>("a", d));
   const int mi = model->AddMarker(1, "end", Vec3(0.5, -0.1, 0.2), Mat3::Identity());

@@ -6,19 +6,11 @@
 
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cmath>
-#include <memory>
 #include <vector>
 
-#include "flexmb/bodies/rigid_body.h"
 #include "flexmb/common/error.h"
-#include "flexmb/joints/motion_driver.h"
-#include "flexmb/joints/prismatic.h"
-#include "flexmb/joints/revolute.h"
-#include "flexmb/math/scalar_function.h"
-#include "flexmb/solver/simulator.h"
-#include "flexmb/vehicle/contact_patch_joint.h"
+#include "tests/unit/vehicle/tire_rig.h"
 #include "tests/unit/vehicle/tire_test_data.h"
 
 namespace flexmb::vehicle {
@@ -375,77 +367,6 @@ TireData TireLongRigData(double sigma_kappa) {
   return d;
 }
 
-// Rig: a carrier driven along world x at V (prismatic on the ground with a
-// motion driver), the wheel centre at the height of the nominal load, the
-// wheel's spin prescribed (a motion driver on its bearing) at
-// Omega = V (1 + kappa0) / Re from t = 0: a step in slip ratio. The patch
-// slides on a ContactPatchJoint and starts with the velocity that makes its
-// slip zero (force-free start of the massless carcass). Returns (travelled
-// distance, Fx on the wheel) every dt and the stateless tire's Fx at kappa0.
-std::vector<std::array<double, 2>> TireLongStepRun(const TireData& td, double V, double kappa0, double t_end,
-                                                   double dt, double* fx_steady) {
-  Model m;
-  m.gravity_W.setZero();
-  m.solver.dt = dt;
-  m.solver.rho_inf = 0.8;
-  const double zc = td.unloaded_radius - td.nominal_load / (td.count * td.vertical_stiffness);
-  const Vec3 c(0, 0, zc);
-  Mat3 axis_x;  // z along world x
-  axis_x << 0, 0, 1, 1, 0, 0, 0, 1, 0;
-  Mat3 spin;  // z along world y, x forward
-  spin << 1, 0, 0, 0, 0, 1, 0, -1, 0;
-  const double re = td.unloaded_radius - td.rolling_radius_factor * (td.unloaded_radius - zc);
-  const double omega = V * (1 + kappa0) / re;
-  const Vec3 v(V, 0, 0), w(0, omega, 0);
-  auto body = [&](const char* name, double mass, const Vec3& vel, const Vec3& om) {
-    RigidBodyData b;
-    b.mass = mass;
-    b.inertia_C = Mat3::Identity() * (0.1 * mass);
-    b.c_B = c;
-    b.v_WB = vel - om.cross(c);
-    b.w_WB = om;
-    return m.AddBody(std::make_unique<RigidBody>(name, b));
-  };
-  auto ramp = [](double rate) {
-    return std::make_shared<TableFunction>(std::vector<double>{0.0, 1.0}, std::vector<double>{0.0, rate},
-                                           TableFunction::Interpolation::kLinear, true);
-  };
-  const int carrier = body("carrier", 100.0, v, Vec3::Zero());
-  const int wheel = body("wheel", 50.0, v, w);
-  // zero patch slip at t = 0: (v_patch - v) . x_t = -Vsx = kappa0 V
-  const int patch = body("patch", td.patch_mass, Vec3(V * (1 + kappa0), 0, 0), Vec3::Zero());
-  const int slide = m.AddJoint(std::make_unique<PrismaticJoint>("slide"), m.AddMarker(0, "rail", c, axis_x),
-                               m.AddMarker(carrier, "rail", c, axis_x));
-  m.AddJoint(std::make_unique<MotionDriver>("drive", m.joints[slide].get(), 0, ramp(V)), m.joints[slide]->marker_i,
-             m.joints[slide]->marker_j);
-  const int bearing = m.AddJoint(std::make_unique<RevoluteJoint>("bearing"), m.AddMarker(carrier, "bearing", c, spin),
-                                 m.AddMarker(wheel, "bearing", c, spin));
-  m.AddJoint(std::make_unique<MotionDriver>("spin", m.joints[bearing].get(), 0, ramp(omega)),
-             m.joints[bearing]->marker_i, m.joints[bearing]->marker_j);
-  const int wm = m.AddMarker(wheel, "centre", c, spin);
-  const int pm = m.AddMarker(patch, "centre", c, spin);
-  m.AddJoint(std::make_unique<ContactPatchJoint>("carcass"), m.AddMarker(carrier, "carcass", c, spin), pm);
-  const int tire = m.AddForce(std::make_unique<Tire>("tire", td, 1.0), wm, pm);
-  TireData stateless = td;
-  stateless.relaxation_length = 0.0;
-  stateless.longitudinal_relaxation_length = 0.0;
-  TireContact ss;
-  Tire("probe", stateless, 1.0).Wrench(c, spin, v, w, &ss);
-  *fx_steady = ss.fx;
-  m.Finalize();
-  Simulator sim(m);
-  sim.Initialize();
-  std::vector<std::array<double, 2>> out;
-  sim.Run(t_end, dt, [&](const State& st, const Workspace& ws) {
-    const MarkerState& wc = ws.markers[wm];
-    const MarkerState& pc = ws.markers[pm];
-    TireContact tc;
-    static_cast<const Tire&>(*m.forces[tire]).RelaxedWrench(wc.p_WM, wc.R_WM, wc.v_WM, wc.w_WM, pc.p_WM, pc.v_WM, &tc);
-    out.push_back({V * st.t, tc.fx_wheel});
-  });
-  return out;
-}
-
 // Step in slip ratio kappa0 = -0.002 (braking) at 10 m/s, sigma_kappa = 0.3 m.
 // Reference: the single-contact-point transient model (Pacejka, Tire and
 // Vehicle Dynamics, 3rd ed., sec. 7.2.1) in the longitudinal direction,
@@ -457,20 +378,21 @@ std::vector<std::array<double, 2>> TireLongStepRun(const TireData& td, double V,
 // Fx_ss; an error of 2 % in sigma_kappa would show as 7e-3.
 TEST(Tire, LongitudinalSlipStepFollowsFirstOrderLagInDistance) {
   const double sigma = 0.3, V = 10.0, kappa0 = -0.002;
-  double fss = 0.0;
-  const std::vector<std::array<double, 2>> s =
-      TireLongStepRun(TireLongRigData(sigma), V, kappa0, 5 * sigma / V, 1e-3, &fss);
+  // straight ahead (psi = 0), spin prescribed at the slip ratio kappa0
+  const TireRigRun run = RunTireStepRig(TireLongRigData(sigma), V, 0.0, kappa0, 5 * sigma / V, 1e-3);
+  const double fss = run.fx_steady;
+  const std::vector<TireRigSample>& s = run.samples;
   ASSERT_LT(fss, -500.0);
   ASSERT_GT(s.size(), 140u);
-  EXPECT_NEAR(s.front()[1], 0.0, 1e-9 * std::abs(fss));
+  EXPECT_NEAR(s.front().fx_wheel, 0.0, 1e-9 * std::abs(fss));
   double worst = 0.0, x63 = 0.0;
   const double target = 1.0 - std::exp(-1.0);
   for (size_t k = 0; k < s.size(); ++k) {
-    const double ref = fss * (1.0 - std::exp(-s[k][0] / sigma));
-    worst = std::max(worst, std::abs(s[k][1] - ref) / std::abs(fss));
+    const double ref = fss * (1.0 - std::exp(-s[k].x / sigma));
+    worst = std::max(worst, std::abs(s[k].fx_wheel - ref) / std::abs(fss));
     if (k == 0) continue;
-    const double f0 = s[k - 1][1] / fss, f1 = s[k][1] / fss;
-    if (f0 < target && f1 >= target) x63 = s[k - 1][0] + (target - f0) / (f1 - f0) * (s[k][0] - s[k - 1][0]);
+    const double f0 = s[k - 1].fx_wheel / fss, f1 = s[k].fx_wheel / fss;
+    if (f0 < target && f1 >= target) x63 = s[k - 1].x + (target - f0) / (f1 - f0) * (s[k].x - s[k - 1].x);
   }
   EXPECT_LT(worst, 3e-3);
   // the distance to 63.2 % of the steady force is sigma_kappa (2 %)
