@@ -42,6 +42,26 @@ struct Workspace {
   /// Iteration matrix [[A, B^T], [B, 0]] (nv + n_active square), fixed pattern.
   SparseMat S;
 
+  /// Positions in S.valuePtr() (and B.valuePtr()) of the blocks the assembly
+  /// writes, found once by InitWorkspace so that AssembleIterationMatrix and
+  /// EvaluateConstraints copy into S and B without searching the pattern.
+  /// A block's entry is the position of its first row in each of its columns
+  /// (the pattern holds whole blocks, so a column's rows are consecutive).
+  std::vector<int> slots;
+  /// Per body: offset in `slots` of the nv column starts of its diagonal
+  /// block (dense bodies; -1 for sparse bodies and bodies without velocities).
+  std::vector<int> body_slots;
+  /// Per force element, 4 entries: offset in `slots` of the column starts of
+  /// the coupling block of its markers (a, b) at 2 a + b, rows marker a's
+  /// columns, columns marker b's columns (-1 if empty or absent).
+  std::vector<int> force_slots;
+  /// Per joint, 5 entries: the 4 coupling offsets as force_slots, then the
+  /// offset in `slots` of its constraint rows: for each active equation and
+  /// each of its markers with columns (count c), the c positions in S of the
+  /// B row, the position in S of the first entry of the B^T column, and the
+  /// c positions in B of the B row.
+  std::vector<int> joint_slots;
+
   // scratch
   Mat12 H;        ///< geometric stiffness of one joint
   MatX G, GtK;    ///< scratch for marker Jacobian products

@@ -16,21 +16,32 @@ void PatternBlock(Triplets& t, int r0, int nr, int c0, int nc) {
     for (int i = 0; i < nr; ++i) t.emplace_back(r0 + i, c0 + j, 0.0);
 }
 
-/// Adds scale * blk to the entries of S at (r0, c0). The pattern holds the
-/// whole block, so each column's rows r0..r0+nr-1 are consecutive entries.
+/// Adds scale * blk to the entries of S's value array `val` whose column
+/// starts (position of the block's first row in each column) are `starts`.
 template <typename Block>
-void AddBlock(SparseMat& S, int r0, int c0, const Block& blk, double scale) {
+void AddBlockAtSlots(double* val, const int* starts, const Block& blk, double scale) {
   const int nr = static_cast<int>(blk.rows()), ncol = static_cast<int>(blk.cols());
-  const int* outer = S.outerIndexPtr();
-  const int* inner = S.innerIndexPtr();
-  double* val = S.valuePtr();
   for (int j = 0; j < ncol; ++j) {
-    const int* begin = inner + outer[c0 + j];
-    const int* end = inner + outer[c0 + j + 1];
-    const int* p = std::lower_bound(begin, end, r0);
-    double* v = val + (p - inner);
+    double* v = val + starts[j];
     for (int i = 0; i < nr; ++i) v[i] += scale * blk(i, j);
   }
+}
+
+/// Position in the value array of the pattern entry (r, c) of a compressed
+/// matrix; throws NumericalError if the pattern lacks it.
+int SlotPatternPosition(const SparseMat& A, int r, int c) {
+  const int* inner = A.innerIndexPtr();
+  const int* end = inner + A.outerIndexPtr()[c + 1];
+  const int* p = std::lower_bound(inner + A.outerIndexPtr()[c], end, r);
+  if (p == end || *p != r)
+    throw NumericalError("assembler: entry (" + std::to_string(r) + ", " + std::to_string(c) +
+                         ") missing from the sparse pattern");
+  return static_cast<int>(p - inner);
+}
+
+/// Appends to `out` the positions of the entries (r0, c0 + j), j < nc.
+void AppendSlotColumnStarts(const SparseMat& A, int r0, int c0, int nc, std::vector<int>& out) {
+  for (int j = 0; j < nc; ++j) out.push_back(SlotPatternPosition(A, r0, c0 + j));
 }
 
 /// Calls f(k, i, j) for every pattern entry of S in the diagonal block of
@@ -57,17 +68,18 @@ using Cols = std::pair<int, int>;
 /// Adds scale * Ja^T K6 Rb at the marker column ranges (a, b) of the top-left
 /// of S, where Rb (6 x nv_b) is marker b's twist Jacobian or its twist
 /// tangent; only the columns ca of Ja and cb of Rb can be non-zero.
+/// `starts` are the block's column starts in S (Workspace::force_slots,
+/// joint_slots).
 template <typename Right>
-void AddCoupling(SparseMat& S, const MarkerState& ma, const Cols& ca, const MarkerState& mb,
-                 const Cols& cb, const Right& Rb,
-                 const Eigen::Ref<const Eigen::Matrix<double, 6, 6>>& K6, double scale, MatX& tmp,
-                 MatX& blk) {
+void AddCoupling(SparseMat& S, const int* starts, const MarkerState& ma, const Cols& ca, const Cols& cb,
+                 const Right& Rb, const Eigen::Ref<const Eigen::Matrix<double, 6, 6>>& K6, double scale,
+                 MatX& tmp, MatX& blk) {
   if (ca.second == 0 || cb.second == 0 || scale == 0.0) return;
   auto t = tmp.topLeftCorner(6, cb.second);
   auto b = blk.topLeftCorner(ca.second, cb.second);
   t.noalias() = K6 * Rb.middleCols(cb.first, cb.second);
   b.noalias() = ma.J.middleCols(ca.first, ca.second).transpose() * t;
-  AddBlock(S, ma.v_offset + ca.first, mb.v_offset + cb.first, b, scale);
+  AddBlockAtSlots(S.valuePtr(), starts, b, scale);
 }
 
 /// Checks Body::BlockPattern's contract for the sparse body k: its mass
@@ -102,6 +114,58 @@ void CheckBodyPattern(const Model& model, const State& s0, Workspace& ws, int k)
   }
   ws.dQdq[k].setZero();
   ws.dQdv[k].setZero();
+}
+
+/// Fills the position tables of ws (Workspace::slots and the offsets into
+/// it) from the patterns of ws.S and ws.B, in the order the assembly uses.
+void BuildAssemblySlots(const Model& model, Workspace& ws) {
+  const int nv = model.nv;
+  ws.slots.clear();
+  ws.body_slots.assign(model.bodies.size(), -1);
+  for (size_t k = 0; k < model.bodies.size(); ++k) {
+    const Body& b = *model.bodies[k];
+    if (b.nv() == 0 || ws.body_sparse[k]) continue;
+    ws.body_slots[k] = static_cast<int>(ws.slots.size());
+    AppendSlotColumnStarts(ws.S, b.v_offset, b.v_offset, b.nv(), ws.slots);
+  }
+  // coupling blocks of markers (a, b) of an element with markers mk[0..nm)
+  const auto pairs = [&](const int* mk, int nm, int* out) {
+    for (int a = 0; a < nm; ++a)
+      for (int b = 0; b < nm; ++b) {
+        const Cols& ca = ws.marker_cols[mk[a]];
+        const Cols& cb = ws.marker_cols[mk[b]];
+        out[2 * a + b] = -1;
+        if (ca.second == 0 || cb.second == 0) continue;
+        out[2 * a + b] = static_cast<int>(ws.slots.size());
+        AppendSlotColumnStarts(ws.S, ws.markers[mk[a]].v_offset + ca.first, ws.markers[mk[b]].v_offset + cb.first,
+                           cb.second, ws.slots);
+      }
+  };
+  ws.force_slots.assign(4 * model.forces.size(), -1);
+  for (size_t k = 0; k < model.forces.size(); ++k) {
+    const ForceElement& f = *model.forces[k];
+    const int mk[2] = {f.marker_i, f.marker_j};
+    pairs(mk, f.marker_j >= 0 ? 2 : 1, &ws.force_slots[4 * k]);
+  }
+  ws.joint_slots.assign(5 * model.joints.size(), -1);
+  for (size_t k = 0; k < model.joints.size(); ++k) {
+    const Joint& j = *model.joints[k];
+    const int mk[2] = {j.marker_i, j.marker_j};
+    pairs(mk, 2, &ws.joint_slots[5 * k]);
+    ws.joint_slots[5 * k + 4] = static_cast<int>(ws.slots.size());
+    for (int q = 0; q < j.NumEquations(); ++q) {
+      const int r = ws.row_of_eq[j.lambda_offset + q];
+      if (r < 0) continue;
+      for (int a = 0; a < 2; ++a) {
+        const Cols& c = ws.marker_cols[mk[a]];
+        if (c.second == 0) continue;
+        const int c0 = ws.markers[mk[a]].v_offset + c.first;
+        for (int i = 0; i < c.second; ++i) ws.slots.push_back(SlotPatternPosition(ws.S, nv + r, c0 + i));
+        ws.slots.push_back(SlotPatternPosition(ws.S, c0, nv + r));
+        for (int i = 0; i < c.second; ++i) ws.slots.push_back(SlotPatternPosition(ws.B, r, c0 + i));
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -223,6 +287,7 @@ void InitWorkspace(const Model& model, Workspace& ws, const std::vector<int>& re
   ws.S.setFromTriplets(ts.begin(), ts.end());
   ws.S.makeCompressed();
   ws.rhs.setZero(nv + ws.n_active);
+  BuildAssemblySlots(model, ws);
   for (int k = 0; k < nb; ++k)
     if (ws.body_sparse[k]) CheckBodyPattern(model, s0, ws, k);
 }
@@ -245,29 +310,32 @@ void EvaluateConstraints(const Model& model, const State& s, Workspace& ws) {
     e.phi_t.setZero();
     j.Evaluate(mi, mj, s.t, e);
     const int n = j.NumEquations();
-    int first = -1, count = 0;
+    int count = 0;
     for (int q = 0; q < n; ++q) {
       const int r = ws.row_of_eq[j.lambda_offset + q];
       if (r < 0) continue;
-      if (first < 0) first = r;
       ws.phi(r) = e.phi(q);
       ws.phi_t(r) = e.phi_t(q);
       ++count;
     }
     if (count == 0) continue;
-    // B rows of the active equations: D_i J_i and D_j J_j
+    // B rows of the active equations: D_i J_i and D_j J_j, at their
+    // positions in B (Workspace::joint_slots)
     const MarkerState* m[2] = {&mi, &mj};
     const Cols* cols[2] = {&ws.marker_cols[j.marker_i], &ws.marker_cols[j.marker_j]};
-    for (int q = 0, r = 0; q < n; ++q) {
+    const int* pos = ws.slots.data() + ws.joint_slots[5 * k + 4];
+    double* bval = ws.B.valuePtr();
+    for (int q = 0; q < n; ++q) {
       if (ws.row_of_eq[j.lambda_offset + q] < 0) continue;
       for (int a = 0; a < 2; ++a) {
         const Cols& c = *cols[a];
         if (c.second == 0) continue;
         auto row = ws.G.topLeftCorner(1, c.second);
         row.noalias() = e.D.block(q, 6 * a, 1, 6) * m[a]->J.middleCols(c.first, c.second);
-        AddBlock(ws.B, first + r, m[a]->v_offset + c.first, row, 1.0);
+        pos += c.second + 1;
+        for (int i = 0; i < c.second; ++i) bval[pos[i]] += 1.0 * row(0, i);
+        pos += c.second;
       }
-      ++r;
     }
   }
 }
@@ -335,7 +403,6 @@ void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
                              const MatrixCoefficients& c) {
   SparseMat& S = ws.S;
   std::fill(S.valuePtr(), S.valuePtr() + S.nonZeros(), 0.0);
-  const int nv = model.nv;
   // bodies: mass and own force derivatives
   for (size_t k = 0; k < model.bodies.size(); ++k) {
     const Body& b = *model.bodies[k];
@@ -347,12 +414,10 @@ void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
     double* val = S.valuePtr();
     if (!ws.body_sparse[k]) {
       // dense block: each column's rows are consecutive entries
-      const int n = b.nv(), off = b.v_offset;
-      const int* outer = S.outerIndexPtr();
-      const int* inner = S.innerIndexPtr();
+      const int n = b.nv();
+      const int* starts = ws.slots.data() + ws.body_slots[k];
       for (int j = 0; j < n; ++j) {
-        const int* p = std::lower_bound(inner + outer[off + j], inner + outer[off + j + 1], off);
-        Eigen::Map<VecX> col(val + (p - inner), n);
+        Eigen::Map<VecX> col(val + starts[j], n);
         col.noalias() += c.mass * M.col(j);
         if (c.damping != 0.0) col.noalias() -= c.damping * Kv.col(j);
         if (c.stiffness != 0.0) col.noalias() -= c.stiffness * Kq.col(j);
@@ -371,6 +436,7 @@ void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
     const ForceEval& e = ws.forces[k];
     const int nm = f.marker_j >= 0 ? 2 : 1;
     const int mk[2] = {f.marker_i, f.marker_j};
+    const int* fs = &ws.force_slots[4 * k];
     for (int a = 0; a < nm; ++a) {
       const MarkerState& ma = ws.markers[mk[a]];
       const Cols& ca = ws.marker_cols[mk[a]];
@@ -383,23 +449,28 @@ void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
         blk.setZero();
         const Vec6 w = e.wrench.segment<6>(6 * a);
         body.AddMarkerWrenchTangent(s.q.data() + body.q_offset, marker, w, full);
-        AddBlock(S, ma.v_offset + ca.first, ma.v_offset + ca.first, blk, -c.stiffness);
+        AddBlockAtSlots(S.valuePtr(), ws.slots.data() + fs[3 * a], blk, -c.stiffness);
       }
       for (int b = 0; b < nm; ++b) {
         const MarkerState& mb = ws.markers[mk[b]];
         const Cols& cb = ws.marker_cols[mk[b]];
-        AddCoupling(S, ma, ca, mb, cb, mb.J, e.K.block<6, 6>(6 * a, 6 * b), -c.stiffness, ws.G,
-                    ws.GtK);
-        AddCoupling(S, ma, ca, mb, cb, mb.J, e.C.block<6, 6>(6 * a, 6 * b), -c.damping, ws.G,
-                    ws.GtK);
-        if (mb.nv == 0 || c.stiffness == 0.0 || e.C.block<6, 6>(6 * a, 6 * b).isZero(0.0)) continue;
+        if (fs[2 * a + b] < 0) continue;
+        const int* starts = ws.slots.data() + fs[2 * a + b];
+        // zero blocks (springs without damping, dampers without stiffness)
+        // would add only zeros: skipped
+        const bool zero_k = e.K.block<6, 6>(6 * a, 6 * b).isZero(0.0);
+        const bool zero_c = e.C.block<6, 6>(6 * a, 6 * b).isZero(0.0);
+        if (!zero_k)
+          AddCoupling(S, starts, ma, ca, cb, mb.J, e.K.block<6, 6>(6 * a, 6 * b), -c.stiffness, ws.G, ws.GtK);
+        if (zero_c) continue;
+        AddCoupling(S, starts, ma, ca, cb, mb.J, e.C.block<6, 6>(6 * a, 6 * b), -c.damping, ws.G, ws.GtK);
+        if (mb.nv == 0 || c.stiffness == 0.0) continue;
         // dampers: the twist of marker b turns with its body at fixed v
         const Marker& mkb = model.markers[mk[b]];
         const Body& bb = *model.bodies[mkb.body];
         auto td = ws.twist_dq.leftCols(mb.nv);
         bb.MarkerTwistTangent(s.q.data() + bb.q_offset, s.v.data() + bb.v_offset, mkb, td);
-        AddCoupling(S, ma, ca, mb, cb, td, e.C.block<6, 6>(6 * a, 6 * b), -c.stiffness, ws.G,
-                    ws.GtK);
+        AddCoupling(S, starts, ma, ca, cb, td, e.C.block<6, 6>(6 * a, 6 * b), -c.stiffness, ws.G, ws.GtK);
       }
     }
   }
@@ -412,9 +483,12 @@ void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
     const int n = j.NumEquations();
     double lam[16] = {0};
     bool any_lambda = false;
-    for (int q = 0, r = -1; q < n; ++q) {
-      r = ws.row_of_eq[j.lambda_offset + q];
-      if (r < 0) continue;
+    const int* js = &ws.joint_slots[5 * k];
+    // positions of the B rows and B^T columns (Workspace::joint_slots)
+    const int* pos = ws.slots.data() + js[4];
+    double* val = S.valuePtr();
+    for (int q = 0; q < n; ++q) {
+      if (ws.row_of_eq[j.lambda_offset + q] < 0) continue;
       lam[q] = s.lambda(j.lambda_offset + q);
       any_lambda |= lam[q] != 0.0;
       for (int a = 0; a < 2; ++a) {
@@ -422,8 +496,10 @@ void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
         if (cc.second == 0) continue;
         auto row = ws.G.topLeftCorner(1, cc.second);
         row.noalias() = e.D.block(q, 6 * a, 1, 6) * m[a]->J.middleCols(cc.first, cc.second);
-        AddBlock(S, nv + r, m[a]->v_offset + cc.first, row, 1.0);
-        AddBlock(S, m[a]->v_offset + cc.first, nv + r, row.transpose(), 1.0);
+        for (int i = 0; i < cc.second; ++i) val[pos[i]] += 1.0 * row(0, i);
+        double* col = val + pos[cc.second];
+        for (int i = 0; i < cc.second; ++i) col[i] += 1.0 * row(0, i);
+        pos += 2 * cc.second + 1;
       }
     }
     if (!c.geometric || c.stiffness == 0.0 || !any_lambda) continue;
@@ -441,10 +517,11 @@ void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
       auto blk = full.block(ca.first, ca.first, ca.second, ca.second);
       blk.setZero();
       body.AddMarkerWrenchTangent(s.q.data() + body.q_offset, marker, w.segment<6>(6 * a), full);
-      AddBlock(S, m[a]->v_offset + ca.first, m[a]->v_offset + ca.first, blk, c.stiffness);
+      AddBlockAtSlots(val, ws.slots.data() + js[3 * a], blk, c.stiffness);
       for (int b = 0; b < 2; ++b)
-        AddCoupling(S, *m[a], ca, *m[b], *cols[b], m[b]->J, ws.H.block<6, 6>(6 * a, 6 * b),
-                    c.stiffness, ws.G, ws.GtK);
+        if (js[2 * a + b] >= 0)
+          AddCoupling(S, ws.slots.data() + js[2 * a + b], *m[a], ca, *cols[b], m[b]->J,
+                      ws.H.block<6, 6>(6 * a, 6 * b), c.stiffness, ws.G, ws.GtK);
     }
   }
 }
