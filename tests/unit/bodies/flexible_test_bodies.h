@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "flexmb/bodies/flexible_body.h"
 #include "flexmb/fe/fe_model.h"
 #include "flexmb/reduction/craig_bampton.h"
 #include "tests/unit/fe/fe_test_models.h"
@@ -43,6 +44,22 @@ inline std::shared_ptr<reduction::ReducedBody> FreeBentBar(int per_leg, int norm
   o.normal_modes = normal;
   o.keep = keep;
   return std::make_shared<reduction::ReducedBody>(reduction::ReduceCraigBampton(model, o));
+}
+
+/// FreeBentBar(3, 3) as a flexible body in a general state, so that every
+/// term of its mass matrix, forces and tangents is non-zero: tilted
+/// (0.7 rad about (1, 2, 3)), spinning (w = (0.5, -1, 3) rad/s), moving
+/// (v = (0.2, 0.1, -0.3) m/s) and deformed (w0, wd0 linear ramps).
+inline FlexibleBodyData SpinningDeformedBentBar() {
+  FlexibleBodyData d;
+  d.reduced = FreeBentBar(3, 3);
+  d.R_WB = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  d.w_WB = Vec3(0.5, -1.0, 3.0);
+  d.v_WB = Vec3(0.2, 0.1, -0.3);
+  const int n = static_cast<int>(d.reduced->invariants.n);
+  d.w0 = VecX::LinSpaced(n, -0.02, 0.03);
+  d.wd0 = VecX::LinSpaced(n, 0.5, -0.4);
+  return d;
 }
 
 }  // namespace flexmb::testing

@@ -30,14 +30,7 @@ VecX MassTangentResidual(const Model& m, const State& s, const VecX& a, Workspac
 
 TEST(MassTangentAssembly, IterationMatrixIsTheTangentOfTheResidual) {
   Model m;
-  FlexibleBodyData d;
-  d.reduced = testing::FreeBentBar(3, 3);
-  d.R_WB = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
-  d.w_WB = Vec3(0.5, -1.0, 3.0);
-  d.v_WB = Vec3(0.2, 0.1, -0.3);
-  const int n = static_cast<int>(d.reduced->invariants.n);
-  d.w0 = VecX::LinSpaced(n, -0.02, 0.03);
-  d.wd0 = VecX::LinSpaced(n, 0.5, -0.4);
+  const FlexibleBodyData d = testing::SpinningDeformedBentBar();
   m.AddBody(std::make_unique<FlexibleBody>("bar", d));
   m.Finalize();
   Workspace ws;
