@@ -22,7 +22,7 @@
 #include <string>
 
 #include "bench/bench_clock.h"
-#include "flexmb/io/model_file.h"
+#include "flexmb/model_file/model_file.h"
 #include "flexmb/solver/assembler.h"
 #include "flexmb/solver/simulator.h"
 #include "flexmb/solver/sparse_lu.h"

@@ -31,7 +31,7 @@
 #include "flexmb/fe/block_lanczos.h"
 #include "flexmb/fe/modal.h"
 #include "flexmb/fe/sparse_cholesky.h"
-#include "flexmb/io/nastran_reader.h"
+#include "flexmb/fe_io/nastran/nastran_reader.h"
 
 namespace {
 

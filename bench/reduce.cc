@@ -28,8 +28,8 @@
 #include "bench/ladder_frame.h"
 #include "flexmb/common/process_tuning.h"
 #include "flexmb/fe/fe_model.h"
-#include "flexmb/io/body_file.h"
-#include "flexmb/io/fe_model_file.h"
+#include "flexmb/body_file/body_file.h"
+#include "flexmb/fe_io/fe_model_file.h"
 #include "flexmb/reduction/craig_bampton.h"
 
 namespace {
@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
     double best_total = 1e300, best_cpu = 0.0, best_read = 0.0, best_write = 0.0, mb = 0.0;
     flexmb::reduction::ReducedBody body;
     for (int r = 0; r < repeat; ++r) {
-      // the steps of `flexmb reduce` (io/reduce_commands.cc): read, reduce, write
+      // the steps of `flexmb reduce` (apps/flexmb/commands/reduce_commands.cc): read, reduce, write
       flexmb::reduction::ReductionTimings t;
       const double cpu0 = CpuSeconds();
       t0 = std::chrono::steady_clock::now();

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "flexmb/common/process_tuning.h"
-#include "flexmb/vehicle/lane_change_test.h"
+#include "apps/flexmb/commands/lane_change.h"
 
 int main(int argc, char** argv) {
   flexmb::TuneProcess(argv);

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "flexmb/fe/assembly.h"
-#include "flexmb/io/abaqus_reader.h"
+#include "flexmb/fe_io/abaqus/abaqus_reader.h"
 #include "fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -5,7 +5,7 @@
 
 #include <cstdlib>
 
-#include "flexmb/io/gmsh_reader.h"
+#include "flexmb/fe_io/gmsh_reader.h"
 #include "fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "flexmb/io/harwell_boeing.h"
+#include "flexmb/fe_io/harwell_boeing.h"
 #include "fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

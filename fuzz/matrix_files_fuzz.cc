@@ -9,8 +9,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "flexmb/io/calculix_matrices.h"
-#include "flexmb/io/dof_map.h"
+#include "flexmb/fe_io/calculix_matrices.h"
+#include "flexmb/fe_io/dof_map.h"
 #include "fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "flexmb/io/matrix_market.h"
+#include "flexmb/fe_io/matrix_market.h"
 #include "fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "flexmb/fe/assembly.h"
-#include "flexmb/io/nastran_reader.h"
+#include "flexmb/fe_io/nastran/nastran_reader.h"
 #include "fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "flexmb/io/vtk_mesh.h"
+#include "flexmb/fe_io/vtk_mesh.h"
 #include "fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

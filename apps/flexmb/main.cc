@@ -1,8 +1,8 @@
 /// \file main.cc
 /// The flexmb command line: "run" and "check" over the library's RunModel and
-/// CheckModel (flexmb/io/run.h), the "fe" group ("fe modes", "fe info",
-/// "fe export") over flexmb/io/fe_commands.h, and "reduce" and "body info"
-/// over flexmb/io/reduce_commands.h.
+/// CheckModel (apps/flexmb/commands/run.h), the "fe" group ("fe modes", "fe info",
+/// "fe export") over apps/flexmb/commands/fe_commands.h, and "reduce" and "body info"
+/// over apps/flexmb/commands/reduce_commands.h.
 
 #include <unistd.h>
 
@@ -15,10 +15,10 @@
 
 #include "flexmb/common/process_tuning.h"
 #include "flexmb/common/error.h"
-#include "flexmb/io/fe_commands.h"
-#include "flexmb/io/reduce_commands.h"
-#include "flexmb/io/run.h"
-#include "flexmb/vehicle/lane_change_test.h"
+#include "apps/flexmb/commands/fe_commands.h"
+#include "apps/flexmb/commands/reduce_commands.h"
+#include "apps/flexmb/commands/run.h"
+#include "apps/flexmb/commands/lane_change.h"
 
 namespace {
 

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "flexmb/model/marker.h"
+#include "flexmb/kinematics/marker.h"
 
 namespace flexmb {
 

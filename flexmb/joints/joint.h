@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "flexmb/model/marker.h"
+#include "flexmb/kinematics/marker.h"
 
 namespace flexmb {
 

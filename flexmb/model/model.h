@@ -17,7 +17,7 @@
 #include "flexmb/joints/joint.h"
 #include "flexmb/model/settings.h"
 #include "flexmb/model/state.h"
-#include "flexmb/sensors/sensor.h"
+#include "flexmb/model/sensor.h"
 
 namespace flexmb {
 

@@ -10,7 +10,7 @@
 
 #include "flexmb/forces/force_element.h"
 #include "flexmb/joints/joint.h"
-#include "flexmb/model/marker.h"
+#include "flexmb/kinematics/marker.h"
 
 namespace flexmb {
 

@@ -63,7 +63,7 @@ ReducedBody ReduceCraigBampton(const fe::FeModel& model, const ReductionOptions&
 struct CraigBamptonBasis;
 
 /// The steps of ReduceCraigBampton after the basis, on a basis computed
-/// here (BuildCraigBamptonBasis) or imported (io/modes_file.h BasisOfModes):
+/// here (BuildCraigBamptonBasis) or imported (body_file/modes_file.h BasisOfModes):
 /// orthonormalization, rigid-body removal, truncation (options.keep),
 /// invariants, stress modes, damping and provenance. `assembled` is `model`
 /// assembled as the basis was; options.interface_nodes are recorded as the

@@ -38,7 +38,7 @@ struct CraigBamptonBasis {
   /// zero and the normal block is Phi^T K_ii Phi; equal to the literal
   /// product up to the static solve's residual (a relative 1e-13 or so on
   /// the reduced frequencies, measured in reduction_cb_test). An imported
-  /// basis (io/modes_file.h) gets the literal product, as its static modes
+  /// basis (body_file/modes_file.h) gets the literal product, as its static modes
   /// need not solve our K_ii.
   Eigen::MatrixXd stiffness;
   /// Median over the free DOF of K_kk / M_kk [rad^2/s^2 in SI]: the scale of

@@ -45,8 +45,8 @@ VecX PointVonMises(const StressTable& table, const VecX& v);
 /// the modal coordinates w [Pa]: values = table.modes * w, then
 /// von_mises(k) = max over the element's recovery points (shells: bottom
 /// and top surface; solids: centroid) for the k-th of table.elements. The
-/// one evaluation used by the animation (io/vtk_animation.h) and the truck's
-/// stress hot spots (vehicle/lane_change_test.h). `values` and `von_mises`
+/// one evaluation used by the animation (results/vtk_animation.h) and the truck's
+/// stress hot spots (apps/flexmb/commands/lane_change.h). `values` and `von_mises`
 /// are scratch and result, resized only when their size differs (no
 /// allocation on repeated calls). Throws InputError naming the table if
 /// its points are not stress vectors, if w.size() differs from

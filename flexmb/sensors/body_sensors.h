@@ -2,7 +2,7 @@
 /// \file body_sensors.h
 /// Sensors that read bodies: the pose of a body frame and energies.
 
-#include "flexmb/sensors/sensor.h"
+#include "flexmb/model/sensor.h"
 
 namespace flexmb {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "flexmb/sensors/sensor.h"
+#include "flexmb/model/sensor.h"
 
 namespace flexmb::reduction {
 struct StressTable;

@@ -2,7 +2,7 @@
 /// \file joint_sensors.h
 /// Sensors that read a joint: its coordinate and its reaction.
 
-#include "flexmb/sensors/sensor.h"
+#include "flexmb/model/sensor.h"
 
 namespace flexmb {
 

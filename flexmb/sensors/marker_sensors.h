@@ -3,7 +3,7 @@
 /// Sensors that read the kinematic state of one marker: position, velocity,
 /// acceleration and orientation.
 
-#include "flexmb/sensors/sensor.h"
+#include "flexmb/model/sensor.h"
 
 namespace flexmb {
 

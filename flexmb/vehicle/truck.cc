@@ -12,7 +12,7 @@
 #include "flexmb/forces/joint_motor.h"
 #include "flexmb/forces/rotational_spring_damper.h"
 #include "flexmb/forces/spring_damper.h"
-#include "flexmb/io/parse_context.h"
+#include "flexmb/model_file/parse_context.h"
 #include "flexmb/joints/distance.h"
 #include "flexmb/joints/gear.h"
 #include "flexmb/joints/prismatic.h"

@@ -17,7 +17,7 @@
 
 #include "flexmb/ancf/ancf_beam3d_body.h"
 #include "flexmb/ancf/ancf_statics.h"
-#include "flexmb/io/model_file.h"
+#include "flexmb/model_file/model_file.h"
 #include "flexmb/solver/simulator.h"
 
 namespace flexmb::ancf {

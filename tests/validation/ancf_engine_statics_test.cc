@@ -17,7 +17,7 @@
 
 #include "flexmb/ancf/ancf_statics.h"
 #include "flexmb/common/error.h"
-#include "flexmb/io/model_file.h"
+#include "flexmb/model_file/model_file.h"
 #include "flexmb/solver/initial_conditions.h"
 #include "flexmb/solver/statics.h"
 

@@ -22,7 +22,7 @@
 #include "flexmb/ancf/ancf_beam2d_body.h"
 #include "flexmb/ancf/ancf_cable3d_body.h"
 #include "flexmb/common/error.h"
-#include "flexmb/io/model_file.h"
+#include "flexmb/model_file/model_file.h"
 #include "flexmb/solver/simulator.h"
 
 namespace flexmb::ancf {

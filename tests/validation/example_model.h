@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "flexmb/io/model_file.h"
+#include "flexmb/model_file/model_file.h"
 #include "flexmb/model/model.h"
 #include "flexmb/solver/simulator.h"
 

@@ -23,8 +23,8 @@
 #include "flexmb/fe/assembly.h"
 #include "flexmb/fe/elements/solid_hex8.h"
 #include "flexmb/fe/modal.h"
-#include "flexmb/io/abaqus_reader.h"
-#include "flexmb/io/imported_matrices.h"
+#include "flexmb/fe_io/abaqus/abaqus_reader.h"
+#include "flexmb/fe_io/imported_matrices.h"
 
 namespace flexmb {
 namespace fe_calculix_matrices_test {

@@ -26,7 +26,7 @@
 #include "flexmb/fe/elements/solid_hex8.h"
 #include "flexmb/fe/elements/solid_tet10.h"
 #include "flexmb/fe/modal.h"
-#include "flexmb/io/abaqus_reader.h"
+#include "flexmb/fe_io/abaqus/abaqus_reader.h"
 
 namespace flexmb::fe {
 namespace fe_calculix_test {

@@ -10,7 +10,7 @@
 //   node (bending) equals the average of the centroid stresses S u_e
 //   (fe/elements/solid_hex8.h) of its eight (four) elements from the full
 //   solution, von Mises by hand;
-// - the deformed-mesh animation frame (io/vtk_animation.h) carries as cell
+// - the deformed-mesh animation frame (results/vtk_animation.h) carries as cell
 //   data "von_mises" the full-FE centroid von Mises stress of every element,
 //   non-zero for the loaded body (read back from the .vtu text);
 // - bending stress at mid span against beam theory 12 F (L - x) z / (b h^3).
@@ -31,7 +31,7 @@
 
 #include "flexmb/fe/assembly.h"
 #include "flexmb/fe/elements/solid_hex8.h"
-#include "flexmb/io/vtk_animation.h"
+#include "flexmb/results/vtk_animation.h"
 #include "flexmb/model/workspace.h"
 #include "flexmb/sensors/flexible_sensors.h"
 #include "tests/validation/flexible_body_fixture.h"

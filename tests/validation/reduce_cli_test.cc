@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "cli_runner.h"
-#include "flexmb/io/body_file.h"
+#include "flexmb/body_file/body_file.h"
 #include "cli_strip.h"
 #include "json_reader.h"
 

@@ -20,7 +20,7 @@
 #include "flexmb/fe/fe_model.h"
 #include "flexmb/fe/modal.h"
 #include "flexmb/fe/sparse_cholesky.h"
-#include "flexmb/io/exchange_set.h"
+#include "flexmb/fe_io/exchange_set.h"
 #include "flexmb/reduction/craig_bampton.h"
 #include "flexmb/reduction/craig_bampton_basis.h"
 #include "flexmb/reduction/rigid_modes.h"

@@ -29,7 +29,7 @@
 #include <cstdio>
 
 #include "bench/rotating_beam.h"
-#include "flexmb/io/body_file.h"
+#include "flexmb/body_file/body_file.h"
 #include "tests/validation/cli_runner.h"
 
 namespace flexmb {

@@ -1,4 +1,4 @@
-// The lane change's ParaView animation (vehicle/truck_animation.h): a short
+// The lane change's ParaView animation (results/truck_animation.h): a short
 // elastic-frame run of examples/truck_lane_change/truck.yaml (a coarser
 // frame mesh, reduced to few modes, keeps it fast) writes one frame per
 // 1/fps of simulated time and a .pvd listing them; in every frame the
@@ -7,7 +7,7 @@
 // the reduced body's mode matrix, to 1e-9 m; the loaded frame's von Mises
 // stress is non-zero; the rigid-frame run draws the undeformed frame mesh.
 // The frames are binary (base64) and read back by an independent decoder
-// (tests/unit/io/vtu_test_reader.h); the rods (drag link, tie rod, extra
+// (tests/unit/results/vtu_test_reader.h); the rods (drag link, tie rod, extra
 // arm) are line cells ending at their joints' marker origins to 1e-9 m, and
 // the axle hub, contact patches and steering column have cells.
 #include <gtest/gtest.h>
@@ -23,7 +23,7 @@
 #include "flexmb/bodies/flexible_body.h"
 #include "flexmb/joints/joint.h"
 #include "flexmb/model/model.h"
-#include "tests/unit/io/vtu_test_reader.h"
+#include "tests/unit/results/vtu_test_reader.h"
 #include "truck_harness.h"
 
 namespace flexmb::vehicle::testing {

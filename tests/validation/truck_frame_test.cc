@@ -21,7 +21,7 @@
 
 #include "flexmb/fe/assembly.h"
 #include "flexmb/fe/sparse_cholesky.h"
-#include "flexmb/io/body_file.h"
+#include "flexmb/body_file/body_file.h"
 #include "truck_harness.h"
 
 namespace flexmb::vehicle::testing {

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "flexmb/solver/simulator.h"
-#include "flexmb/vehicle/lane_change_test.h"
+#include "apps/flexmb/commands/lane_change.h"
 #include "flexmb/vehicle/tire.h"
 #include "flexmb/vehicle/truck.h"
 

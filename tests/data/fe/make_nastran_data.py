@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes the generated Nastran test data: one small model in every bulk data format variant the
-reader supports, for tests/unit/io/nastran_reader_test.cc (all variants must
+reader supports, for tests/unit/fe_io/nastran_reader_test.cc (all variants must
 read to the same mesh):
 
   nastran/variants/small.bdf    small field (8 columns), explicit +name

@@ -13,7 +13,7 @@
 #include <cmath>
 
 #include "flexmb/common/error.h"
-#include "flexmb/io/model_file.h"
+#include "flexmb/model_file/model_file.h"
 #include "flexmb/math/rotation.h"
 #include "tests/unit/ancf/ancf_test_util.h"
 

@@ -12,7 +12,7 @@
 #include "flexmb/ancf/line_element.h"
 #include "flexmb/bodies/body.h"
 #include "flexmb/common/error.h"
-#include "flexmb/io/model_file.h"
+#include "flexmb/model_file/model_file.h"
 #include "flexmb/math/rotation.h"
 
 namespace flexmb::ancf::test_util {

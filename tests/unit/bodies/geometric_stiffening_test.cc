@@ -17,8 +17,8 @@
 
 #include "flexmb/bodies/flexible_body.h"
 #include "flexmb/common/error.h"
-#include "flexmb/io/body_file.h"
-#include "flexmb/io/model_file.h"
+#include "flexmb/body_file/body_file.h"
+#include "flexmb/model_file/model_file.h"
 #include "flexmb/model/model.h"
 #include "flexmb/reduction/geometric_stiffness.h"
 #include "tests/unit/bodies/flexible_test_bodies.h"

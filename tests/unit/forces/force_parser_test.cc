@@ -14,7 +14,7 @@
 #include "flexmb/forces/point_torque.h"
 #include "flexmb/forces/rotational_spring_damper.h"
 #include "flexmb/forces/spring_damper.h"
-#include "flexmb/io/model_file.h"
+#include "flexmb/model_file/model_file.h"
 
 namespace flexmb {
 namespace {

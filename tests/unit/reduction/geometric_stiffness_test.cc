@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "flexmb/common/error.h"
-#include "flexmb/io/body_file.h"
+#include "flexmb/body_file/body_file.h"
 #include "flexmb/reduction/craig_bampton.h"
 #include "flexmb/reduction/geometric_stiffness.h"
 #include "tests/unit/fe/fe_test_models.h"

@@ -1,0 +1,197 @@
+#include "flexmb/fe_io/imported_matrices.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <utility>
+
+#include "flexmb/common/error.h"
+#include "flexmb/common/text.h"
+#include "flexmb/fe_io/abaqus/abaqus_reader.h"
+#include "flexmb/fe_io/calculix_matrices.h"
+#include "flexmb/fe_io/dof_map.h"
+#include "flexmb/fe_io/gmsh_reader.h"
+#include "flexmb/fe_io/harwell_boeing.h"
+#include "flexmb/fe_io/matrix_market.h"
+#include "flexmb/fe_io/matrix_text.h"
+#include "flexmb/fe_io/nastran/nastran_reader.h"
+#include "flexmb/fe_io/vtk_mesh.h"
+
+namespace flexmb::io {
+
+namespace {
+
+bool IsHarwellBoeing(const std::string& ext) {
+  return ext == ".hb" || ext == ".rb" || ext == ".rsa" || ext == ".rua" || ext == ".psa" || ext == ".hbf";
+}
+
+// reads one matrix by its extension; `n` is the DOF count for CalculiX files
+fe::SparseMat ReadMatrix(const std::string& path, const std::string& what, int n) {
+  const std::string ext = LowerExtension(path);
+  if (IsHarwellBoeing(ext)) return ReadHarwellBoeing(path).A;
+  if (ext == ".mtx") return ReadMatrixMarket(path).A;
+  if (ext == ".sti" || ext == ".mas") {
+    if (n <= 0) throw InputError("a CalculiX matrix needs its job.dof file", {path, 0, what});
+    return ReadCalculixMatrix(path, n);
+  }
+  throw InputError("unknown matrix file type " + QuoteToken(ext) +
+                       " (expected .hb/.rb/.rsa/.rua Harwell-Boeing, .mtx Matrix Market, or CalculiX .sti/.mas)",
+                   {path, 0, what});
+}
+
+fe::Mesh ReadGeometry(const std::string& path) {
+  if (path.empty()) throw InputError("imported matrices need a geometry file (node coordinates)");
+  const std::string ext = LowerExtension(path);
+  if (ext == ".vtk") return ReadVtk(path);
+  if (ext == ".inp") return ReadAbaqus(path);
+  if (ext == ".msh") return ReadGmsh(path);
+  if (ext == ".bdf" || ext == ".nas" || ext == ".dat" || ext == ".blk" || ext == ".bulk") return ReadNastran(path);
+  throw InputError("unknown geometry file type " + QuoteToken(ext) + " (expected .vtk, .inp, .msh, .bdf/.nas/.dat)",
+                   {path, 0, "geometry"});
+}
+
+std::string RowName(const MatrixRowMap& map, int r) {
+  const DofMapRow& d = map.rows[static_cast<size_t>(r)];
+  return "row " + std::to_string(r + 1) + " = node " + std::to_string(d.node_id) + " " + fe::kDofComponentNames[d.component - 1];
+}
+
+// square, finite, symmetric to 1e-10 of the largest entry; returns the
+// exactly symmetric matrix (the mean of A and its transpose if it differs)
+fe::SparseMat CheckMatrix(const fe::SparseMat& A, const std::string& path, const std::string& what,
+                          const MatrixRowMap& map) {
+  if (A.rows() != A.cols()) {
+    throw InputError(what + " is " + std::to_string(A.rows()) + " x " + std::to_string(A.cols()) + ", must be square",
+                     {path, 0, what});
+  }
+  for (int j = 0; j < A.outerSize(); ++j) {
+    for (fe::SparseMat::InnerIterator it(A, j); it; ++it) {
+      if (!std::isfinite(it.value())) {
+        throw InputError("value is not finite", {path, 0,
+                         what + " entry (" + RowName(map, static_cast<int>(it.row())) + ", column " +
+                             std::to_string(it.col() + 1) + ")"});
+      }
+    }
+  }
+  const Asymmetry a = MeasureAsymmetry(A);
+  if (a.worst > 1e-10 * a.max_abs) {
+    const double aij = A.coeff(a.row, a.col), aji = A.coeff(a.col, a.row);
+    const DofMapRow& r = map.rows[static_cast<size_t>(a.row)];
+    const DofMapRow& c = map.rows[static_cast<size_t>(a.col)];
+    throw InputError("matrix is not symmetric: worst entry " + what + "(" + std::to_string(a.row + 1) + "," +
+                         std::to_string(a.col + 1) + ") = " + FormatExact(aij) + " but " + what + "(" +
+                         std::to_string(a.col + 1) + "," + std::to_string(a.row + 1) + ") = " + FormatExact(aji) +
+                         ", difference more than 1e-10 of the largest |entry| " + FormatExact(a.max_abs) +
+                         " (row " + std::to_string(a.row + 1) + " = node " + std::to_string(r.node_id) + " " +
+                         fe::kDofComponentNames[r.component - 1] + ", column " + std::to_string(a.col + 1) + " = node " +
+                         std::to_string(c.node_id) + " " + fe::kDofComponentNames[c.component - 1] + ")",
+                     {path, 0, what});
+  }
+  if (a.worst == 0.0) return A;
+  const fe::SparseMat At = A.transpose();
+  fe::SparseMat S = 0.5 * (A + At);
+  S.makeCompressed();
+  return S;
+}
+
+}  // namespace
+
+fe::FeModel ReadImportedMatrices(const ImportedMatricesSpec& spec) {
+  if (spec.stiffness.empty() || spec.mass.empty()) {
+    throw InputError("imported matrices need a stiffness and a mass matrix file");
+  }
+
+  // DOF map: flexmb's format, or a CalculiX job.dof (given, or next to job.sti)
+  std::string dof_path = spec.dof_map;
+  if (dof_path.empty()) {
+    if (LowerExtension(spec.stiffness) != ".sti") {
+      throw InputError("a DOF map file is needed for " + spec.stiffness + " (only CalculiX .sti has its job.dof)",
+                       {spec.stiffness, 0, "stiffness"});
+    }
+    dof_path = std::filesystem::path(spec.stiffness).replace_extension(".dof").string();
+  }
+  const MatrixRowMap map = LowerExtension(dof_path) == ".dof" ? ReadCalculixDofs(dof_path) : ReadDofMap(dof_path);
+  const int n_map = static_cast<int>(map.rows.size());
+
+  fe::SparseMat K = ReadMatrix(spec.stiffness, "K", n_map);
+  fe::SparseMat M = ReadMatrix(spec.mass, "M", n_map);
+
+  // sizes: K square, M the same, one DOF map row per matrix row
+  if (K.rows() != K.cols()) {
+    throw InputError("K is " + std::to_string(K.rows()) + " x " + std::to_string(K.cols()) + ", must be square",
+                     {spec.stiffness, 0, "K"});
+  }
+  if (M.rows() != K.rows() || M.cols() != K.cols()) {
+    throw InputError("M is " + std::to_string(M.rows()) + " x " + std::to_string(M.cols()) + " but K (" +
+                         spec.stiffness + ") is " + std::to_string(K.rows()) + " x " + std::to_string(K.cols()),
+                     {spec.mass, 0, "M"});
+  }
+  const int n = static_cast<int>(K.rows());
+  if (n_map < n) {
+    throw InputError("row " + std::to_string(n_map + 1) + " of the " + std::to_string(n) + " x " + std::to_string(n) +
+                         " matrices (" + spec.stiffness + ") is not mapped: the DOF map has " +
+                         std::to_string(n_map) + " rows",
+                     {dof_path, 0, "row " + std::to_string(n_map + 1)});
+  }
+  if (n_map > n) {
+    throw InputError("the DOF map has " + std::to_string(n_map) + " rows but the matrices (" + spec.stiffness +
+                         ") only " + std::to_string(n),
+                     {dof_path, map.rows[static_cast<size_t>(n)].line, "row " + std::to_string(n + 1)});
+  }
+
+  // each (node, component) once
+  {
+    std::map<std::pair<int, int>, int> seen;
+    for (int r = 0; r < n; ++r) {
+      const DofMapRow& d = map.rows[static_cast<size_t>(r)];
+      const auto [it, inserted] = seen.emplace(std::make_pair(d.node_id, d.component), r);
+      if (!inserted) {
+        throw InputError("node " + std::to_string(d.node_id) + " " + fe::kDofComponentNames[d.component - 1] +
+                             " is mapped twice (rows " + std::to_string(it->second + 1) + " and " +
+                             std::to_string(r + 1) + ")",
+                         {dof_path, d.line, "row " + std::to_string(r + 1)});
+      }
+    }
+  }
+
+  K = CheckMatrix(K, spec.stiffness, "K", map);
+  M = CheckMatrix(M, spec.mass, "M", map);
+
+  fe::FeModel model;
+  model.mesh = ReadGeometry(spec.geometry);
+  model.mesh.IndexNodes();
+  // constraints, links and masses of a geometry deck are already in the matrices
+  model.mesh.constraints.clear();
+  model.mesh.rigid_links.clear();
+  model.mesh.point_masses.clear();
+
+  fe::AssembledModel a;
+  std::array<int, 6> none;
+  none.fill(-1);
+  a.dofs.full.assign(model.mesh.nodes.size(), none);
+  for (int r = 0; r < n; ++r) {
+    const DofMapRow& d = map.rows[static_cast<size_t>(r)];
+    const int node = model.mesh.NodeIndex(d.node_id);
+    if (node < 0) {
+      throw InputError("node " + std::to_string(d.node_id) + " does not exist in the geometry " + spec.geometry,
+                       {dof_path, d.line, "row " + std::to_string(r + 1)});
+    }
+    a.dofs.full[static_cast<size_t>(node)][static_cast<size_t>(d.component - 1)] = r;
+  }
+  a.dofs.free = a.dofs.full;
+  for (const fe::Node& node : model.mesh.nodes) a.dofs.node_ids.push_back(node.id);
+  a.dofs.n_full = n;
+  a.dofs.n_free = n;
+  a.K = std::move(K);
+  a.M = std::move(M);
+  a.M_full = a.M;
+  a.T.resize(n, n);
+  a.T.setIdentity();
+  a.T.makeCompressed();
+  model.imported = std::move(a);
+  return model;
+}
+
+}  // namespace flexmb::io

@@ -1,0 +1,190 @@
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include <Eigen/Geometry>
+
+#include "flexmb/common/error.h"
+#include "flexmb/fe_io/nastran/nastran_builder.h"
+
+namespace flexmb::io::nastran {
+
+using fe::Mat3;
+using fe::Vec3;
+
+fe::Element Builder::NewElement(const Entry& e, fe::ElementType type) {
+  fe::Element el;
+  el.id = e.Id(1, "EID");
+  CheckNewId(element_ids_, e, el.id, "element");
+  el.type = type;
+  el.origin = OriginOf(e);
+  return el;
+}
+
+void Builder::ReadNodes(const Entry& e, fe::Element& el, int first, int count) {
+  for (int k = 0; k < count; ++k) {
+    std::string what = "G";
+    what += std::to_string(k + 1);
+    const int n = NodeIndex(e, first + k, what.c_str());
+    for (int m : el.nodes)
+      if (m == n) e.Fail(first + k, "node " + e.Text(first + k) + " appears twice");
+    el.nodes.push_back(n);
+  }
+}
+
+void Builder::AddShell(const Entry& e) {
+  const bool quad = e.name() == "CQUAD4";
+  fe::Element el = NewElement(e, quad ? fe::ElementType::kQuad4 : fe::ElementType::kTria3);
+  const int nn = quad ? 4 : 3;
+  const int pid = e.Int(2, "PID", el.id);
+  el.property = PropertyIndex(e, 2, pid, {"PSHELL"});
+  ReadNodes(e, el, 3, nn);
+  // THETA or MCID: material orientation, irrelevant for isotropic MAT1
+  if (!e.Blank(3 + nn) && nastran::LooksReal(e.Text(3 + nn)))
+    e.Real(3 + nn, "THETA");
+  else
+    e.Int(3 + nn, "MCID", 0);
+  el.shell_offset = e.Real(4 + nn, "ZOFFS", 0.0);
+  const int tflag = e.Int(10, "TFLAG", 0);
+  if (tflag != 0 && tflag != 1) e.Fail(10, "TFLAG must be 0 or 1");
+  const double t = mesh_.shell_sections[el.property].thickness;
+  for (int k = 0; k < nn; ++k) {
+    if (e.Blank(11 + k)) continue;
+    std::string what = "T";
+    what += std::to_string(k + 1);
+    const double ti = e.Real(11 + k, what.c_str());
+    const double expected = tflag == 1 ? 1.0 : t;
+    if (std::abs(ti - expected) > 1e-6 * expected)
+      e.Fail(11 + k, "corner thicknesses T1-T" + std::to_string(nn) +
+                         " different from the PSHELL thickness are not supported");
+  }
+  if (e.Size() > 10 + nn) e.Fail(11 + nn, "unexpected field");
+  mesh_.elements.push_back(std::move(el));
+}
+
+void Builder::AddSolid(const Entry& e) {
+  const bool tet = e.name() == "CTETRA";
+  const int max_nodes = tet ? 10 : 20;
+  int given = 0;
+  for (int k = 0; k < max_nodes; ++k) given += e.Blank(3 + k) ? 0 : 1;
+  fe::ElementType type = fe::ElementType::kHex8;
+  if (tet) {
+    if (given != 4 && given != 10)
+      e.Fail("CTETRA with " + std::to_string(given) + " grid points: only 4 or 10 are supported");
+    type = given == 4 ? fe::ElementType::kTet4 : fe::ElementType::kTet10;
+  } else if (given != 8) {
+    e.Fail("CHEXA with " + std::to_string(given) +
+                   " grid points: only 8 are supported (20-node CHEXA is unsupported)");
+  }
+  if (e.Size() > 2 + max_nodes) e.Fail(3 + max_nodes, "unexpected field");
+  fe::Element el = NewElement(e, type);
+  el.property = PropertyIndex(e, 2, e.Id(2, "PID"), {"PSOLID"});
+  ReadNodes(e, el, 3, fe::NodeCount(type));
+  mesh_.elements.push_back(std::move(el));
+}
+
+void Builder::AddBeam(const Entry& e) {
+  const bool bar = e.name() == "CBAR";
+  fe::Element el = NewElement(e, fe::ElementType::kBeam2);
+  const Card* def_card = bar ? baror_ : beamor_;
+  std::optional<Entry> defaults;
+  if (def_card) defaults.emplace(*def_card, deck_);
+  // PID, orientation and OFFT default to the BAROR / BEAMOR values
+  const int pid = !e.Blank(2) ? e.Id(2, "PID") : defaults && !defaults->Blank(2) ? defaults->Id(2, "PID") : el.id;
+  el.property = PropertyIndex(e, 2, pid, bar ? std::initializer_list<const char*>{"PBAR", "PBARL"}
+                                             : std::initializer_list<const char*>{"PBEAM", "PBEAML"});
+  ReadNodes(e, el, 3, 2);
+  const int ga = el.nodes[0], gb = el.nodes[1];
+  const Vec3& xa = mesh_.nodes[ga].x;
+  const Vec3& xb = mesh_.nodes[gb].x;
+
+  const bool own_v = !(e.Blank(5) && e.Blank(6) && e.Blank(7));
+  if (!own_v && !(defaults && !(defaults->Blank(5) && defaults->Blank(6) && defaults->Blank(7))))
+    e.Fail(5, "orientation vector X1-X3 or G0 is missing (and no " + std::string(bar ? "BAROR" : "BEAMOR") +
+                  " default)");
+  const Entry& ve = own_v ? e : *defaults;
+  // CBEAM field 9 may hold BIT (a real, p-elements only): then OFFT is the default
+  const bool own_offt = !e.Blank(8) && (bar || !nastran::LooksReal(e.Text(8)));
+  const bool def_offt = !own_offt && defaults && !defaults->Blank(8) &&
+                        (bar || !nastran::LooksReal(defaults->Text(8)));
+  const std::string offt = own_offt ? e.Text(8) : def_offt ? defaults->Text(8) : "GGG";
+  const Entry& oe = def_offt ? *defaults : e;
+  if (offt.size() != 3 || (offt[0] != 'G' && offt[0] != 'B') || (offt[1] != 'G' && offt[1] != 'O') ||
+      (offt[2] != 'G' && offt[2] != 'O'))
+    oe.Fail(8, "OFFT '" + offt + "' is not one of GGG, BGG, GGO, BGO, GOG, BOG, GOO, BOO");
+
+  Vec3 v;
+  if (!ve.Blank(5) && !nastran::LooksReal(ve.Text(5)) && ve.Blank(6) && ve.Blank(7)) {
+    const int g0 = NodeIndex(ve, 5, "G0");
+    if (g0 == ga || g0 == gb) ve.Fail(5, "G0 must differ from GA and GB");
+    v = mesh_.nodes[g0].x - xa;
+  } else {
+    v = Vec3(ve.Real(5, "X1", 0.0), ve.Real(6, "X2", 0.0), ve.Real(7, "X3", 0.0));
+    if (offt[0] == 'G' && node_cd_[ga] != 0) v = BasisAt(Coord(e, 3, node_cd_[ga]), xa) * v;
+  }
+  if (!(v.norm() > 0.0) || !v.allFinite()) ve.Fail(5, "orientation vector is zero or not finite");
+  el.orientation = v;
+
+  for (int f : {9, 10})
+    if (!e.Blank(f) && e.Text(f) != "0") e.Fail(f, "pin flags PA/PB are not supported");
+  if (!bar)
+    for (int f : {17, 18})
+      if (!e.Blank(f) && e.Text(f) != "0") e.Fail(f, "warping scalar points SA/SB are not supported");
+  if (e.Size() > (bar ? 16 : 18)) e.Fail(bar ? 17 : 19, "unexpected field");
+
+  const Vec3 wa(e.Real(11, "W1A", 0.0), e.Real(12, "W2A", 0.0), e.Real(13, "W3A", 0.0));
+  const Vec3 wb(e.Real(14, "W1B", 0.0), e.Real(15, "W2B", 0.0), e.Real(16, "W3B", 0.0));
+  el.offset_a = Offset(e, offt[1], wa, ga, xa, xb, v, 11);
+  el.offset_b = Offset(e, offt[2], wb, gb, xa, xb, v, 14);
+  if (!el.offset_a.allFinite() || !el.offset_b.allFinite()) e.Fail(11, "offsets are not finite");
+  mesh_.elements.push_back(std::move(el));
+}
+
+// end offset in basic: 'G' in the node's displacement system, 'O' in the
+// offset system (x from GA to GB, y in the plane of x and v)
+Vec3 Builder::Offset(const Entry& e, char how, const Vec3& w, int node, const Vec3& xa, const Vec3& xb,
+                     const Vec3& v, int field) {
+  if (w.isZero(0.0)) return w;
+  if (how == 'G') {
+    const int cd = node_cd_[node];
+    return cd == 0 ? w : Vec3(BasisAt(Coord(e, field, cd), mesh_.nodes[node].x) * w);
+  }
+  const Vec3 d = xb - xa;
+  if (!(d.norm() > 0.0)) e.Fail(field, "offset system (OFFT 'O') undefined: GA and GB coincide");
+  const Vec3 ex = d.normalized();
+  const Vec3 zr = ex.cross(v);
+  if (!(zr.norm() > 1e-8 * v.norm())) e.Fail(field, "offset system (OFFT 'O') undefined: v is parallel to GA-GB");
+  const Vec3 ez = zr.normalized();
+  return Columns(ex, ez.cross(ex), ez) * w;
+}
+
+void Builder::AddConm2(const Entry& e) {
+  fe::PointMass pm;
+  pm.id = e.Id(1, "EID");
+  CheckNewId(element_ids_, e, pm.id, "element");
+  pm.node = NodeIndex(e, 2, "G");
+  const int cid = e.Int(3, "CID", 0);
+  if (cid < -1) e.Fail(3, "CID must be -1 or larger");
+  pm.mass = NonNegative(e, 4, "mass M", e.Real(4, "M"));
+  const Vec3 x(e.Real(5, "X1", 0.0), e.Real(6, "X2", 0.0), e.Real(7, "X3", 0.0));
+  const double i11 = e.Real(9, "I11", 0.0), i21 = e.Real(10, "I21", 0.0), i22 = e.Real(11, "I22", 0.0);
+  const double i31 = e.Real(12, "I31", 0.0), i32 = e.Real(13, "I32", 0.0), i33 = e.Real(14, "I33", 0.0);
+  NonNegative(e, 9, "I11", i11);
+  NonNegative(e, 11, "I22", i22);
+  NonNegative(e, 14, "I33", i33);
+  if (e.Size() > 14) e.Fail(15, "unexpected field");
+  // Nastran supplies the minus signs of the off-diagonal terms (QRG CONM2):
+  // I21 = int x2 x1 dm etc. are products of inertia
+  Mat3 inertia;
+  inertia << i11, -i21, -i31, -i21, i22, -i32, -i31, -i32, i33;
+  const Vec3& xn = mesh_.nodes[pm.node].x;
+  Mat3 basis = Mat3::Identity();
+  if (cid > 0) basis = BasisAt(Coord(e, 3, cid), xn);
+  pm.offset = cid == -1 ? Vec3(x - xn) : Vec3(basis * x);
+  pm.inertia = basis * inertia * basis.transpose();
+  if (!pm.offset.allFinite() || !pm.inertia.allFinite()) e.Fail(5, "offset or inertia is not finite");
+  pm.origin = OriginOf(e);
+  mesh_.point_masses.push_back(pm);
+}
+
+}  // namespace flexmb::io::nastran

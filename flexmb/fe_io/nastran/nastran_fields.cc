@@ -1,0 +1,437 @@
+#include "flexmb/fe_io/nastran/nastran_fields.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+namespace flexmb::io::nastran {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kMaxIncludeDepth = 32;
+
+bool IsSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+bool IsDigit(char c) { return c >= '0' && c <= '9'; }
+char ToUpper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+
+std::string_view Trim(std::string_view s) {
+  size_t b = 0, e = s.size();
+  while (b < e && IsSpace(s[b])) ++b;
+  while (e > b && IsSpace(s[e - 1])) --e;
+  return s.substr(b, e - b);
+}
+
+std::string Upper(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = ToUpper(c);
+  return out;
+}
+
+bool StartsWithNoCase(std::string_view s, std::string_view prefix) {
+  if (s.size() < prefix.size()) return false;
+  for (size_t i = 0; i < prefix.size(); ++i)
+    if (ToUpper(s[i]) != prefix[i]) return false;
+  return true;
+}
+
+// tabs jump to the next multiple of 8 columns, as on a punched card
+std::string ExpandTabs(std::string_view line) {
+  std::string out;
+  out.reserve(line.size() + 16);
+  for (char c : line) {
+    if (c == '\t') {
+      do out += ' ';
+      while (out.size() % 8 != 0);
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+// "BEGIN BULK" (any case, any blanks between), without a comment
+bool IsBeginBulk(std::string_view line) {
+  const size_t dollar = line.find('$');
+  if (dollar != std::string_view::npos) line = line.substr(0, dollar);
+  line = Trim(line);
+  if (!StartsWithNoCase(line, "BEGIN")) return false;
+  std::string_view rest = line.substr(5);
+  if (rest.empty() || !IsSpace(rest[0])) return false;
+  return Upper(Trim(rest)) == "BULK";
+}
+
+std::vector<std::string_view> SplitLines(std::string_view text) {
+  std::vector<std::string_view> lines;
+  size_t start = 0;
+  while (start <= text.size()) {
+    size_t end = text.find('\n', start);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = text.substr(start, end - start);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    lines.push_back(line);
+    if (end == text.size()) break;
+    start = end + 1;
+  }
+  return lines;
+}
+
+std::string ReadText(const std::string& path, const ErrorContext& where) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec))
+    throw InputError("cannot open '" + path + "': no such regular file", where);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot open '" + path + "'", where);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  std::string text = ss.str();
+  // a UTF-8 byte order mark is not part of the first card
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
+  return text;
+}
+
+enum class NumStatus { kOk, kMalformed, kRange };
+
+NumStatus ParseRealImpl(std::string_view s, double* value) {
+  s = Trim(s);
+  const size_t n = s.size();
+  size_t i = 0;
+  std::string buf;
+  buf.reserve(n + 2);
+  if (i < n && (s[i] == '+' || s[i] == '-')) {
+    if (s[i] == '-') buf += '-';
+    ++i;
+  }
+  size_t digits = 0;
+  while (i < n && IsDigit(s[i])) {
+    buf += s[i++];
+    ++digits;
+  }
+  if (i < n && s[i] == '.') {
+    buf += s[i++];
+    while (i < n && IsDigit(s[i])) {
+      buf += s[i++];
+      ++digits;
+    }
+  }
+  if (digits == 0) return NumStatus::kMalformed;
+  if (i < n) {
+    // exponent: E or D with optional sign, or a bare sign ("1.-3")
+    const char c = ToUpper(s[i]);
+    if (c == 'E' || c == 'D') {
+      ++i;
+    } else if (c != '+' && c != '-') {
+      return NumStatus::kMalformed;
+    }
+    buf += 'e';
+    if (i < n && (s[i] == '+' || s[i] == '-')) buf += s[i++];
+    size_t exp_digits = 0;
+    while (i < n && IsDigit(s[i])) {
+      buf += s[i++];
+      ++exp_digits;
+    }
+    if (exp_digits == 0 || i != n) return NumStatus::kMalformed;
+  }
+  double v = 0.0;
+  const auto res = std::from_chars(buf.data(), buf.data() + buf.size(), v);
+  if (res.ec == std::errc::result_out_of_range) return NumStatus::kRange;
+  if (res.ec != std::errc() || res.ptr != buf.data() + buf.size()) return NumStatus::kMalformed;
+  if (!std::isfinite(v)) return NumStatus::kRange;
+  *value = v;
+  return NumStatus::kOk;
+}
+
+// reads the lines of the main file and its INCLUDEs into cards
+class DeckReader {
+ public:
+  Deck deck;
+
+  void ReadMain(const std::string& path) {
+    const std::string text = ReadText(path, ErrorContext{path, 0, ""});
+    const std::vector<std::string_view> lines = SplitLines(text);
+    size_t first = 0;
+    for (size_t k = 0; k < lines.size(); ++k) {
+      if (IsBeginBulk(lines[k])) {
+        first = k + 1;
+        break;
+      }
+    }
+    std::error_code ec;
+    const fs::path canonical = fs::weakly_canonical(path, ec);
+    stack_.push_back(ec ? path : canonical.string());
+    deck.files.push_back(path);
+    ReadLines(lines, first, 0, 0);
+    Flush();
+  }
+
+ private:
+  std::vector<std::string> stack_;  // canonical paths of the files being read
+  Card current_;
+  bool has_current_ = false;
+  bool done_ = false;
+
+  [[noreturn]] void Fail(int file, int line, const std::string& message) const {
+    throw InputError(message, ErrorContext{deck.files[file], line, ""});
+  }
+
+  void Flush() {
+    if (!has_current_) return;
+    while (!current_.fields.empty() && current_.fields.back().empty()) {
+      current_.fields.pop_back();
+      current_.lines.pop_back();
+    }
+    deck.cards.push_back(std::move(current_));
+    current_ = Card();
+    has_current_ = false;
+  }
+
+  void Append(std::vector<std::string>& fields, size_t width, int line) {
+    fields.resize(width);
+    for (std::string& f : fields) {
+      current_.fields.push_back(std::move(f));
+      current_.lines.push_back(line);
+    }
+  }
+
+  void ReadLines(const std::vector<std::string_view>& lines, size_t first, int file, int depth) {
+    for (size_t k = first; k < lines.size() && !done_; ++k) {
+      const int line_no = static_cast<int>(k) + 1;
+      std::string_view raw = lines[k];
+      if (StartsWithNoCase(raw, "INCLUDE") &&
+          (raw.size() == 7 || IsSpace(raw[7]) || raw[7] == '\'' || raw[7] == '"')) {
+        Flush();
+        k = Include(lines, k, file, depth);
+        continue;
+      }
+      const size_t dollar = raw.find('$');
+      if (dollar != std::string_view::npos) raw = raw.substr(0, dollar);
+      if (Trim(raw).empty()) continue;
+      if (StartsWithNoCase(raw, "BEGIN") && (raw.size() == 5 || IsSpace(raw[5]))) {
+        if (IsBeginBulk(raw)) continue;
+        Fail(file, line_no, "'" + std::string(Trim(raw)) +
+                                "': BEGIN sections other than BEGIN BULK (part superelements, "
+                                "auxiliary models) are not supported");
+      }
+      ReadDataLine(raw, file, line_no);
+    }
+  }
+
+  void ReadDataLine(std::string_view raw, int file, int line_no) {
+    std::vector<std::string> fields;
+    std::string first;
+    bool large = false;
+    if (raw.find(',') != std::string_view::npos) {
+      // free field: comma separated, blanks around commas ignored
+      std::vector<std::string_view> parts;
+      size_t start = 0;
+      while (true) {
+        const size_t comma = raw.find(',', start);
+        parts.push_back(raw.substr(start, comma == std::string_view::npos ? std::string_view::npos
+                                                                         : comma - start));
+        if (comma == std::string_view::npos) break;
+        start = comma + 1;
+      }
+      first = Upper(Trim(parts[0]));
+      large = !first.empty() && (first.front() == '*' || first.back() == '*');
+      const size_t max_data = large ? 4 : 8;
+      if (parts.size() > max_data + 2)
+        Fail(file, line_no,
+             "free-field line has " + std::to_string(parts.size()) + " fields; at most " +
+                 std::to_string(max_data + 2) + " (name, " + std::to_string(max_data) +
+                 " data fields, continuation) are allowed per line");
+      for (size_t p = 1; p < parts.size() && p <= max_data; ++p) fields.push_back(Upper(Trim(parts[p])));
+    } else {
+      const std::string line = ExpandTabs(raw);
+      first = Upper(Trim(std::string_view(line).substr(0, std::min<size_t>(8, line.size()))));
+      large = !first.empty() && (first.front() == '*' || first.back() == '*');
+      const size_t width = large ? 16 : 8;
+      const size_t count = large ? 4 : 8;
+      for (size_t f = 0; f < count; ++f) {
+        const size_t col = 8 + f * width;
+        fields.push_back(col < line.size() ? Upper(Trim(std::string_view(line).substr(col, width)))
+                                           : std::string());
+      }
+    }
+    const bool continuation = first.empty() || first.front() == '+' || first.front() == '*';
+    if (continuation) {
+      if (!has_current_)
+        Fail(file, line_no, "continuation line without a preceding card");
+      if (!large) {
+        const size_t padded = (current_.fields.size() + 7) / 8 * 8;
+        current_.fields.resize(padded);
+        current_.lines.resize(padded, line_no);
+      }
+      Append(fields, large ? 4 : 8, line_no);
+      return;
+    }
+    Flush();
+    std::string name = first;
+    if (name.back() == '*') name.pop_back();
+    bool valid = !name.empty() && name.front() >= 'A' && name.front() <= 'Z';
+    for (char c : name) valid = valid && ((c >= 'A' && c <= 'Z') || IsDigit(c));
+    if (!valid)
+      Fail(file, line_no,
+           "malformed card name '" + first +
+               "' (fixed-format fields must be aligned to 8 columns, 16 for large field; "
+               "free-format fields are separated by commas)");
+    if (name == "ENDDATA") {
+      done_ = true;
+      return;
+    }
+    current_.name = std::move(name);
+    current_.file = file;
+    current_.line = line_no;
+    has_current_ = true;
+    Append(fields, large ? 4 : 8, line_no);
+  }
+
+  // handles the INCLUDE at lines[k]; returns the index of its last line
+  size_t Include(const std::vector<std::string_view>& lines, size_t k, int file, int depth) {
+    const int line_no = static_cast<int>(k) + 1;
+    std::string_view rest = Trim(lines[k].substr(7));
+    std::string name;
+    if (!rest.empty() && (rest[0] == '\'' || rest[0] == '"')) {
+      const char quote = rest[0];
+      std::string_view part = rest.substr(1);
+      while (true) {
+        const size_t close = part.find(quote);
+        if (close != std::string_view::npos) {
+          name += part.substr(0, close);
+          break;
+        }
+        // the name continues on the next line
+        name += Trim(part);
+        if (++k >= lines.size())
+          Fail(file, line_no, "INCLUDE: unterminated file name (missing closing quote)");
+        part = Trim(lines[k]);
+      }
+    } else {
+      size_t end = 0;
+      while (end < rest.size() && !IsSpace(rest[end]) && rest[end] != '$') ++end;
+      name = std::string(rest.substr(0, end));
+    }
+    if (Trim(name).empty()) Fail(file, line_no, "INCLUDE without a file name");
+    if (depth + 1 > kMaxIncludeDepth)
+      Fail(file, line_no, "INCLUDE nested deeper than " + std::to_string(kMaxIncludeDepth) + " levels");
+    fs::path target(name);
+    if (target.is_relative()) target = fs::path(deck.files[file]).parent_path() / target;
+    const std::string display = target.lexically_normal().string();
+    std::error_code ec;
+    const fs::path canonical = fs::weakly_canonical(target, ec);
+    const std::string key = ec ? display : canonical.string();
+    for (const std::string& open : stack_)
+      if (open == key) Fail(file, line_no, "INCLUDE cycle: '" + display + "' is already being read");
+    const std::string text = ReadText(display, ErrorContext{deck.files[file], line_no, "INCLUDE"});
+    const std::vector<std::string_view> included = SplitLines(text);
+    const int index = static_cast<int>(deck.files.size());
+    deck.files.push_back(display);
+    stack_.push_back(key);
+    ReadLines(included, 0, index, depth + 1);
+    Flush();
+    stack_.pop_back();
+    return k;
+  }
+};
+
+}  // namespace
+
+Deck ReadDeck(const std::string& path) {
+  DeckReader reader;
+  reader.ReadMain(path);
+  return std::move(reader.deck);
+}
+
+bool ParseInteger(std::string_view text, int* value) {
+  text = Trim(text);
+  if (text.empty()) return false;
+  bool negative = false;
+  if (text[0] == '+' || text[0] == '-') {
+    negative = text[0] == '-';
+    text.remove_prefix(1);
+  }
+  if (text.empty()) return false;
+  for (char c : text)
+    if (!IsDigit(c)) return false;
+  long long v = 0;
+  const auto res = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (res.ec != std::errc() || res.ptr != text.data() + text.size()) return false;
+  if (negative) v = -v;
+  if (v < INT32_MIN || v > INT32_MAX) return false;
+  *value = static_cast<int>(v);
+  return true;
+}
+
+bool ParseReal(std::string_view text, double* value) {
+  return ParseRealImpl(text, value) == NumStatus::kOk;
+}
+
+bool LooksReal(std::string_view text) {
+  text = Trim(text);
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = ToUpper(text[i]);
+    if (c == '.' || c == 'E' || c == 'D') return true;
+    if (i > 0 && (c == '+' || c == '-')) return true;
+  }
+  return false;
+}
+
+std::string Entry::Entity() const {
+  if (card_.fields.empty() || card_.fields[0].empty()) return card_.name;
+  return card_.name + " " + card_.fields[0];
+}
+
+const std::string& Entry::Text(int i) const {
+  static const std::string kEmpty;
+  if (i < 1 || i > Size()) return kEmpty;
+  return card_.fields[i - 1];
+}
+
+int Entry::Line(int i) const {
+  if (i < 1 || i > Size()) return card_.line;
+  return card_.lines[i - 1];
+}
+
+ErrorContext Entry::Context(int i) const { return ErrorContext{File(), Line(i), Entity()}; }
+
+void Entry::Fail(int i, const std::string& message) const { throw InputError(message, Context(i)); }
+
+int Entry::Int(int i, const char* what) const {
+  if (Blank(i)) Fail(i, std::string(what) + " is required (field is blank)");
+  int v = 0;
+  if (!ParseInteger(Text(i), &v))
+    Fail(i, std::string(what) + ": malformed integer '" + Text(i) + "'");
+  return v;
+}
+
+int Entry::Int(int i, const char* what, int fallback) const {
+  return Blank(i) ? fallback : Int(i, what);
+}
+
+int Entry::Id(int i, const char* what) const {
+  const int v = Int(i, what);
+  if (v <= 0) Fail(i, std::string(what) + " must be a positive integer, got " + std::to_string(v));
+  return v;
+}
+
+double Entry::Real(int i, const char* what) const {
+  if (Blank(i)) Fail(i, std::string(what) + " is required (field is blank)");
+  double v = 0.0;
+  switch (ParseRealImpl(Text(i), &v)) {
+    case NumStatus::kOk: return v;
+    case NumStatus::kRange:
+      Fail(i, std::string(what) + ": number '" + Text(i) + "' is not finite in double precision");
+    case NumStatus::kMalformed: break;
+  }
+  Fail(i, std::string(what) + ": malformed number '" + Text(i) + "'");
+}
+
+double Entry::Real(int i, const char* what, double fallback) const {
+  return Blank(i) ? fallback : Real(i, what);
+}
+
+}  // namespace flexmb::io::nastran

@@ -1,0 +1,209 @@
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "flexmb/common/error.h"
+#include "flexmb/fe_io/nastran/nastran_builder.h"
+#include "flexmb/fe_io/nastran/nastran_sections.h"
+
+namespace flexmb::io::nastran {
+
+void Builder::AddProperty(const Entry& e) {
+  const int pid = e.Id(1, "PID");
+  CheckNewId(property_origin_, e, pid, "property");
+  const std::string& n = e.name();
+  int index = -1;
+  if (n == "PSHELL") {
+    index = AddPshell(e, pid);
+  } else if (n == "PSOLID") {
+    fe::SolidSection s;
+    s.id = pid;
+    s.material = MaterialIndex(e, 2, e.Id(2, "MID"));
+    e.Int(3, "CORDM", 0);
+    const std::string& fctn = e.Text(7);
+    if (!fctn.empty() && fctn != "SMECH")
+      e.Fail(7, "FCTN = " + fctn + " (fluid elements) is not supported");
+    s.origin = OriginOf(e);
+    index = static_cast<int>(mesh_.solid_sections.size());
+    mesh_.solid_sections.push_back(s);
+  } else {
+    fe::BeamSection s;
+    s.id = pid;
+    s.origin = OriginOf(e);
+    if (n == "PBAR") ReadPbar(e, s);
+    if (n == "PBARL" || n == "PBEAML") ReadBeamLibrary(e, s);
+    if (n == "PBEAM") ReadPbeam(e, s);
+    index = static_cast<int>(mesh_.beam_sections.size());
+    mesh_.beam_sections.push_back(s);
+  }
+  properties_[pid] = PropertyRef{n, index};
+}
+
+int Builder::AddPshell(const Entry& e, int pid) {
+  fe::ShellSection s;
+  s.id = pid;
+  if (e.Blank(2)) e.Fail(2, "MID1 is blank: shells without membrane stiffness are not supported");
+  const int mid1 = e.Id(2, "MID1");
+  s.material = MaterialIndex(e, 2, mid1);
+  s.thickness = Positive(e, 3, "thickness T", e.Real(3, "T"));
+  if (e.Blank(4)) e.Fail(4, "MID2 is blank: membrane-only shells are not supported");
+  const int mid2 = e.Int(4, "MID2");
+  if (mid2 != mid1)
+    e.Fail(4, "MID2 = " + std::to_string(mid2) + " differs from MID1 = " + std::to_string(mid1) +
+                  ": unsupported (flexmb's shells use one isotropic material)");
+  const double ratio = e.Real(5, "12I/T**3", 1.0);
+  if (std::abs(ratio - 1.0) > 1e-6)
+    e.Fail(5, "12I/T**3 = " + Str(ratio) + ": bending stiffness ratios other than 1 are not supported");
+  // blank MID3: Nastran neglects transverse shear flexibility; flexmb's
+  // shells keep it (Mindlin), which makes no difference for thin shells
+  if (!e.Blank(6) && e.Int(6, "MID3") != mid1)
+    e.Fail(6, "MID3 = " + e.Text(6) + " differs from MID1 = " + std::to_string(mid1) + ": unsupported");
+  const double ts = e.Real(7, "TS/T", 5.0 / 6.0);
+  if (std::abs(ts - 5.0 / 6.0) > 1e-4)
+    e.Fail(7, "TS/T = " + Str(ts) + ": flexmb's shells use the shear factor 5/6 (unsupported)");
+  s.nsm = NonNegative(e, 8, "NSM", e.Real(8, "NSM", 0.0));
+  e.Real(9, "Z1", 0.0);
+  e.Real(10, "Z2", 0.0);
+  if (!e.Blank(11)) e.Fail(11, "MID4 (membrane-bending coupling) is not supported");
+  s.origin = OriginOf(e);
+  mesh_.shell_sections.push_back(s);
+  return static_cast<int>(mesh_.shell_sections.size()) - 1;
+}
+
+// Nastran I1 is int y^2 dA (bending in plane 1 = element x-y, about z) and
+// I2 is int z^2 dA: I1 -> Iz, I2 -> Iy, I12 -> Iyz; K1, K2 (planes 1, 2,
+// i.e. shear along y, z) -> ky, kz
+void Builder::ReadPbar(const Entry& e, fe::BeamSection& s) {
+  s.material = MaterialIndex(e, 2, e.Id(2, "MID"));
+  s.A = e.Real(3, "A", 0.0);
+  s.Iz = e.Real(4, "I1", 0.0);
+  s.Iy = e.Real(5, "I2", 0.0);
+  s.J = e.Real(6, "J", 0.0);
+  s.nsm = e.Real(7, "NSM", 0.0);
+  for (int f = 9; f <= 16; ++f) e.Real(f, "stress recovery point", 0.0);
+  // blank or 0 K1, K2: no shear flexibility; Nastran ignores them if I12 != 0
+  s.ky = e.Real(17, "K1", 0.0);
+  s.kz = e.Real(18, "K2", 0.0);
+  s.Iyz = e.Real(19, "I12", 0.0);
+  if (s.Iyz != 0.0) s.ky = s.kz = 0.0;
+  if (e.Size() > 19) e.Fail(20, "unexpected field after I12");
+  Positive(e, 3, "area A", s.A);
+  Positive(e, 4, "I1", s.Iz);
+  Positive(e, 5, "I2", s.Iy);
+  Positive(e, 6, "torsion constant J", s.J);
+  if (!(s.Iy * s.Iz > s.Iyz * s.Iyz)) e.Fail(19, "need I1 I2 > I12^2");
+  NonNegative(e, 17, "K1", s.ky);
+  NonNegative(e, 18, "K2", s.kz);
+  NonNegative(e, 7, "NSM", s.nsm);
+}
+
+// PBARL, and PBEAML at a constant section (all stations equal)
+void Builder::ReadBeamLibrary(const Entry& e, fe::BeamSection& s) {
+  const int mid = e.Id(2, "MID");
+  s.material = MaterialIndex(e, 2, mid);
+  const std::string group = e.Blank(3) ? "MSCBML0" : e.Text(3);
+  if (group != "MSCBML0") e.Fail(3, "GROUP " + group + " (user beam library) is not supported");
+  const std::string& type = e.Text(4);
+  if (type.empty()) e.Fail(4, "TYPE is required (field is blank)");
+  const int n = nastran::ShapeDimensionCount(type);
+  if (n == 0)
+    e.Fail(4, "section TYPE " + type + " is not supported (supported: ROD, TUBE, BAR, BOX, I, CHAN, L, T, H)");
+  std::vector<double> dims(n);
+  for (int i = 0; i < n; ++i) {
+    std::string what = "DIM";
+    what += std::to_string(i + 1);
+    dims[i] = e.Real(9 + i, what.c_str());
+  }
+  s.nsm = e.Real(9 + n, "NSM", 0.0);
+  int f = 10 + n;
+  if (e.name() == "PBEAML") {
+    // further stations: SO, X/XB, DIM1..DIMn, NSM; blank values repeat end A
+    while (f <= e.Size()) {
+      const std::string& so = e.Text(f);
+      if (!so.empty() && so != "YES" && so != "NO")
+        e.Fail(f, "SO must be YES or NO, got '" + so + "'");
+      const double x = e.Real(f + 1, "X/XB", 1.0);
+      if (!(x > 0.0 && x <= 1.0)) e.Fail(f + 1, "X/XB must lie in (0, 1]");
+      for (int i = 0; i <= n; ++i) {
+        const double ref = i < n ? dims[i] : s.nsm;
+        const double v = e.Real(f + 2 + i, i < n ? "DIM" : "NSM", ref);
+        if (std::abs(v - ref) > 1e-9 * std::max(std::abs(ref), std::abs(v)))
+          e.Fail(f + 2 + i, "tapered PBEAML (station values differ from end A) is not supported");
+      }
+      f += n + 3;
+    }
+  } else if (e.Size() >= f) {
+    e.Fail(f, "unexpected field after NSM (TYPE " + type + " has " + std::to_string(n) + " dimensions)");
+  }
+  nastran::ShapeProperties p;
+  const std::string err = nastran::ComputeShape(type, dims, mesh_.materials[s.material].nu, &p);
+  if (!err.empty()) e.Fail(9, err);
+  s.A = p.A;
+  s.Iz = p.I1;
+  s.Iy = p.I2;
+  s.Iyz = p.I12;
+  s.J = p.J;
+  s.ky = p.K1;
+  s.kz = p.K2;
+  for (double v : {s.A, s.Iz, s.Iy, s.J, s.ky, s.kz}) Positive(e, 9, "section constant from the dimensions", v);
+  if (!(s.Iy * s.Iz > s.Iyz * s.Iyz) || !std::isfinite(s.Iyz)) e.Fail(9, "section constants out of range");
+  NonNegative(e, 9 + n, "NSM", s.nsm);
+}
+
+void Builder::ReadPbeam(const Entry& e, fe::BeamSection& s) {
+  s.material = MaterialIndex(e, 2, e.Id(2, "MID"));
+  const double a[6] = {e.Real(3, "A(A)"),        e.Real(4, "I1(A)", 0.0), e.Real(5, "I2(A)", 0.0),
+                       e.Real(6, "I12(A)", 0.0), e.Real(7, "J(A)", 0.0),  e.Real(8, "NSM(A)", 0.0)};
+  auto is_so = [&](int f) { return e.Text(f) == "YES" || e.Text(f) == "YESA" || e.Text(f) == "NO"; };
+  int f = 9;
+  if (!is_so(9)) {
+    for (int k = 9; k <= 16; ++k) e.Real(k, "stress recovery point", 0.0);
+    f = 17;
+  }
+  // intermediate and end-B stations: only a constant section is supported
+  while (is_so(f)) {
+    const double x = e.Real(f + 1, "X/XB");
+    if (!(x > 0.0 && x <= 1.0)) e.Fail(f + 1, "X/XB must lie in (0, 1]");
+    for (int k = 0; k < 6; ++k) {
+      const double v = e.Real(f + 2 + k, "station value", a[k]);
+      if (std::abs(v - a[k]) > 1e-9 * std::max(std::abs(a[k]), std::abs(v)))
+        e.Fail(f + 2 + k, "tapered PBEAM (station values differ from end A) is not supported");
+    }
+    if (e.Text(f) == "YES")
+      for (int k = f + 8; k < f + 16; ++k) e.Real(k, "stress recovery point", 0.0);
+    f += e.Text(f) == "YES" ? 16 : 8;
+  }
+  // footer: K1 K2 S1 S2 NSI(A) NSI(B) CW(A) CW(B), M1(A) M2(A) M1(B) M2(B) N1(A) N2(A) N1(B) N2(B)
+  s.ky = e.Real(f, "K1", 1.0);
+  s.kz = e.Real(f + 1, "K2", 1.0);
+  e.Real(f + 2, "S1", 0.0);
+  e.Real(f + 3, "S2", 0.0);
+  for (int k = 4; k < 16; ++k) {
+    if (k == 6 || k == 7) {
+      e.Real(f + k, "CW", 0.0);  // warping needs SA/SB scalar points, rejected at CBEAM
+      continue;
+    }
+    if (e.Real(f + k, "NSI, M or N", 0.0) != 0.0)
+      e.Fail(f + k, k < 6 ? "non-structural mass inertia NSI is not supported"
+                          : k < 12 ? "offset of the non-structural mass (M1, M2) is not supported"
+                                   : "neutral axis offset (N1, N2) is not supported");
+  }
+  if (e.Size() >= f + 16) e.Fail(f + 16, "unexpected field after the PBEAM footer");
+  s.A = a[0];
+  s.Iz = a[1];
+  s.Iy = a[2];
+  s.Iyz = a[3];
+  s.J = a[4];
+  s.nsm = a[5];
+  Positive(e, 3, "area A(A)", s.A);
+  Positive(e, 4, "I1(A)", s.Iz);
+  Positive(e, 5, "I2(A)", s.Iy);
+  Positive(e, 7, "torsion constant J(A)", s.J);
+  if (!(s.Iy * s.Iz > s.Iyz * s.Iyz)) e.Fail(6, "need I1 I2 > I12^2");
+  NonNegative(e, 8, "NSM(A)", s.nsm);
+  NonNegative(e, f, "K1", s.ky);
+  NonNegative(e, f + 1, "K2", s.kz);
+}
+
+}  // namespace flexmb::io::nastran

@@ -1,0 +1,202 @@
+// Reads a model-file body of type ancf_beam, ancf_cable or ancf_beam3d (docs/model-file.md,
+// "ANCF beams"): name, type, length, elements, section {area, inertia} |
+// {diameter}, material {E, rho}, start [3], direction [3] (ancf_cable: or
+// end [3]), normal [3], damping, curvature (ancf_beam), angular_velocity [3]
+// (ancf_cable), load_per_length [3], markers [{name, node | end, position,
+// orientation}]; ancf_beam3d: section {area, Iy, Iz, J}, material {E, G | nu,
+// rho}, radius instead of curvature
+#include "flexmb/model_file/ancf_body_parser.h"
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+#include "flexmb/ancf/ancf_beam2d_body.h"
+#include "flexmb/ancf/ancf_beam3d_body.h"
+#include "flexmb/ancf/ancf_cable3d_body.h"
+#include "flexmb/common/error.h"
+#include "flexmb/model/model.h"
+
+namespace flexmb {
+namespace {
+
+std::string Quote(const std::string& s) { return "'" + s + "'"; }
+
+// body name: non-empty, no '.', not ground
+std::string BodyName(const YAML::Node& node, ParseContext& ctx) {
+  const std::string name = ctx.String(node, "name");
+  if (name.empty()) ctx.Fail(node["name"], "a body name must not be empty");
+  if (name.find('.') != std::string::npos || name == "ground")
+    ctx.Fail(node["name"], "invalid body name " + Quote(name));
+  return name;
+}
+
+// element count, section, material and damping
+void ParseLine(const YAML::Node& node, ParseContext& ctx, int& elements, ancf::BeamSection& section) {
+  if (!node["elements"]) ctx.Fail(node, "missing key 'elements' (number of ANCF elements)");
+  elements = ctx.Integer(node, "elements", 0);
+  if (elements <= 0)
+    ctx.Fail(node["elements"], "'elements' must be a positive whole number, got " + std::to_string(elements));
+  const YAML::Node sec = node["section"];
+  if (!sec || !sec.IsMap()) ctx.Fail(sec ? sec : node, "expected 'section' as {area, inertia} or {diameter}");
+  if (sec["diameter"]) {
+    ctx.CheckKeys(sec, {"diameter"});
+    const double D = ctx.Positive(sec, "diameter");
+    section.A = std::numbers::pi * D * D / 4.0;
+    section.I = std::numbers::pi * D * D * D * D / 64.0;
+  } else {
+    ctx.CheckKeys(sec, {"area", "inertia"});
+    section.A = ctx.Positive(sec, "area");
+    section.I = ctx.Positive(sec, "inertia");
+  }
+  const YAML::Node mat = node["material"];
+  if (!mat || !mat.IsMap()) ctx.Fail(mat ? mat : node, "expected 'material' as {E, rho}");
+  ctx.CheckKeys(mat, {"E", "rho"});
+  section.E = ctx.Positive(mat, "E");
+  section.rho = ctx.Positive(mat, "rho");
+  section.damping = ctx.Double(node, "damping", 0.0);
+  if (section.damping < 0.0) ctx.Fail(node["damping"], "'damping' must not be negative");
+}
+
+// markers on nodes 0..nodes-1: `node: k` or `end: start|end`
+void ParseNodeMarkers(const YAML::Node& node, int body, int nodes, ParseContext& ctx,
+                      std::map<std::string, int>& lines) {
+  auto node_of = [&](const YAML::Node& m) {
+    int k = 0;
+    if (m["node"] && m["end"]) ctx.Fail(m, "give either 'node' or 'end', not both");
+    if (m["node"]) {
+      k = ctx.Integer(m, "node", -1);
+      if (k < 0 || k >= nodes)
+        ctx.Fail(m["node"], "node " + std::to_string(k) + " does not exist: the body has nodes 0.." +
+                                std::to_string(nodes - 1));
+    } else if (m["end"]) {
+      const std::string end = ctx.String(m, "end");
+      if (end == "start")
+        k = 0;
+      else if (end == "end")
+        k = nodes - 1;
+      else
+        ctx.Fail(m["end"], "unknown 'end' " + Quote(end) + " (allowed: start, end)");
+    } else {
+      ctx.Fail(m, "an ANCF marker needs 'node: k' or 'end: start|end'");
+    }
+    return k;
+  };
+  ctx.ParseMarkerList(node, body, {"name", "node", "end", "position", "orientation"}, node_of, lines);
+}
+
+void ParseCable(const YAML::Node& node, ParseContext& ctx, std::map<std::string, int>& lines) {
+  ctx.CheckKeys(node, {"name", "type", "length", "elements", "section", "material", "start", "direction",
+                       "end", "normal", "damping", "angular_velocity", "load_per_length", "markers"});
+  const std::string name = BodyName(node, ctx);
+  const std::string entity = "body '" + name + "'";
+  ctx.SetEntity(entity);
+  ancf::AncfCable3dData d;
+  d.start_W = ctx.Vector3(node, "start", Vec3::Zero());
+  if (node["end"]) {
+    // the cable runs straight from start to end: direction and length follow
+    if (node["direction"] || node["length"])
+      ctx.Fail(node["end"], "give either 'end' or 'length' and 'direction', not both");
+    const Vec3 span = ctx.Vector3(node, "end") - d.start_W;
+    if (!(span.norm() > 0.0)) ctx.Fail(node["end"], "'end' must differ from 'start' (zero cable length)");
+    d.length = span.norm();
+    d.direction_W = span;
+  } else {
+    d.length = ctx.Positive(node, "length");
+    d.direction_W = ctx.Vector3(node, "direction", Vec3::UnitX());
+    if (!(d.direction_W.norm() > 0.0)) ctx.Fail(node["direction"], "'direction' must not be zero");
+  }
+  ParseLine(node, ctx, d.elements, d.section);
+  d.normal_W = ctx.Vector3(node, "normal", Vec3::Zero());
+  d.angular_velocity_W = ctx.Vector3(node, "angular_velocity", Vec3::Zero());
+  d.load_per_length_W = ctx.Vector3(node, "load_per_length", Vec3::Zero());
+  auto body = ctx.Guard(node, [&] { return std::make_unique<ancf::AncfCable3dBody>(name, d); });
+  const int nodes = body->nodes();
+  const int b = ctx.Guard(node["name"], [&] { return ctx.model().AddBody(std::move(body)); });
+  lines[entity] = ParseContext::Line(node);
+  ParseNodeMarkers(node, b, nodes, ctx, lines);
+}
+
+// 3D beam with torsion: section {area, Iy, Iz, J}, material {E, G | nu, rho}
+void ParseBeam3d(const YAML::Node& node, ParseContext& ctx, std::map<std::string, int>& lines) {
+  ctx.CheckKeys(node, {"name", "type", "length", "elements", "section", "material", "start", "direction",
+                       "normal", "radius", "damping", "load_per_length", "markers"});
+  const std::string name = BodyName(node, ctx);
+  const std::string entity = "body '" + name + "'";
+  ctx.SetEntity(entity);
+  ancf::AncfBeam3dData d;
+  d.length = ctx.Positive(node, "length");
+  if (!node["elements"]) ctx.Fail(node, "missing key 'elements' (number of ANCF elements)");
+  d.elements = ctx.Integer(node, "elements", 0);
+  if (d.elements <= 0)
+    ctx.Fail(node["elements"], "'elements' must be a positive whole number, got " + std::to_string(d.elements));
+  const YAML::Node sec = node["section"];
+  if (!sec || !sec.IsMap()) ctx.Fail(sec ? sec : node, "expected 'section' as {area, Iy, Iz, J}");
+  ctx.CheckKeys(sec, {"area", "Iy", "Iz", "J"});
+  d.section.A = ctx.Positive(sec, "area");
+  d.section.Iy = ctx.Positive(sec, "Iy");
+  d.section.Iz = ctx.Positive(sec, "Iz");
+  d.section.J = ctx.Positive(sec, "J");
+  const YAML::Node mat = node["material"];
+  if (!mat || !mat.IsMap()) ctx.Fail(mat ? mat : node, "expected 'material' as {E, G or nu, rho}");
+  ctx.CheckKeys(mat, {"E", "G", "nu", "rho"});
+  d.section.E = ctx.Positive(mat, "E");
+  d.section.rho = ctx.Positive(mat, "rho");
+  if (mat["G"] && mat["nu"]) ctx.Fail(mat, "give either 'G' or 'nu', not both");
+  if (mat["G"]) {
+    d.section.G = ctx.Positive(mat, "G");
+  } else if (mat["nu"]) {
+    const double nu = ctx.Double(mat, "nu", 0.0);
+    if (!(nu > -1.0 && nu < 0.5)) ctx.Fail(mat["nu"], "'nu' must lie in (-1, 0.5)");
+    d.section.G = d.section.E / (2.0 * (1.0 + nu));
+  } else {
+    ctx.Fail(mat, "missing 'G' or 'nu' (shear modulus for the torsion stiffness)");
+  }
+  d.section.damping = ctx.Double(node, "damping", 0.0);
+  if (d.section.damping < 0.0) ctx.Fail(node["damping"], "'damping' must not be negative");
+  d.radius = ctx.Double(node, "radius", 0.0);
+  if (d.radius < 0.0) ctx.Fail(node["radius"], "'radius' must not be negative (0: straight)");
+  d.start_W = ctx.Vector3(node, "start", Vec3::Zero());
+  d.direction_W = ctx.Vector3(node, "direction", Vec3::UnitX());
+  if (!(d.direction_W.norm() > 0.0)) ctx.Fail(node["direction"], "'direction' must not be zero");
+  d.normal_W = ctx.Vector3(node, "normal", Vec3::Zero());
+  d.load_per_length_W = ctx.Vector3(node, "load_per_length", Vec3::Zero());
+  auto body = ctx.Guard(node, [&] { return std::make_unique<ancf::AncfBeam3dBody>(name, d); });
+  const int nodes = body->nodes();
+  const int b = ctx.Guard(node["name"], [&] { return ctx.model().AddBody(std::move(body)); });
+  lines[entity] = ParseContext::Line(node);
+  ParseNodeMarkers(node, b, nodes, ctx, lines);
+}
+
+}  // namespace
+
+bool IsAncfBodyType(const std::string& type) {
+  return type == "ancf_beam" || type == "ancf_cable" || type == "ancf_beam3d";
+}
+
+void ParseAncfBody(const YAML::Node& node, ParseContext& ctx, std::map<std::string, int>& lines) {
+  if (node["type"].Scalar() == "ancf_cable") return ParseCable(node, ctx, lines);
+  if (node["type"].Scalar() == "ancf_beam3d") return ParseBeam3d(node, ctx, lines);
+  ctx.CheckKeys(node, {"name", "type", "length", "elements", "section", "material", "start", "direction",
+                       "normal", "damping", "curvature", "load_per_length", "markers"});
+  const std::string name = BodyName(node, ctx);
+  const std::string entity = "body '" + name + "'";
+  ctx.SetEntity(entity);
+
+  ancf::AncfBeam2dData d;
+  d.length = ctx.Positive(node, "length");
+  ParseLine(node, ctx, d.elements, d.section);
+  d.curvature0 = ctx.Double(node, "curvature", 0.0);
+  d.start_W = ctx.Vector3(node, "start", Vec3::Zero());
+  d.direction_W = ctx.Vector3(node, "direction", Vec3::UnitX());
+  d.normal_W = ctx.Vector3(node, "normal", Vec3::UnitZ());
+  d.load_per_length_W = ctx.Vector3(node, "load_per_length", Vec3::Zero());
+
+  auto body = ctx.Guard(node, [&] { return std::make_unique<ancf::AncfBeam2dBody>(name, d); });
+  const int nodes = body->nodes();
+  const int b = ctx.Guard(node["name"], [&] { return ctx.model().AddBody(std::move(body)); });
+  lines[entity] = ParseContext::Line(node);
+  ParseNodeMarkers(node, b, nodes, ctx, lines);
+}
+
+}  // namespace flexmb

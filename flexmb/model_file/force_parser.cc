@@ -1,0 +1,233 @@
+// Reads one entry of the model file's `forces:` list (reference:
+// docs/model-file-forces.md). Keys per type:
+//   spring_damper:            i, j, stiffness | force_deflection, damping | force_velocity,
+//                             free_length (default: initial distance), preload
+//   rotational_spring_damper: i, j, stiffness | torque_angle, damping, angle0, preload
+//   bushing:                  i, j, translational_/rotational_ stiffness/damping [3],
+//                             preload_force [3], preload_torque [3]
+//   point_force:              marker, force [3 numbers or functions of t], frame
+//   point_torque:             marker, torque [3 numbers or functions of t], frame
+//   joint_motor:              joint, coordinate, function, target, kp, kd
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "flexmb/common/error.h"
+#include "flexmb/forces/bushing.h"
+#include "flexmb/forces/joint_motor.h"
+#include "flexmb/forces/point_force.h"
+#include "flexmb/forces/point_torque.h"
+#include "flexmb/forces/rotational_spring_damper.h"
+#include "flexmb/forces/spring_damper.h"
+#include "flexmb/model_file/parse_context.h"
+#include "flexmb/model/model.h"
+
+namespace flexmb {
+namespace {
+
+using Components = std::array<std::shared_ptr<const ScalarFunction>, 3>;
+
+/// State of marker `m` from its body's initial coordinates (the model is not
+/// finalized yet, so the body's coordinates are evaluated on their own).
+MarkerState InitialMarker(const Model& model, int m) {
+  const Marker& marker = model.markers[m];
+  const Body& body = *model.bodies[marker.body];
+  std::vector<double> q(body.nq() + 1, 0.0), v(body.nv() + 1, 0.0);
+  body.InitialCoordinates(q.data(), v.data());
+  MarkerState s;
+  body.EvaluateMarker(q.data(), v.data(), marker, s);
+  return s;
+}
+
+/// Optional number at node[key] that must not be negative.
+double NonNegative(const YAML::Node& node, const char* key, ParseContext& ctx) {
+  const double x = ctx.Double(node, key, 0.0);
+  if (x < 0.0) ctx.Fail(node[key], std::string("'") + key + "' must not be negative");
+  return x;
+}
+
+/// Optional 3-vector at node[key] whose entries must not be negative.
+Vec3 NonNegative3(const YAML::Node& node, const char* key, ParseContext& ctx) {
+  const Vec3 x = ctx.Vector3(node, key, Vec3::Zero());
+  if (x.minCoeff() < 0.0) ctx.Fail(node[key], std::string("'") + key + "' entries must not be negative");
+  return x;
+}
+
+/// Fails if both alternative keys are given.
+void EitherOr(const YAML::Node& node, const char* a, const char* b, ParseContext& ctx) {
+  if (node[a] && node[b])
+    ctx.Fail(node[b], std::string("give either '") + a + "' or '" + b + "', not both");
+}
+
+/// The two markers i and j; they must differ.
+std::pair<int, int> MarkerPair(const YAML::Node& node, ParseContext& ctx) {
+  const int i = ctx.Marker(node, "i"), j = ctx.Marker(node, "j");
+  if (i == j) ctx.Fail(node["j"], "'i' and 'j' name the same marker");
+  return {i, j};
+}
+
+/// Three components at node[key], each a number or a function of t.
+Components ComponentFunctions(const YAML::Node& node, const char* key, ParseContext& ctx) {
+  const YAML::Node v = node[key];
+  if (!v) ctx.Fail(node, std::string("missing required key '") + key + "'");
+  if (!v.IsSequence() || v.size() != 3)
+    ctx.Fail(v, std::string("expected '") + key +
+                    "' as a list of 3 components [x, y, z], each a number or a function of t");
+  Components out;
+  for (int k = 0; k < 3; ++k) {
+    // a one-entry map so that messages name the component, e.g. 'force[2]'
+    const std::string label = std::string(key) + "[" + std::to_string(k) + "]";
+    YAML::Node holder(YAML::NodeType::Map);
+    holder[label] = v[k];
+    out[k] = ctx.Function(holder, label.c_str(), "t");
+  }
+  return out;
+}
+
+LoadFrame Frame(const YAML::Node& node, ParseContext& ctx) {
+  const std::string f = ctx.String(node, "frame", "world");
+  if (f == "world") return LoadFrame::kWorld;
+  if (f == "marker") return LoadFrame::kMarker;
+  ctx.Fail(node["frame"], "unknown frame '" + f + "' (allowed: world, marker)");
+}
+
+/// Coordinate of `joint` named or numbered at node["coordinate"]; 0 if absent.
+int CoordinateIndex(const YAML::Node& node, const Joint& joint, ParseContext& ctx) {
+  if (!node["coordinate"]) return 0;
+  const std::string text = ctx.String(node, "coordinate");
+  std::string known;
+  for (int k = 0; k < joint.NumCoordinates(); ++k) {
+    if (text == joint.CoordinateName(k) || text == std::to_string(k)) return k;
+    known += (k ? ", " : "") + std::string(joint.CoordinateName(k));
+  }
+  ctx.Fail(node["coordinate"], "joint '" + joint.name() + "' has no coordinate '" + text +
+                                   "' (it has: " + known + ")");
+}
+
+void AddSpringDamper(const YAML::Node& node, const std::string& name, ParseContext& ctx) {
+  ctx.CheckKeys(node, {"name", "type", "i", "j", "stiffness", "force_deflection", "damping",
+                       "force_velocity", "free_length", "preload"});
+  EitherOr(node, "stiffness", "force_deflection", ctx);
+  EitherOr(node, "damping", "force_velocity", ctx);
+  const auto [i0, j0] = MarkerPair(node, ctx);
+  const int i = i0, j = j0;  // named copies: clang 14 cannot capture structured bindings
+  SpringDamperLaw law;
+  law.stiffness = NonNegative(node, "stiffness", ctx);
+  law.damping = NonNegative(node, "damping", ctx);
+  if (node["force_deflection"]) law.force_deflection = ctx.Function(node, "force_deflection", "x");
+  if (node["force_velocity"]) law.force_velocity = ctx.Function(node, "force_velocity", "x");
+  law.preload = ctx.Double(node, "preload", 0.0);
+  if (node["free_length"]) {
+    law.free_length = NonNegative(node, "free_length", ctx);
+  } else {
+    const Model& model = ctx.model();
+    law.free_length = (InitialMarker(model, j).p_WM - InitialMarker(model, i).p_WM).norm();
+    if (!(law.free_length > 1e-12))
+      ctx.Fail(node, "the origins of markers 'i' and 'j' coincide initially: a spring-damper acts "
+                     "along the line between them (use a bushing, or give 'free_length' and "
+                     "separate the markers)");
+  }
+  ctx.Guard(node, [&] { ctx.model().AddForce(std::make_unique<SpringDamper>(name, law), i, j); });
+}
+
+void AddRotationalSpringDamper(const YAML::Node& node, const std::string& name, ParseContext& ctx) {
+  ctx.CheckKeys(node, {"name", "type", "i", "j", "stiffness", "torque_angle", "damping", "angle0",
+                       "preload"});
+  EitherOr(node, "stiffness", "torque_angle", ctx);
+  const auto [i0, j0] = MarkerPair(node, ctx);
+  const int i = i0, j = j0;  // named copies: clang 14 cannot capture structured bindings
+  RotationalSpringDamperLaw law;
+  law.stiffness = NonNegative(node, "stiffness", ctx);
+  law.damping = NonNegative(node, "damping", ctx);
+  if (node["torque_angle"]) law.torque_angle = ctx.Function(node, "torque_angle", "x");
+  law.angle0 = ctx.Double(node, "angle0", 0.0);
+  law.preload = ctx.Double(node, "preload", 0.0);
+  ctx.Guard(node, [&] {
+    ctx.model().AddForce(std::make_unique<RotationalSpringDamper>(name, law), i, j);
+  });
+}
+
+void AddBushing(const YAML::Node& node, const std::string& name, ParseContext& ctx) {
+  ctx.CheckKeys(node, {"name", "type", "i", "j", "translational_stiffness", "rotational_stiffness",
+                       "translational_damping", "rotational_damping", "preload_force",
+                       "preload_torque"});
+  const auto [i0, j0] = MarkerPair(node, ctx);
+  const int i = i0, j = j0;  // named copies: clang 14 cannot capture structured bindings
+  BushingData d;
+  d.translational_stiffness = NonNegative3(node, "translational_stiffness", ctx);
+  d.rotational_stiffness = NonNegative3(node, "rotational_stiffness", ctx);
+  d.translational_damping = NonNegative3(node, "translational_damping", ctx);
+  d.rotational_damping = NonNegative3(node, "rotational_damping", ctx);
+  d.preload_force = ctx.Vector3(node, "preload_force", Vec3::Zero());
+  d.preload_torque = ctx.Vector3(node, "preload_torque", Vec3::Zero());
+  ctx.Guard(node, [&] { ctx.model().AddForce(std::make_unique<Bushing>(name, d), i, j); });
+}
+
+void AddPointLoad(const YAML::Node& node, const std::string& name, bool torque, ParseContext& ctx) {
+  const char* key = torque ? "torque" : "force";
+  ctx.CheckKeys(node, {"name", "type", "marker", key, "frame"});
+  const int m = ctx.Marker(node, "marker");
+  const Components f = ComponentFunctions(node, key, ctx);
+  const LoadFrame frame = Frame(node, ctx);
+  ctx.Guard(node, [&] {
+    if (torque)
+      ctx.model().AddForce(std::make_unique<PointTorque>(name, f, frame), m, -1);
+    else
+      ctx.model().AddForce(std::make_unique<PointForce>(name, f, frame), m, -1);
+  });
+}
+
+void AddJointMotor(const YAML::Node& node, const std::string& name, ParseContext& ctx) {
+  ctx.CheckKeys(node, {"name", "type", "joint", "coordinate", "function", "target", "kp", "kd"});
+  const Joint& joint = *ctx.model().joints[ctx.Joint(node, "joint")];
+  if (joint.NumCoordinates() == 0)
+    ctx.Fail(node["joint"], "joint '" + joint.name() + "' (" + joint.type() +
+                                ") has no joint coordinate for a motor to act on");
+  const int k = CoordinateIndex(node, joint, ctx);
+  std::shared_ptr<const ScalarFunction> f;
+  if (node["function"]) f = ctx.Function(node, "function", "t");
+  JointMotorPd pd;
+  if (node["target"]) {
+    pd.target = ctx.Function(node, "target", "t");
+    pd.kp = NonNegative(node, "kp", ctx);
+    pd.kd = NonNegative(node, "kd", ctx);
+    if (pd.kp == 0.0 && pd.kd == 0.0) ctx.Fail(node["target"], "'target' needs a positive 'kp' or 'kd'");
+  } else {
+    if (node["kp"]) ctx.Fail(node["kp"], "'kp' needs a 'target' motion");
+    if (node["kd"]) ctx.Fail(node["kd"], "'kd' needs a 'target' motion");
+    if (!f) ctx.Fail(node, "a joint_motor needs 'function' (torque or force of t), 'target' with "
+                           "'kp'/'kd', or both");
+  }
+  ctx.Guard(node, [&] {
+    ctx.model().AddForce(std::make_unique<JointMotor>(name, &joint, k, f, pd), joint.marker_i,
+                         joint.marker_j);
+  });
+}
+
+}  // namespace
+
+void ParseForce(const YAML::Node& node, ParseContext& ctx) {
+  if (!node.IsMap()) ctx.Fail(node, "a force must be a map with at least 'name' and 'type'");
+  const std::string name = ctx.String(node, "name");
+  ctx.SetEntity("force '" + name + "'");
+  const std::string type = ctx.String(node, "type");
+  if (type == "spring_damper")
+    AddSpringDamper(node, name, ctx);
+  else if (type == "rotational_spring_damper")
+    AddRotationalSpringDamper(node, name, ctx);
+  else if (type == "bushing")
+    AddBushing(node, name, ctx);
+  else if (type == "point_force")
+    AddPointLoad(node, name, false, ctx);
+  else if (type == "point_torque")
+    AddPointLoad(node, name, true, ctx);
+  else if (type == "joint_motor")
+    AddJointMotor(node, name, ctx);
+  else
+    ctx.Fail(node["type"], "unknown force type '" + type +
+                               "' (known: spring_damper, rotational_spring_damper, bushing, "
+                               "point_force, point_torque, joint_motor)");
+}
+
+}  // namespace flexmb

@@ -1,0 +1,162 @@
+#include "flexmb/fe_io/imported_matrices.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include "flexmb/fe_io/dof_map.h"
+#include "flexmb/fe_io/harwell_boeing.h"
+#include "flexmb/fe_io/matrix_market.h"
+#include "flexmb/fe_io/vtk_mesh.h"
+#include "mesh_io_test_util.h"
+
+namespace flexmb::io {
+namespace {
+
+using testing::FeData;
+using testing::InputErrorOf;
+using testing::ScratchPath;
+using testing::WriteScratch;
+
+// nodes 10, 20, 30 on the x axis; matrix rows 10 ux, 20 ux, 20 uy, 30 uz
+struct Fixture {
+  std::string geometry, dof_map, k_hb, m_hb;
+  fe::SparseMat K, M;
+
+  Fixture() {
+    fe::Mesh mesh;
+    for (int i = 0; i < 3; ++i) {
+      fe::Node n;
+      n.id = 10 * (i + 1);
+      n.x = fe::Vec3(i * 0.5, 0.0, 0.0);
+      mesh.nodes.push_back(n);
+    }
+    mesh.IndexNodes();
+    geometry = ScratchPath("imp_geometry.vtk");
+    WriteVtk(mesh, geometry);
+    dof_map = WriteScratch("imp_dof_map.txt", "1 10 1\n2 20 1\n3 20 2\n4 30 3\n");
+    Eigen::Matrix4d k;
+    k << 3e5, -1e5, 0, 0, -1e5, 2e5, 1.0 / 3.0, 0, 0, 1.0 / 3.0, 5e4, -2e4, 0, 0, -2e4, 2e4;
+    K = k.sparseView();
+    K.makeCompressed();
+    M.resize(4, 4);
+    for (int i = 0; i < 4; ++i) M.insert(i, i) = 0.1 * (i + 1);
+    M.makeCompressed();
+    k_hb = ScratchPath("imp_K.hb");
+    m_hb = ScratchPath("imp_M.hb");
+    WriteHarwellBoeing(K, k_hb);
+    WriteHarwellBoeing(M, m_hb);
+  }
+
+  ImportedMatricesSpec Spec() const { return {k_hb, m_hb, dof_map, geometry}; }
+};
+
+TEST(ImportedMatrices, BuildsAnFeModelFromMatricesDofMapAndGeometry) {
+  const Fixture f;
+  const fe::FeModel model = ReadImportedMatrices(f.Spec());
+  ASSERT_TRUE(model.imported.has_value());
+  const fe::AssembledModel& a = *model.imported;
+  ASSERT_EQ(model.mesh.nodes.size(), 3u);
+  EXPECT_TRUE(model.mesh.elements.empty());
+  EXPECT_EQ(a.dofs.n_full, 4);
+  EXPECT_EQ(a.dofs.n_free, 4);
+  const int n10 = model.mesh.NodeIndex(10), n20 = model.mesh.NodeIndex(20), n30 = model.mesh.NodeIndex(30);
+  ASSERT_GE(n10, 0);
+  ASSERT_GE(n20, 0);
+  ASSERT_GE(n30, 0);
+  EXPECT_EQ(a.dofs.full[n10], (std::array<int, 6>{0, -1, -1, -1, -1, -1}));
+  EXPECT_EQ(a.dofs.full[n20], (std::array<int, 6>{1, 2, -1, -1, -1, -1}));
+  EXPECT_EQ(a.dofs.full[n30], (std::array<int, 6>{-1, -1, 3, -1, -1, -1}));
+  EXPECT_EQ(a.dofs.free, a.dofs.full);
+  EXPECT_EQ(Eigen::MatrixXd(a.T), Eigen::MatrixXd::Identity(4, 4));
+  EXPECT_EQ(Eigen::MatrixXd(a.K), Eigen::MatrixXd(f.K));
+  EXPECT_EQ(Eigen::MatrixXd(a.M), Eigen::MatrixXd(f.M));
+  EXPECT_EQ(Eigen::MatrixXd(a.M_full), Eigen::MatrixXd(f.M));
+}
+
+TEST(ImportedMatrices, ReadsMatrixMarketAndMixedFormats) {
+  const Fixture f;
+  const std::string k_mtx = ScratchPath("imp_K.mtx");
+  WriteMatrixMarket(f.K, k_mtx);
+  const fe::FeModel model = ReadImportedMatrices({k_mtx, f.m_hb, f.dof_map, f.geometry});
+  EXPECT_EQ(Eigen::MatrixXd(model.imported->K), Eigen::MatrixXd(f.K));
+}
+
+TEST(ImportedMatrices, CalculixMatrixStorageWithItsDofFile) {
+  // job.dof next to job.sti; geometry from the deck
+  const fe::FeModel model = ReadImportedMatrices(
+      {FeData("calculix/tiny.sti"), FeData("calculix/tiny.mas"), "", FeData("calculix/tiny.inp")});
+  ASSERT_TRUE(model.imported.has_value());
+  EXPECT_EQ(model.imported->dofs.full[model.mesh.NodeIndex(10)][1], 1);
+  EXPECT_EQ(model.imported->dofs.full[model.mesh.NodeIndex(20)][0], 2);
+  EXPECT_EQ(model.imported->K.coeff(1, 2), -500.0);
+}
+
+TEST(ImportedMatrices, SymmetrizesRoundOffAsymmetry) {
+  const Fixture f;
+  const std::string k_mtx = WriteScratch("imp_roundoff.mtx",
+                                         "%%MatrixMarket matrix coordinate real general\n4 4 6\n"
+                                         "1 1 2\n2 2 2\n3 3 2\n4 4 2\n1 2 0.3\n2 1 0.30000000000000004\n");
+  const fe::FeModel model = ReadImportedMatrices({k_mtx, f.m_hb, f.dof_map, f.geometry});
+  const fe::SparseMat& K = model.imported->K;
+  EXPECT_EQ(K.coeff(0, 1), K.coeff(1, 0));
+  EXPECT_NEAR(K.coeff(0, 1), 0.3, 1e-16);
+}
+
+struct BadCase {
+  const char* name;
+  ImportedMatricesSpec spec;
+  std::string where;   // file (and line, entity) expected in the message
+  const char* what;
+};
+
+TEST(ImportedMatrices, BadInputNamesFileAndEntity) {
+  const Fixture f;
+  const std::string asym = WriteScratch("imp_asym.mtx",
+                                        "%%MatrixMarket matrix coordinate real general\n4 4 6\n"
+                                        "1 1 2\n2 2 2\n3 3 2\n4 4 2\n2 3 1\n3 2 1.5\n");
+  const std::string nonfinite = WriteScratch("imp_nan.mtx",
+                                             "%%MatrixMarket matrix coordinate real symmetric\n4 4 4\n"
+                                             "1 1 2\n2 2 2\n3 3 inf\n4 4 2\n");
+  const std::string m3 = ScratchPath("imp_M3.hb");
+  {
+    fe::SparseMat M(3, 3);
+    for (int i = 0; i < 3; ++i) M.insert(i, i) = 0.5;
+    WriteHarwellBoeing(M, m3);
+  }
+  const std::string short_map = WriteScratch("imp_short_map.txt", "1 10 1\n2 20 1\n3 20 2\n");
+  const std::string long_map = WriteScratch("imp_long_map.txt", "1 10 1\n2 20 1\n3 20 2\n4 30 3\n5 30 1\n");
+  const std::string ghost_map = WriteScratch("imp_ghost_map.txt", "1 10 1\n2 20 1\n3 20 2\n4 99 3\n");
+  const std::string twice_map = WriteScratch("imp_twice_map.txt", "1 10 1\n2 20 1\n3 20 2\n4 10 1\n");
+  const std::string truncated = WriteScratch("imp_truncated.hb", [&] {
+    std::string text = testing::ReadText(f.k_hb);
+    return text.substr(0, text.size() - 30);
+  }());
+  const std::string banner = WriteScratch("imp_banner.mtx", "%%MatrixMarket matrix coordinate pattern general\n4 4 1\n1 1\n");
+  const std::vector<BadCase> cases = {
+      {"asymmetric", {asym, f.m_hb, f.dof_map, f.geometry}, asym + ": K: ",
+       "worst entry K(3,2) = 1.5 but K(2,3) = 1"},
+      {"asymmetric names nodes", {asym, f.m_hb, f.dof_map, f.geometry}, asym,
+       "(row 3 = node 20 uy, column 2 = node 20 ux)"},
+      {"non-finite", {nonfinite, f.m_hb, f.dof_map, f.geometry}, nonfinite + ":5: entry 3 (row 3, column 3)",
+       "not finite"},
+      {"size K vs M", {f.k_hb, m3, f.dof_map, f.geometry}, m3 + ": M: ", "M is 3 x 3 but K"},
+      {"row not mapped", {f.k_hb, f.m_hb, short_map, f.geometry}, short_map + ": row 4: ",
+       "row 4 of the 4 x 4 matrices"},
+      {"too many rows", {f.k_hb, f.m_hb, long_map, f.geometry}, long_map + ":5: row 5: ",
+       "the DOF map has 5 rows but the matrices"},
+      {"node not in geometry", {f.k_hb, f.m_hb, ghost_map, f.geometry}, ghost_map + ":4: row 4: ",
+       "node 99 does not exist in the geometry"},
+      {"node twice", {f.k_hb, f.m_hb, twice_map, f.geometry}, twice_map + ":4: row 4: ",
+       "node 10 ux is mapped twice (rows 1 and 4)"},
+      {"truncated", {truncated, f.m_hb, f.dof_map, f.geometry}, truncated + ":", "file ends early"},
+      {"wrong banner", {banner, f.m_hb, f.dof_map, f.geometry}, banner + ":1: banner", "pattern matrices"},
+      {"extension", {f.dof_map, f.m_hb, f.dof_map, f.geometry}, f.dof_map + ": K: ", "unknown matrix file type"},
+      {"no dof map", {f.k_hb, f.m_hb, "", f.geometry}, f.k_hb + ": stiffness: ", "a DOF map file is needed"},
+  };
+  for (const BadCase& c : cases)
+    testing::ExpectContains(InputErrorOf([&] { ReadImportedMatrices(c.spec); }), {c.where, c.what}, c.name);
+}
+
+}  // namespace
+}  // namespace flexmb::io
