@@ -21,9 +21,8 @@
 #include "flexmb/fe_io/gmsh_reader.h"
 #include "flexmb/fe_io/imported_matrices.h"
 #include "flexmb/fe_io/nastran/nastran_reader.h"
-#include "flexmb/model_file/parse_context.h"
+#include "flexmb/yaml/yaml_context.h"
 #include "flexmb/fe_io/vtk_mesh.h"
-#include "flexmb/model/model.h"
 
 namespace flexmb::io {
 namespace {
@@ -91,7 +90,7 @@ const char* FamilyName(Family f) {
 // reading one FE model file
 class FeModelFileParser {
  public:
-  FeModelFileParser(const std::string& path, ParseContext& ctx) : path_(path), ctx_(ctx) {
+  FeModelFileParser(const std::string& path, YamlContext& ctx) : path_(path), ctx_(ctx) {
     dir_ = fs::path(path).parent_path();
   }
 
@@ -225,7 +224,7 @@ class FeModelFileParser {
       mat.rho = ctx_.Double(m, "rho");
       if (mat.rho < 0.0) ctx_.Fail(m["rho"], "'rho' must not be negative");
       mat.G = m["G"] ? ctx_.Positive(m, "G") : mat.E / (2.0 * (1.0 + mat.nu));
-      mat.origin = {path_, ParseContext::Line(m)};
+      mat.origin = {path_, YamlContext::Line(m)};
       if (!materials_.emplace(name, static_cast<int>(mesh_->materials.size())).second)
         ctx_.Fail(it->first, "material " + Quote(name) + " is defined twice");
       mesh_->materials.push_back(mat);
@@ -252,7 +251,7 @@ class FeModelFileParser {
         sec.material = Material(s);
         sec.thickness = ctx_.Positive(s, "thickness");
         sec.nsm = NonNegative(s, "nsm");
-        sec.origin = {path_, ParseContext::Line(s)};
+        sec.origin = {path_, YamlContext::Line(s)};
         property = static_cast<int>(mesh_->shell_sections.size());
         mesh_->shell_sections.push_back(sec);
       } else if (type == "beam") {
@@ -271,7 +270,7 @@ class FeModelFileParser {
         sec.ky = NonNegative(s, "ky");
         sec.kz = NonNegative(s, "kz");
         sec.nsm = NonNegative(s, "nsm");
-        sec.origin = {path_, ParseContext::Line(s)};
+        sec.origin = {path_, YamlContext::Line(s)};
         orientation_ = ctx_.Vector3(s, "orientation");
         if (!(orientation_.norm() > 0.0)) ctx_.Fail(s["orientation"], "'orientation' must not be the zero vector");
         property = static_cast<int>(mesh_->beam_sections.size());
@@ -282,7 +281,7 @@ class FeModelFileParser {
         fe::SolidSection sec;
         sec.id = solid_base + id;
         sec.material = Material(s);
-        sec.origin = {path_, ParseContext::Line(s)};
+        sec.origin = {path_, YamlContext::Line(s)};
         property = static_cast<int>(mesh_->solid_sections.size());
         mesh_->solid_sections.push_back(sec);
       } else {
@@ -451,7 +450,7 @@ class FeModelFileParser {
         fe::Constraint c;
         c.node = n;
         c.dofs = dofs;
-        c.origin = {path_, ParseContext::Line(v)};
+        c.origin = {path_, YamlContext::Line(v)};
         mesh_->constraints.push_back(c);
       }
     }
@@ -470,7 +469,7 @@ class FeModelFileParser {
       pm.mass = ctx_.Positive(s, "mass");
       pm.offset = ctx_.Vector3(s, "offset", fe::Vec3::Zero());
       if (s["inertia"]) pm.inertia = Inertia(s["inertia"]);
-      pm.origin = {path_, ParseContext::Line(s)};
+      pm.origin = {path_, YamlContext::Line(s)};
       mesh_->point_masses.push_back(pm);
     }
   }
@@ -522,14 +521,14 @@ class FeModelFileParser {
         if (seen.insert(n).second) link.dependent.push_back(n);
       }
       link.dofs = Dofs(s, "dofs");
-      link.origin = {path_, ParseContext::Line(s)};
+      link.origin = {path_, YamlContext::Line(s)};
       mesh_->rigid_links.push_back(link);
     }
   }
 
   std::string path_;
   fs::path dir_;
-  ParseContext& ctx_;
+  YamlContext& ctx_;
   fe::Mesh* mesh_ = nullptr;
   std::string mesh_name_;
   std::map<std::string, int> materials_;
@@ -548,8 +547,7 @@ fe::FeModel LoadFeModelFile(const std::string& path) {
   } catch (const YAML::Exception& e) {
     throw InputError("YAML syntax error: " + e.msg, {path, e.mark.is_null() ? 0 : e.mark.line + 1, ""});
   }
-  Model scratch;  // ParseContext needs a model; the FE model file adds nothing to it
-  ParseContext ctx(path, scratch);
+  YamlContext ctx(path);
   try {
     return FeModelFileParser(path, ctx).Parse(root);
   } catch (const YAML::Exception& e) {

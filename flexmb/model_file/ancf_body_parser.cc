@@ -170,10 +170,6 @@ void ParseBeam3d(const YAML::Node& node, ParseContext& ctx, std::map<std::string
 
 }  // namespace
 
-bool IsAncfBodyType(const std::string& type) {
-  return type == "ancf_beam" || type == "ancf_cable" || type == "ancf_beam3d";
-}
-
 void ParseAncfBody(const YAML::Node& node, ParseContext& ctx, std::map<std::string, int>& lines) {
   if (node["type"].Scalar() == "ancf_cable") return ParseCable(node, ctx, lines);
   if (node["type"].Scalar() == "ancf_beam3d") return ParseBeam3d(node, ctx, lines);

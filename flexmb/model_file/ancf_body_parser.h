@@ -13,9 +13,6 @@
 
 namespace flexmb {
 
-/// True if `type` names an ANCF body type handled by ParseAncfBody.
-bool IsAncfBodyType(const std::string& type);
-
 /// Builds the ANCF body of the model-file node `node` (its `type` is an ANCF
 /// type), adds it and its markers to ctx.model() and records the line of
 /// each entity in `lines` ("body 'rope'" -> line). Throws InputError naming

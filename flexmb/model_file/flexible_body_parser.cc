@@ -66,8 +66,6 @@ MatX ParseDamping(const YAML::Node& d, const reduction::ReducedBody& body, const
 
 }  // namespace
 
-bool IsFlexibleBodyType(const std::string& type) { return type == "flexible"; }
-
 void ParseFlexibleBody(const YAML::Node& node, ParseContext& ctx, std::map<std::string, int>& lines) {
   ctx.CheckKeys(node, {"name", "type", "file", "position", "orientation", "velocity", "angular_velocity",
                        "modal_coordinates", "modal_velocities", "damping", "geometric_stiffening", "markers"});

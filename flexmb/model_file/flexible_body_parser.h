@@ -13,9 +13,6 @@
 
 namespace flexmb {
 
-/// True if `type` names the flexible body type handled by ParseFlexibleBody.
-bool IsFlexibleBodyType(const std::string& type);
-
 /// Reads the body file named by node["file"] (relative to the model file's
 /// folder), builds the FlexibleBody, adds it and its markers to ctx.model()
 /// and records the line of each entity in `lines`. Markers are given by

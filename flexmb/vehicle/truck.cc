@@ -12,7 +12,7 @@
 #include "flexmb/forces/joint_motor.h"
 #include "flexmb/forces/rotational_spring_damper.h"
 #include "flexmb/forces/spring_damper.h"
-#include "flexmb/model_file/parse_context.h"
+#include "flexmb/yaml/yaml_context.h"
 #include "flexmb/joints/distance.h"
 #include "flexmb/joints/gear.h"
 #include "flexmb/joints/prismatic.h"
@@ -61,7 +61,7 @@ int AddPart(Model& m, const std::string& name, const PartData& p, const Vec3& cg
   return m.AddBody(std::make_unique<RigidBody>(name, b));
 }
 
-void ReadPart(const YAML::Node& n, ParseContext& ctx, const char* key, PartData& p, MountData* mounts = nullptr) {
+void ReadPart(const YAML::Node& n, YamlContext& ctx, const char* key, PartData& p, MountData* mounts = nullptr) {
   const YAML::Node& node = n[key];
   ctx.SetEntity(std::string("truck part '") + key + "'");
   if (!node) ctx.Fail(n, std::string("missing part '") + key + "'");
@@ -84,7 +84,7 @@ void ReadPart(const YAML::Node& n, ParseContext& ctx, const char* key, PartData&
   if (p.inertia.minCoeff() <= 0) ctx.Fail(node["inertia"], "principal inertias must be positive");
 }
 
-void ReadSuspension(const YAML::Node& n, ParseContext& ctx, const char* key, SuspensionData& s) {
+void ReadSuspension(const YAML::Node& n, YamlContext& ctx, const char* key, SuspensionData& s) {
   const YAML::Node& node = n[key];
   ctx.SetEntity(std::string("suspension '") + key + "'");
   if (!node) ctx.Fail(n, std::string("missing suspension '") + key + "'");
@@ -102,7 +102,7 @@ void ReadSuspension(const YAML::Node& n, ParseContext& ctx, const char* key, Sus
 }
 
 // reads the ladder frame's parameters (frame map of the truck)
-void ReadFrame(const YAML::Node& n, ParseContext& ctx, TruckData& d) {
+void ReadFrame(const YAML::Node& n, YamlContext& ctx, TruckData& d) {
   const YAML::Node& node = n["frame"];
   ctx.SetEntity("truck frame");
   if (!node) ctx.Fail(n, "missing 'frame'");
@@ -484,18 +484,7 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
   return h;
 }
 
-TireData LoadTireFile(const std::string& path) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw InputError(std::string("cannot read the tire file: ") + e.what(), {path, 0, ""});
-  }
-  Model scratch;
-  ParseContext ctx(path, scratch);
-  ctx.SetEntity("tire data");
-  const YAML::Node t = root["tire"];
-  if (!t) ctx.Fail(root, "expected a top-level 'tire' map");
+TireData ReadTireData(const YAML::Node& t, YamlContext& ctx) {
   ctx.CheckKeys(t, {"name", "note", "count", "unloaded_radius", "vertical_stiffness", "vertical_damping",
                     "rolling_radius_factor", "nominal_load", "pcx1", "pdx1", "pdx2", "pex1", "pkx1", "pcy1", "pdy1",
                     "pdy2", "pey1", "pky1", "pky2", "rbx1", "rby1", "trail", "trail_decay", "rolling_resistance",
@@ -532,7 +521,21 @@ TireData LoadTireFile(const std::string& path) {
   return d;
 }
 
-TruckData ParseTruck(const YAML::Node& n, ParseContext& ctx, const std::string& dir) {
+TireData LoadTireFile(const std::string& path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw InputError(std::string("cannot read the tire file: ") + e.what(), {path, 0, ""});
+  }
+  YamlContext ctx(path);
+  ctx.SetEntity("tire data");
+  const YAML::Node t = root["tire"];
+  if (!t) ctx.Fail(root, "expected a top-level 'tire' map");
+  return ReadTireData(t, ctx);
+}
+
+TruckData ParseTruck(const YAML::Node& n, YamlContext& ctx, const std::string& dir) {
   TruckData d;
   ctx.SetEntity("truck");
   ctx.CheckKeys(n, {"wheelbase", "front_track", "rear_track", "kingpin_offset", "frame", "cab", "powertrain", "cargo",

@@ -23,7 +23,7 @@
 #include "flexmb/vehicle/tire.h"
 
 namespace flexmb {
-class ParseContext;
+class YamlContext;
 }
 
 namespace flexmb::vehicle {
@@ -180,9 +180,13 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
 
 /// Reads the truck's parameters from the "truck" map of a lane-change file;
 /// tire data come from the YAML files named there, relative to `dir`.
-TruckData ParseTruck(const YAML::Node& node, ParseContext& ctx, const std::string& dir);
+TruckData ParseTruck(const YAML::Node& node, YamlContext& ctx, const std::string& dir);
 
 /// Reads a tire data file (keys as the TireData members).
 TireData LoadTireFile(const std::string& path);
+
+/// Reads tire data from the map `t` (the keys of TireData; unknown keys are
+/// errors) and checks them; errors through `ctx` name the file and line.
+TireData ReadTireData(const YAML::Node& t, YamlContext& ctx);
 
 }  // namespace flexmb::vehicle

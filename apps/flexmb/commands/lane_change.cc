@@ -18,7 +18,7 @@
 #include "flexmb/common/error.h"
 #include "flexmb/body_file/body_file.h"
 #include "flexmb/common/json_text.h"
-#include "flexmb/model_file/parse_context.h"
+#include "flexmb/yaml/yaml_context.h"
 #include "apps/flexmb/commands/run.h"
 #include "flexmb/reduction/craig_bampton.h"
 #include "flexmb/reduction/stress_modes.h"
@@ -57,7 +57,7 @@ struct LaneChangeFile {
 
 // an optional sub-map of the test (course, driver, solver): checked for its
 // keys, the entity set for messages; an undefined node if absent
-YAML::Node Section(const YAML::Node& t, const char* key, ParseContext& ctx, std::initializer_list<const char*> keys) {
+YAML::Node Section(const YAML::Node& t, const char* key, YamlContext& ctx, std::initializer_list<const char*> keys) {
   const YAML::Node n = t[key];
   if (n) {
     ctx.SetEntity(key);
@@ -73,8 +73,7 @@ LaneChangeFile ReadFile(const std::string& path) {
   } catch (const YAML::Exception& e) {
     throw InputError(std::string("cannot read the lane-change file: ") + e.what(), {path, 0, ""});
   }
-  Model scratch;
-  ParseContext ctx(path, scratch);
+  YamlContext ctx(path);
   LaneChangeFile f;
   ctx.SetEntity("lane-change file");
   ctx.CheckKeys(root, {"lane_change_test", "truck", "name", "note"});

@@ -20,6 +20,7 @@
 #include "flexmb/forces/point_torque.h"
 #include "flexmb/forces/rotational_spring_damper.h"
 #include "flexmb/forces/spring_damper.h"
+#include "flexmb/model_file/element_registry.h"
 #include "flexmb/model_file/parse_context.h"
 #include "flexmb/model/model.h"
 
@@ -93,7 +94,7 @@ LoadFrame Frame(const YAML::Node& node, ParseContext& ctx) {
 }
 
 /// Coordinate of `joint` named or numbered at node["coordinate"]; 0 if absent.
-int CoordinateIndex(const YAML::Node& node, const Joint& joint, ParseContext& ctx) {
+int ForceCoordinateIndex(const YAML::Node& node, const Joint& joint, ParseContext& ctx) {
   if (!node["coordinate"]) return 0;
   const std::string text = ctx.String(node, "coordinate");
   std::string known;
@@ -184,7 +185,7 @@ void AddJointMotor(const YAML::Node& node, const std::string& name, ParseContext
   if (joint.NumCoordinates() == 0)
     ctx.Fail(node["joint"], "joint '" + joint.name() + "' (" + joint.type() +
                                 ") has no joint coordinate for a motor to act on");
-  const int k = CoordinateIndex(node, joint, ctx);
+  const int k = ForceCoordinateIndex(node, joint, ctx);
   std::shared_ptr<const ScalarFunction> f;
   if (node["function"]) f = ctx.Function(node, "function", "t");
   JointMotorPd pd;
@@ -205,29 +206,23 @@ void AddJointMotor(const YAML::Node& node, const std::string& name, ParseContext
   });
 }
 
+void AddPointForce(const YAML::Node& node, const std::string& name, ParseContext& ctx) {
+  AddPointLoad(node, name, false, ctx);
+}
+
+void AddPointTorque(const YAML::Node& node, const std::string& name, ParseContext& ctx) {
+  AddPointLoad(node, name, true, ctx);
+}
+
 }  // namespace
 
-void ParseForce(const YAML::Node& node, ParseContext& ctx) {
-  if (!node.IsMap()) ctx.Fail(node, "a force must be a map with at least 'name' and 'type'");
-  const std::string name = ctx.String(node, "name");
-  ctx.SetEntity("force '" + name + "'");
-  const std::string type = ctx.String(node, "type");
-  if (type == "spring_damper")
-    AddSpringDamper(node, name, ctx);
-  else if (type == "rotational_spring_damper")
-    AddRotationalSpringDamper(node, name, ctx);
-  else if (type == "bushing")
-    AddBushing(node, name, ctx);
-  else if (type == "point_force")
-    AddPointLoad(node, name, false, ctx);
-  else if (type == "point_torque")
-    AddPointLoad(node, name, true, ctx);
-  else if (type == "joint_motor")
-    AddJointMotor(node, name, ctx);
-  else
-    ctx.Fail(node["type"], "unknown force type '" + type +
-                               "' (known: spring_damper, rotational_spring_damper, bushing, "
-                               "point_force, point_torque, joint_motor)");
+void RegisterForceTypes(ElementRegistry& r) {
+  r.Add(ElementKind::kForce, "spring_damper", AddSpringDamper);
+  r.Add(ElementKind::kForce, "rotational_spring_damper", AddRotationalSpringDamper);
+  r.Add(ElementKind::kForce, "bushing", AddBushing);
+  r.Add(ElementKind::kForce, "point_force", AddPointForce);
+  r.Add(ElementKind::kForce, "point_torque", AddPointTorque);
+  r.Add(ElementKind::kForce, "joint_motor", AddJointMotor);
 }
 
 }  // namespace flexmb

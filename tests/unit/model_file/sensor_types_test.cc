@@ -1,4 +1,4 @@
-// ParseSensor: each sensor type from its model-file node, and errors that
+// Sensor entries (ParseElement with ElementKind::kSensor): each sensor type from its model-file node, and errors that
 // name the file line, the sensor and the offending value.
 
 #include <gtest/gtest.h>
@@ -6,6 +6,7 @@
 
 #include "flexmb/bodies/rigid_body.h"
 #include "flexmb/common/error.h"
+#include "flexmb/model_file/element_registry.h"
 #include "flexmb/model_file/parse_context.h"
 #include "flexmb/joints/revolute.h"
 #include "flexmb/joints/spherical.h"
@@ -31,7 +32,7 @@ std::unique_ptr<Model> SmallModel() {
 /// Parses `yaml` (one sensor) into `model`; returns the new sensor.
 const Sensor& Parse(Model& model, const std::string& yaml) {
   ParseContext ctx("model.yaml", model);
-  ParseSensor(YAML::Load(yaml), ctx);
+  ParseElement(ElementKind::kSensor, YAML::Load(yaml), 0, ctx);
   return *model.sensors.back();
 }
 

@@ -1,0 +1,119 @@
+// Joint and driver entries of the model file (reference: docs/model-file.md,
+// "joints" and "drivers"): every joint connects markers i and j on two
+// different bodies; a driver prescribes a coordinate of a joint.
+
+#include <memory>
+#include <string>
+
+#include "flexmb/joints/cylindrical.h"
+#include "flexmb/joints/distance.h"
+#include "flexmb/joints/fixed.h"
+#include "flexmb/joints/gear.h"
+#include "flexmb/joints/motion_driver.h"
+#include "flexmb/joints/planar.h"
+#include "flexmb/joints/prismatic.h"
+#include "flexmb/joints/revolute.h"
+#include "flexmb/joints/spherical.h"
+#include "flexmb/joints/universal.h"
+#include "flexmb/model/model.h"
+#include "flexmb/model_file/element_registry.h"
+#include "flexmb/model_file/joint_entry.h"
+#include "flexmb/model_file/parse_context.h"
+
+namespace flexmb {
+namespace {
+
+// initial world position of a marker's origin, from its body's initial coordinates
+Vec3 JointMarkerInitialPosition(const Model& model, int marker) {
+  const Marker& m = model.markers[marker];
+  const Body& b = *model.bodies[m.body];
+  VecX q = VecX::Zero(b.nq()), v = VecX::Zero(b.nv());
+  b.InitialCoordinates(q.data(), v.data());
+  MarkerState s;
+  b.EvaluateMarker(q.data(), v.data(), m, s);
+  return s.p_WM;
+}
+
+// a joint type without parameters
+template <class J>
+void ParsePlainJoint(const YAML::Node& node, const std::string& name, ParseContext& ctx) {
+  AddJointEntry(node, name, ctx, {}, [&](int, int) { return std::make_unique<J>(name); });
+}
+
+void ParseDistanceJoint(const YAML::Node& node, const std::string& name, ParseContext& ctx) {
+  AddJointEntry(node, name, ctx, {"length"}, [&](int mi, int mj) {
+    if (node["length"]) return std::make_unique<DistanceJoint>(name, ctx.Positive(node, "length"));
+    const double L = (JointMarkerInitialPosition(ctx.model(), mj) -
+                      JointMarkerInitialPosition(ctx.model(), mi)).norm();
+    if (!(L > 1e-9))
+      ctx.Fail(node, "the markers coincide initially, so the default length (their initial "
+                     "distance) is zero; a distance joint needs a positive 'length'");
+    return std::make_unique<DistanceJoint>(name, L);
+  });
+}
+
+void ParseGearJoint(const YAML::Node& node, const std::string& name, ParseContext& ctx) {
+  AddJointEntry(node, name, ctx, {"ratio"},
+                [&](int, int) { return std::make_unique<GearJoint>(name, ctx.Double(node, "ratio")); });
+}
+
+void ParseCoordinateDriver(const YAML::Node& node, const std::string& name, ParseContext& ctx) {
+  ctx.CheckKeys(node, {"name", "type", "joint", "coordinate", "function"});
+  const Joint& target = *ctx.model().joints[ctx.Joint(node, "joint")];
+  if (target.NumCoordinates() == 0)
+    ctx.Fail(node["joint"], "joint '" + target.name() + "' is a " + target.type() +
+                                " joint, which has no joint coordinate to drive");
+  int coordinate = 0;
+  if (node["coordinate"]) {
+    const std::string c = ctx.String(node, "coordinate");
+    std::string list;
+    coordinate = -1;
+    for (int i = 0; i < target.NumCoordinates(); ++i) {
+      if (c == target.CoordinateName(i)) coordinate = i;
+      list += (list.empty() ? "" : ", ") + std::string(target.CoordinateName(i));
+    }
+    if (coordinate < 0)
+      ctx.Fail(node["coordinate"], "joint '" + target.name() + "' has no coordinate '" + c +
+                                       "' (it has: " + list + ")");
+  }
+  auto f = ctx.Function(node, "function");
+  auto driver = std::make_unique<MotionDriver>(name, &target, coordinate, std::move(f));
+  ctx.Guard(node, [&] {
+    return ctx.model().AddJoint(std::move(driver), target.marker_i, target.marker_j);
+  });
+  ctx.lines()["joint '" + name + "'"] = ParseContext::Line(node);
+}
+
+}  // namespace
+
+void AddJointEntry(const YAML::Node& node, const std::string& name, ParseContext& ctx,
+                   std::initializer_list<const char*> parameters,
+                   const std::function<std::unique_ptr<Joint>(int mi, int mj)>& make) {
+  std::vector<const char*> keys = {"name", "type", "i", "j"};
+  keys.insert(keys.end(), parameters.begin(), parameters.end());
+  ctx.CheckKeys(node, keys);
+  const int mi = ctx.Marker(node, "i");
+  const int mj = ctx.Marker(node, "j");
+  const Model& model = ctx.model();
+  if (model.markers[mi].body == model.markers[mj].body)
+    ctx.Fail(node, "markers '" + model.markers[mi].name + "' and '" + model.markers[mj].name +
+                       "' are both on body '" + model.bodies[model.markers[mi].body]->name() +
+                       "': a joint must connect two different bodies");
+  auto joint = ctx.Guard(node, [&] { return make(mi, mj); });
+  ctx.Guard(node, [&] { return ctx.model().AddJoint(std::move(joint), mi, mj); });
+}
+
+void RegisterJointTypes(ElementRegistry& r) {
+  r.Add(ElementKind::kJoint, "cylindrical", ParsePlainJoint<CylindricalJoint>);
+  r.Add(ElementKind::kJoint, "distance", ParseDistanceJoint);
+  r.Add(ElementKind::kJoint, "fixed", ParsePlainJoint<FixedJoint>);
+  r.Add(ElementKind::kJoint, "gear", ParseGearJoint);
+  r.Add(ElementKind::kJoint, "planar", ParsePlainJoint<PlanarJoint>);
+  r.Add(ElementKind::kJoint, "prismatic", ParsePlainJoint<PrismaticJoint>);
+  r.Add(ElementKind::kJoint, "revolute", ParsePlainJoint<RevoluteJoint>);
+  r.Add(ElementKind::kJoint, "spherical", ParsePlainJoint<SphericalJoint>);
+  r.Add(ElementKind::kJoint, "universal", ParsePlainJoint<UniversalJoint>);
+  r.Add(ElementKind::kDriver, "coordinate", ParseCoordinateDriver);
+}
+
+}  // namespace flexmb
