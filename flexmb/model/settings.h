@@ -1,6 +1,10 @@
 #pragma once
 /// \file settings.h
-/// Solver and output settings of a model.
+/// Solver and output settings of a model, and the one set of rules they obey
+/// whoever sets them (model file, lane-change file, command line, code).
+
+#include <optional>
+#include <string>
 
 namespace flexmb {
 
@@ -29,6 +33,30 @@ struct SolverSettings {
   double assembly_tol = 1e-10; ///< position assembly tolerance on ||Phi|| [m]
   double redundancy_tol = 1e-8; ///< relative rank tolerance for redundant constraints
 };
+
+/// A broken rule of the solver settings: the model-file key it is about and
+/// the message ("'dt_min' must not exceed 'dt'").
+struct SettingsProblem {
+  const char* key;
+  std::string message;
+};
+
+/// The first rule of `s` that is broken (ranges of each setting and the
+/// rules tying them together: dt_min <= dt, dt_max = 0 or >= dt), or none.
+/// Every writer of SolverSettings checks through this one function.
+std::optional<SettingsProblem> FindSolverSettingsProblem(const SolverSettings& s);
+
+/// Values that replace the model file's, e.g. from the command line.
+struct SolverOverrides {
+  std::optional<double> t_end;  ///< end time [s] (--t-end)
+  std::optional<double> dt;     ///< (initial) step size [s] (--dt)
+};
+
+/// Applies `o` to `s`, then checks `s` by FindSolverSettingsProblem; throws
+/// InputError naming the option ("--dt 0.5: 'dt_min' must not exceed 'dt'").
+/// Called before the model is finalized, so an override is checked like the
+/// file's value.
+void ApplySolverOverrides(const SolverOverrides& o, SolverSettings& s);
 
 /// Settings of the result output.
 struct OutputSettings {

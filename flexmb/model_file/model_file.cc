@@ -17,6 +17,7 @@
 #include "flexmb/model_file/body_entry.h"
 #include "flexmb/model_file/element_registry.h"
 #include "flexmb/model_file/parse_context.h"
+#include "flexmb/model_file/solver_section.h"
 
 namespace flexmb {
 namespace {
@@ -46,40 +47,7 @@ void ParseList(const YAML::Node& root, const char* key, ElementKind kind, ParseC
 
 void ParseSolver(const YAML::Node& node, ParseContext& ctx) {
   ctx.SetEntity("solver");
-  ctx.CheckKeys(node, {"t_end", "dt", "dt_min", "dt_max", "rho_inf", "adaptive", "rtol", "atol",
-                       "newton_tol", "max_newton", "geometric_stiffness", "assembly_tol",
-                       "redundancy_tol", "jacobian_reuse", "jacobian_reuse_rate"});
-  SolverSettings& s = ctx.model().solver;
-  auto positive = [&](const char* key, double fallback) {
-    const double x = ctx.Double(node, key, fallback);
-    if (!(x > 0.0)) ctx.Fail(node[key], std::string("'") + key + "' must be positive, got " + node[key].Scalar());
-    return x;
-  };
-  s.t_end = positive("t_end", s.t_end);
-  s.dt = positive("dt", s.dt);
-  s.dt_min = positive("dt_min", s.dt_min);
-  if (s.dt_min > s.dt)
-    ctx.Fail(node["dt_min"] ? node["dt_min"] : node["dt"], "'dt_min' must not exceed 'dt'");
-  s.dt_max = ctx.Double(node, "dt_max", s.dt_max);
-  if (s.dt_max < 0.0 || (s.dt_max > 0.0 && s.dt_max < s.dt))
-    ctx.Fail(node["dt_max"], "'dt_max' must be 0 (= 100 dt) or at least 'dt'");
-  s.rho_inf = ctx.Double(node, "rho_inf", s.rho_inf);
-  if (s.rho_inf < 0.0 || s.rho_inf > 1.0)
-    ctx.Fail(node["rho_inf"], "'rho_inf' must lie in [0, 1], got " + node["rho_inf"].Scalar());
-  s.adaptive = ctx.Bool(node, "adaptive", s.adaptive);
-  s.rtol = positive("rtol", s.rtol);
-  s.atol = positive("atol", s.atol);
-  s.newton_tol = positive("newton_tol", s.newton_tol);
-  s.max_newton = ctx.Integer(node, "max_newton", s.max_newton);
-  if (s.max_newton < 1) ctx.Fail(node["max_newton"], "'max_newton' must be at least 1");
-  s.geometric_stiffness = ctx.Bool(node, "geometric_stiffness", s.geometric_stiffness);
-  s.jacobian_reuse = ctx.Bool(node, "jacobian_reuse", s.jacobian_reuse);
-  s.jacobian_reuse_rate = ctx.Double(node, "jacobian_reuse_rate", s.jacobian_reuse_rate);
-  if (!(s.jacobian_reuse_rate > 0.0 && s.jacobian_reuse_rate < 1.0))
-    ctx.Fail(node["jacobian_reuse_rate"], "'jacobian_reuse_rate' must lie in (0, 1)");
-  s.assembly_tol = positive("assembly_tol", s.assembly_tol);
-  s.redundancy_tol = positive("redundancy_tol", s.redundancy_tol);
-  if (s.redundancy_tol >= 1.0) ctx.Fail(node["redundancy_tol"], "'redundancy_tol' must be below 1");
+  ReadSolverSection(node, ctx, ctx.model().solver);
 }
 
 void ParseOutput(const YAML::Node& node, ParseContext& ctx) {
@@ -97,7 +65,7 @@ void ParseOutput(const YAML::Node& node, ParseContext& ctx) {
     ctx.Fail(node["deformation_scale"], "'deformation_scale' must be a finite number >= 0");
 }
 
-void BuildModel(const YAML::Node& root, ParseContext& ctx) {
+void BuildModel(const YAML::Node& root, ParseContext& ctx, const SolverOverrides& overrides) {
   if (!root || root.IsNull()) ctx.Fail(root, "the model file is empty");
   ctx.CheckKeys(root, {"name", "gravity", "ground", "bodies", "joints", "drivers", "forces", "sensors",
                        "solver", "output"});
@@ -112,6 +80,14 @@ void BuildModel(const YAML::Node& root, ParseContext& ctx) {
   ParseList(root, "sensors", ElementKind::kSensor, ctx);
   if (root["solver"]) ParseSolver(root["solver"], ctx);
   if (root["output"]) ParseOutput(root["output"], ctx);
+  if (overrides.t_end || overrides.dt) {
+    ctx.SetEntity("solver");
+    try {
+      ApplySolverOverrides(overrides, model.solver);
+    } catch (const InputError& e) {
+      throw InputError(e.message(), {ctx.file(), 0, "solver"});
+    }
+  }
   ctx.SetEntity("");
   try {
     model.Finalize();
@@ -151,7 +127,8 @@ void ParseElement(ElementKind kind, const YAML::Node& node, int k, ParseContext&
         ParseContext::Line(node);
 }
 
-std::unique_ptr<Model> LoadModelString(const std::string& yaml, const std::string& name_for_messages) {
+std::unique_ptr<Model> LoadModelString(const std::string& yaml, const std::string& name_for_messages,
+                                       const SolverOverrides& overrides) {
   YAML::Node root;
   try {
     root = YAML::Load(yaml);
@@ -162,14 +139,14 @@ std::unique_ptr<Model> LoadModelString(const std::string& yaml, const std::strin
   auto model = std::make_unique<Model>();
   ParseContext ctx(name_for_messages, *model);
   try {
-    BuildModel(root, ctx);
+    BuildModel(root, ctx, overrides);
   } catch (const YAML::Exception& e) {
     throw InputError(e.msg, {name_for_messages, e.mark.is_null() ? 0 : e.mark.line + 1, ctx.entity()});
   }
   return model;
 }
 
-std::unique_ptr<Model> LoadModelFile(const std::string& path) {
+std::unique_ptr<Model> LoadModelFile(const std::string& path, const SolverOverrides& overrides) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw InputError("cannot open the model file: it is a directory", {path, 0, ""});
@@ -179,7 +156,7 @@ std::unique_ptr<Model> LoadModelFile(const std::string& path) {
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError("cannot read the model file", {path, 0, ""});
-  return LoadModelString(text.str(), path);
+  return LoadModelString(text.str(), path, overrides);
 }
 
 }  // namespace flexmb

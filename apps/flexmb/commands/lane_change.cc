@@ -18,6 +18,7 @@
 #include "flexmb/common/error.h"
 #include "flexmb/body_file/body_file.h"
 #include "flexmb/common/json_text.h"
+#include "flexmb/model_file/solver_section.h"
 #include "flexmb/yaml/yaml_context.h"
 #include "apps/flexmb/commands/run.h"
 #include "flexmb/reduction/craig_bampton.h"
@@ -38,6 +39,13 @@ constexpr double kDeg = 180.0 / std::numbers::pi;
 /// Thrown by the observer to end the run (test distance reached or failure).
 struct EndOfTest {};
 
+// the lane-change file's solver defaults: steps of 2 ms
+SolverSettings LaneChangeSolverDefaults() {
+  SolverSettings s;
+  s.dt = 0.002;
+  return s;
+}
+
 /// Everything a lane-change file holds.
 struct LaneChangeFile {
   double speed_kmh = 55.0;
@@ -47,9 +55,11 @@ struct LaneChangeFile {
   double mu = 0.8;
   LaneChangeCourseData course;
   DriverData driver;
-  double dt = 0.002, rho_inf = 0.8, output_interval = 0.01, newton_tol = 1e-10;
-  bool jacobian_reuse = false;
-  double jacobian_reuse_rate = SolverSettings{}.jacobian_reuse_rate;
+  /// the `solver:` section (model/settings.h rules); dt 2 ms by default, and
+  /// dt_min 1e-6 dt unless the file gives it
+  SolverSettings solver = LaneChangeSolverDefaults();
+  bool dt_min_given = false;
+  double output_interval = 0.01;
   bool animation = false;
   TruckAnimationData animation_data;
   TruckData truck;
@@ -131,16 +141,11 @@ LaneChangeFile ReadFile(const std::string& path) {
     dd.max_drive_torque = ctx.Double(d, "max_drive_torque", dd.max_drive_torque);
     dd.hold_speed = ctx.Bool(d, "hold_speed", dd.hold_speed);
   }
-  if (const YAML::Node s = Section(t, "solver", ctx, {"dt", "rho_inf", "output_interval", "newton_tol", "jacobian_reuse",
-                                                         "jacobian_reuse_rate"})) {
-    if (s["dt"]) f.dt = ctx.Positive(s, "dt");
-    f.rho_inf = ctx.Double(s, "rho_inf", f.rho_inf);
+  if (const YAML::Node s = t["solver"]) {
+    ctx.SetEntity("solver");
+    ReadSolverSection(s, ctx, f.solver, {"output_interval"});
+    f.dt_min_given = bool(s["dt_min"]);
     f.output_interval = ctx.Double(s, "output_interval", f.output_interval);
-    if (s["newton_tol"]) f.newton_tol = ctx.Positive(s, "newton_tol");
-    f.jacobian_reuse = ctx.Bool(s, "jacobian_reuse", f.jacobian_reuse);
-    f.jacobian_reuse_rate = ctx.Double(s, "jacobian_reuse_rate", f.jacobian_reuse_rate);
-    if (!(f.jacobian_reuse_rate > 0.0 && f.jacobian_reuse_rate < 1.0))
-      ctx.Fail(s["jacobian_reuse_rate"], "'jacobian_reuse_rate' must lie in (0, 1)");
   }
   const YAML::Node tr = root["truck"];
   if (!tr) ctx.Fail(root, "missing the 'truck' map");
@@ -330,12 +335,12 @@ std::unique_ptr<LaneChangeSetup> SetUpLaneChange(const LaneChangeOptions& opt) {
   f = ReadFile(opt.file);
   if (opt.speed_kmh) f.speed_kmh = *opt.speed_kmh;
   if (opt.frame) f.frame = *opt.frame;
-  if (opt.dt) f.dt = *opt.dt;
+  ApplySolverOverrides(SolverOverrides{std::nullopt, opt.dt}, f.solver);
+  if (!f.dt_min_given) f.solver.dt_min = 1e-6 * f.solver.dt;
   if (opt.run_up_time) f.run_up_time = *opt.run_up_time;
   if (!(f.run_up_time >= 0) || !std::isfinite(f.run_up_time)) throw InputError("run-up time must be >= 0 s");
   if (!std::isfinite(f.speed_kmh) || f.speed_kmh < 0) throw InputError("entry speed must be >= 0 km/h");
   if (f.frame != "rigid" && f.frame != "elastic") throw InputError("frame must be 'rigid' or 'elastic', got '" + f.frame + "'");
-  if (!(f.dt > 0)) throw InputError("dt must be positive");
   if (opt.animation) f.animation = *opt.animation;
   if (opt.animation_fps) {
     f.animation_data.fps = *opt.animation_fps;
@@ -367,12 +372,7 @@ std::unique_ptr<LaneChangeSetup> SetUpLaneChange(const LaneChangeOptions& opt) {
     setup->reduction_wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
   model.name = "truck_lane_change";
-  model.solver.dt = f.dt;
-  model.solver.rho_inf = f.rho_inf;
-  model.solver.dt_min = 1e-6 * f.dt;
-  model.solver.newton_tol = f.newton_tol;
-  model.solver.jacobian_reuse = f.jacobian_reuse;
-  model.solver.jacobian_reuse_rate = f.jacobian_reuse_rate;
+  model.solver = f.solver;
   Driver& driver = *setup->driver;
   setup->h = BuildTruck(f.truck, setup->v0, f.mu, driver.steering_wheel_angle(), driver.drive_torque(), model,
                         driver.brake_torque());
@@ -404,8 +404,9 @@ void CheckLaneChange(const LaneChangeOptions& opt, std::FILE* out) {
   std::fprintf(out, "driver: %s, preview %.2f s (min %.1f m), speed %s\n",
                f.driver.steering_law == SteeringLaw::kPreview ? "preview" : "pure pursuit", f.driver.preview_time,
                f.driver.min_preview, f.driver.hold_speed ? "held" : "not held");
-  std::fprintf(out, "solver: dt %g s, rho_inf %g, newton_tol %g, jacobian_reuse %s (rate %g)\n", f.dt, f.rho_inf,
-               f.newton_tol, f.jacobian_reuse ? "on" : "off", f.jacobian_reuse_rate);
+  std::fprintf(out, "solver: dt %g s, rho_inf %g, newton_tol %g, jacobian_reuse %s (rate %g)\n", f.solver.dt,
+               f.solver.rho_inf, f.solver.newton_tol, f.solver.jacobian_reuse ? "on" : "off",
+               f.solver.jacobian_reuse_rate);
   std::fflush(out);
 }
 

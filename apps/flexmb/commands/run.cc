@@ -78,19 +78,8 @@ void WriteSummaryFile(const std::string& path, const RunSummary& s) {
 // the simulation itself; throws on any fault, statistics go to s as it runs
 void Simulate(const RunOptions& opt, RunSummary& s, std::unique_ptr<Model>& model,
               std::unique_ptr<Simulator>& sim, Clock::time_point& t_start) {
-  model = LoadModelFile(opt.model_path);
+  model = LoadModelFile(opt.model_path, SolverOverrides{opt.t_end, opt.dt});
   s.model_name = model->name;
-  if (opt.t_end) {
-    if (!(*opt.t_end > 0) || !std::isfinite(*opt.t_end))
-      throw InputError("--t-end must be a positive number of seconds");
-    model->solver.t_end = *opt.t_end;
-  }
-  if (opt.dt) {
-    if (!(*opt.dt > 0) || !std::isfinite(*opt.dt))
-      throw InputError("--dt must be a positive number of seconds");
-    model->solver.dt = *opt.dt;
-    if (model->solver.dt_min > model->solver.dt) model->solver.dt_min = 1e-6 * model->solver.dt;
-  }
   const double t_end = model->solver.t_end;
   s.t_end_requested = t_end;
 
