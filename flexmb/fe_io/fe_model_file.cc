@@ -16,13 +16,10 @@
 
 #include "flexmb/common/error.h"
 #include "flexmb/common/text.h"
-#include "flexmb/fe_io/abaqus/abaqus_reader.h"
 #include "flexmb/fe_io/exchange_set.h"
-#include "flexmb/fe_io/gmsh_reader.h"
+#include "flexmb/fe_io/format_registry.h"
 #include "flexmb/fe_io/imported_matrices.h"
-#include "flexmb/fe_io/nastran/nastran_reader.h"
 #include "flexmb/yaml/yaml_context.h"
-#include "flexmb/fe_io/vtk_mesh.h"
 
 namespace flexmb::io {
 namespace {
@@ -30,22 +27,13 @@ namespace {
 namespace fs = std::filesystem;
 using fe::ElementType;
 
-bool IsNastran(const std::string& ext) {
-  return ext == ".bdf" || ext == ".nas" || ext == ".dat" || ext == ".blk" || ext == ".bulk";
-}
-
 // a mesh file of any supported format (not an FE model file or directory)
 bool ReadMeshFile(const std::string& path, fe::Mesh& mesh) {
-  const std::string ext = LowerExtension(path);
-  if (IsNastran(ext)) mesh = ReadNastran(path);
-  else if (ext == ".inp") mesh = ReadAbaqus(path);
-  else if (ext == ".msh") mesh = ReadGmsh(path);
-  else if (ext == ".vtk") mesh = ReadVtk(path);
-  else return false;
+  const FeFileFormat* format = FindMeshFormat(path);
+  if (!format) return false;
+  mesh = format->read_mesh(path);
   return true;
 }
-
-const char* kMeshKinds = ".bdf, .nas, .dat, .blk, .bulk (Nastran), .inp (Abaqus/CalculiX), .msh (gmsh), .vtk (legacy VTK)";
 
 std::string Quote(const std::string& s) { return "'" + s + "'"; }
 
@@ -155,7 +143,7 @@ class FeModelFileParser {
     if (fs::is_directory(path, ec)) ctx_.Fail(v, "'mesh' must be a mesh file, got the directory " + path);
     const bool known = ctx_.Guard(v, [&] { return ReadMeshFile(path, *mesh_); });
     if (!known)
-      ctx_.Fail(v, "'mesh' file " + Quote(v.Scalar()) + " has an unknown extension (known: " + kMeshKinds + ")");
+      ctx_.Fail(v, "'mesh' file " + Quote(v.Scalar()) + " has an unknown extension (known: " + MeshFormatList() + ")");
     mesh_name_ = fs::path(path).filename().string();
   }
 
@@ -565,7 +553,7 @@ fe::FeModel LoadFeModel(const std::string& path) {
   fe::FeModel model;
   if (!ReadMeshFile(path, model.mesh))
     throw InputError("unknown FE model file type " + Quote(ext.empty() ? fs::path(path).filename().string() : ext) +
-                         " (known: " + kMeshKinds + ", .yaml/.yml (FE model file), or an exchange-set directory)",
+                         " (known: " + MeshFormatList() + ", .yaml/.yml (FE model file), or an exchange-set directory)",
                      {path, 0, ""});
   return model;
 }

@@ -10,47 +10,33 @@
 
 #include "flexmb/common/error.h"
 #include "flexmb/common/text.h"
-#include "flexmb/fe_io/abaqus/abaqus_reader.h"
 #include "flexmb/fe_io/calculix_matrices.h"
 #include "flexmb/fe_io/dof_map.h"
-#include "flexmb/fe_io/gmsh_reader.h"
-#include "flexmb/fe_io/harwell_boeing.h"
-#include "flexmb/fe_io/matrix_market.h"
+#include "flexmb/fe_io/format_registry.h"
 #include "flexmb/fe_io/matrix_text.h"
-#include "flexmb/fe_io/nastran/nastran_reader.h"
-#include "flexmb/fe_io/vtk_mesh.h"
 
 namespace flexmb::io {
 
 namespace {
 
-bool IsHarwellBoeing(const std::string& ext) {
-  return ext == ".hb" || ext == ".rb" || ext == ".rsa" || ext == ".rua" || ext == ".psa" || ext == ".hbf";
-}
-
 // reads one matrix by its extension; `n` is the DOF count for CalculiX files
 fe::SparseMat ReadMatrix(const std::string& path, const std::string& what, int n) {
-  const std::string ext = LowerExtension(path);
-  if (IsHarwellBoeing(ext)) return ReadHarwellBoeing(path).A;
-  if (ext == ".mtx") return ReadMatrixMarket(path).A;
-  if (ext == ".sti" || ext == ".mas") {
-    if (n <= 0) throw InputError("a CalculiX matrix needs its job.dof file", {path, 0, what});
-    return ReadCalculixMatrix(path, n);
-  }
-  throw InputError("unknown matrix file type " + QuoteToken(ext) +
-                       " (expected .hb/.rb/.rsa/.rua Harwell-Boeing, .mtx Matrix Market, or CalculiX .sti/.mas)",
-                   {path, 0, what});
+  const FeFileFormat* format = FindMatrixFormat(path);
+  if (!format)
+    throw InputError("unknown matrix file type " + QuoteToken(LowerExtension(path)) + " (expected " +
+                         MatrixFormatList() + ")",
+                     {path, 0, what});
+  return format->read_matrix(path, what, n);
 }
 
 fe::Mesh ReadGeometry(const std::string& path) {
   if (path.empty()) throw InputError("imported matrices need a geometry file (node coordinates)");
-  const std::string ext = LowerExtension(path);
-  if (ext == ".vtk") return ReadVtk(path);
-  if (ext == ".inp") return ReadAbaqus(path);
-  if (ext == ".msh") return ReadGmsh(path);
-  if (ext == ".bdf" || ext == ".nas" || ext == ".dat" || ext == ".blk" || ext == ".bulk") return ReadNastran(path);
-  throw InputError("unknown geometry file type " + QuoteToken(ext) + " (expected .vtk, .inp, .msh, .bdf/.nas/.dat)",
-                   {path, 0, "geometry"});
+  const FeFileFormat* format = FindMeshFormat(path);
+  if (!format)
+    throw InputError("unknown geometry file type " + QuoteToken(LowerExtension(path)) + " (expected " +
+                         MeshFormatList() + ")",
+                     {path, 0, "geometry"});
+  return format->read_mesh(path);
 }
 
 std::string RowName(const MatrixRowMap& map, int r) {
