@@ -42,6 +42,8 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
   const double bp = (1.0 - am_) / (h * h * beta_ * (1.0 - af_));  // d vdot / d dx
   const double gp = gamma_ / (h * beta_);                        // d v / d dx
   const double ap = (1.0 - af_) / (1.0 - am_);                    // d a / d vdot
+  last_bp_ = bp;
+  last_failed_ = true;
 
   // predictor (vdot_{n+1} = 0)
   a1_ = (af_ * vdot_ - am_ * a_) / (1.0 - am_);
@@ -150,6 +152,7 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
       EvaluateConstraints(m, trial_, ws);
       const double viol = na > 0 ? ws.phi.lpNorm<Eigen::Infinity>() : 0.0;
       stats.max_constraint_violation = std::max(stats.max_constraint_violation, viol);
+      last_failed_ = false;
       return StepStatus::kConverged;
     }
   }
@@ -162,6 +165,12 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
   }
   hint_ = worst >= 0 ? "largest constraint residual in " + DescribeEquation(m, worst) : "Newton did not converge";
   return StepStatus::kNewtonFailed;
+}
+
+std::vector<ResidualShare> GeneralizedAlpha::FailureShares(int count) const {
+  if (!last_failed_) return {};
+  // the multipliers of the last iterate, all equations
+  return LargestResidualShares(model_, ws_, res_, trial_.lambda, last_bp_, count);
 }
 
 void GeneralizedAlpha::Accept(State& s) {
