@@ -1,5 +1,6 @@
 #include "flexmb/solver/generalized_alpha.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "flexmb/solver/assembler.h"
@@ -43,6 +44,7 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
   const double gp = gamma_ / (h * beta_);                        // d v / d dx
   const double ap = (1.0 - af_) / (1.0 - am_);                    // d a / d vdot
   last_bp_ = bp;
+  last_h_ = h;
   last_failed_ = true;
 
   // predictor (vdot_{n+1} = 0)
@@ -171,6 +173,30 @@ std::vector<ResidualShare> GeneralizedAlpha::FailureShares(int count) const {
   if (!last_failed_) return {};
   // the multipliers of the last iterate, all equations
   return LargestResidualShares(model_, ws_, res_, trial_.lambda, last_bp_, count);
+}
+
+std::vector<ResidualShare> GeneralizedAlpha::ErrorShares(int count) const {
+  if (last_failed_) return {};
+  // the terms of error_estimate(), summed per body
+  const double c = (beta_ - 1.0 / 6.0) * last_h_ * last_h_;
+  std::vector<ResidualShare> shares;
+  double total = 0.0;
+  for (const auto& b : model_.bodies) {
+    double sum = 0.0;
+    for (int i = b->v_offset; i < b->v_offset + b->nv(); ++i) {
+      const double e = c * (a1_(i) - a_(i)) / (model_.solver.atol + model_.solver.rtol * std::abs(dq_(i)));
+      sum += e * e;
+    }
+    total += sum;
+    shares.push_back({"body", b->name(), sum});
+  }
+  for (ResidualShare& s : shares) s.share = total > 0.0 ? s.share / total : 0.0;
+  std::stable_sort(shares.begin(), shares.end(),
+                   [](const ResidualShare& a, const ResidualShare& b) { return a.share > b.share; });
+  std::vector<ResidualShare> top;
+  for (const ResidualShare& s : shares)
+    if (static_cast<int>(top.size()) < count && s.share >= 0.01) top.push_back(s);
+  return top;
 }
 
 void GeneralizedAlpha::Accept(State& s) {

@@ -79,6 +79,12 @@ class GeneralizedAlpha {
   /// converged. Allocates: for failed runs only.
   std::vector<ResidualShare> FailureShares(int count) const;
 
+  /// The bodies with the largest shares of the local error estimate of the
+  /// last attempt, which converged (the sum over each body's coordinates of
+  /// the squared scaled errors, as a fraction of the whole), largest first,
+  /// at most `count`, none below 1 %. Empty if the last attempt failed.
+  std::vector<ResidualShare> ErrorShares(int count) const;
+
   IntegratorStats stats;
 
  private:
@@ -93,6 +99,7 @@ class GeneralizedAlpha {
   std::string hint_;
   bool last_failed_ = false;
   double last_bp_ = 1.0;  // d vdot / d dx of the last attempt
+  double last_h_ = 0.0;   // step size of the last attempt
   // factorization in lu_ usable for steps of size matrix_h_ (modified Newton)
   bool have_matrix_ = false;
   double matrix_h_ = 0.0;

@@ -164,9 +164,17 @@ bool IsRunaway(long rejected, long accepted) {
 void Simulator::Fail(const std::string& what) {
   failure_shares_ = integrator_.FailureShares(3);
   if (!integrator_.last_failed()) {
-    throw NumericalError(what + SimulatorFormat("the local error estimate stays above the tolerance (rtol = %g, "
-                                                "atol = %g)",
-                                                model_.solver.rtol, model_.solver.atol));
+    // the error control cut the step: name the bodies with the largest error
+    failure_shares_ = integrator_.ErrorShares(3);
+    std::string text = what + SimulatorFormat("the local error estimate stays above the tolerance (rtol = %g, "
+                                              "atol = %g)",
+                                              model_.solver.rtol, model_.solver.atol);
+    if (!failure_shares_.empty()) {
+      std::string named = DescribeResidualShares(failure_shares_);
+      named.replace(0, named.find(':'), "largest share of the local error estimate");
+      text += "; " + named;
+    }
+    throw NumericalError(text, {"", 0, failure_shares_.empty() ? "" : failure_shares_.front().Entity()});
   }
   std::string text = what + integrator_.failure_hint();
   if (!failure_shares_.empty()) text += "; " + DescribeResidualShares(failure_shares_);

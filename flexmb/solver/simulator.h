@@ -78,9 +78,10 @@ class Simulator {
   /// h once the step resolves the motion; the factor 0.5 covers coarse steps
   /// that do not, where the estimate grows more slowly).
   const AccuracyReport& accuracy() const { return accuracy_; }
-  /// The elements named by the last failure (largest share of the scaled
-  /// Newton residual first); empty if the run has not failed or the last
-  /// attempt converged (a failure of the error control).
+  /// The elements named by the last failure: largest share of the scaled
+  /// Newton residual first, or, when the error control cut the step below
+  /// dt_min (the last attempt converged), the bodies with the largest
+  /// shares of the local error estimate; empty if the run has not failed.
   const std::vector<ResidualShare>& failure_shares() const { return failure_shares_; }
 
  private:

@@ -182,6 +182,23 @@ TEST(RunFailure, NonFiniteForceAndTinyDtMinAreReadable) {
   EXPECT_EQ(s.rows, 5) << "rows before the fault are kept";
 }
 
+TEST(RunFailure, AnAdaptiveRunCutByItsErrorControlNamesTheBody) {
+  // the block on a 2e5 N/m spring (100 Hz): its local error keeps the
+  // adaptive step far below dt_min = 1 ms while Newton converges
+  const RunDir d("error_culprit");
+  const RunSummary s = d.Run(PendulumYaml(
+      "{t_end: 0.2, dt: 0.01, dt_min: 0.001, adaptive: true, rho_inf: 0.9}", "{interval: 0.01}",
+      "forces:\n  - {name: spring, type: spring_damper, i: ground.anchor, j: block.top, stiffness: 2.0e5,\n"
+      "     free_length: 0.9}\n"));
+  ASSERT_EQ(s.status, RunStatus::kNumericalError) << s.message;
+  EXPECT_NE(s.message.find("dt_min = 0.001 s"), std::string::npos) << s.message;
+  EXPECT_NE(s.message.find("the local error estimate stays above the tolerance"), std::string::npos) << s.message;
+  EXPECT_NE(s.message.find("largest share of the local error estimate: body 'block'"), std::string::npos)
+      << s.message;
+  EXPECT_EQ(s.culprit, "body 'block'");
+  EXPECT_GT(s.culprit_share, 0.5);
+}
+
 TEST(RunFailure, ARunawayStopsWithItsOwnMessage) {
   // NaN from the first step on and a dt_min so small that the cuts of the
   // 1000 s step would go on for more than 1000 attempts (log2(1e303))
