@@ -24,9 +24,10 @@ namespace {
 
 volatile std::sig_atomic_t g_interrupted = 0;
 
-// the first Ctrl-C stops the run at the next output time; a second one kills
+// the first Ctrl-C (or SIGTERM) stops the run at the next output time,
+// which reports the signal (g_interrupted holds its number); a second one kills
 extern "C" void OnInterrupt(int sig) {
-  g_interrupted = 1;
+  g_interrupted = sig;
   std::signal(sig, SIG_DFL);
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "flexmb/common/error.h"
+#include "flexmb/common/log.h"
 #include "flexmb/body_file/body_file_mesh.h"
 #include "flexmb/body_file/hdf5_file.h"
 
@@ -340,6 +341,12 @@ ReducedBody ReadBody(const std::string& path) {
     const Dims dims = {hn, Size(ne_t), Size(t.locations.size()), Size(t.components.size())};
     t.modes.resize(static_cast<Eigen::Index>(ne_t * t.locations.size() * t.components.size()), n);
     r.DoublesInto(group + "/modes", dims, t.modes.data());
+  }
+  if (!r.unchecked().empty()) {
+    LogWarning(path + ": body file without checksums (" + std::to_string(r.unchecked().size()) +
+               " datasets, e.g. " + r.unchecked().front() +
+               "; written by an older flexmb): damage to its data cannot be detected; reduce the body again "
+               "with this flexmb to protect it");
   }
   return body;
 }

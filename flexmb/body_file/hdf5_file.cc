@@ -1,5 +1,6 @@
 #include "flexmb/body_file/hdf5_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -29,6 +30,70 @@ std::string Hdf5Reason() {
 }
 
 using Block3 = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
+
+// largest chunk of a checksummed dataset [bytes]: whole small datasets are
+// one chunk, large ones are split along their slowest dimensions
+constexpr size_t kHdf5ChunkBytes = size_t{1} << 20;
+
+// dataset creation properties: chunked with the Fletcher32 checksum filter
+// (invalid handle for a dataset without values, which cannot be chunked)
+Handle ChecksummedLayout(const Dims& dims, hid_t file_type) {
+  size_t count = 1;
+  for (hsize_t d : dims) count *= static_cast<size_t>(d);
+  if (dims.empty() || count == 0) return Handle();
+  Dims chunk = dims;
+  size_t bytes = count * std::max<size_t>(1, H5Tget_size(file_type));
+  for (size_t k = 0; k < chunk.size() && bytes > kHdf5ChunkBytes; ++k) {
+    while (chunk[k] > 1 && bytes > kHdf5ChunkBytes) {
+      const hsize_t half = (chunk[k] + 1) / 2;
+      bytes = bytes / chunk[k] * half;
+      chunk[k] = half;
+    }
+  }
+  Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+  H5Pset_chunk(dcpl.get(), static_cast<int>(chunk.size()), chunk.data());
+  H5Pset_fletcher32(dcpl.get());
+  return dcpl;
+}
+
+// whether the open dataset `d` carries the Fletcher32 checksum filter
+bool HasChecksum(hid_t d) {
+  Handle dcpl(H5Dget_create_plist(d), H5Pclose);
+  if (!dcpl.ok()) return false;
+  const int n = H5Pget_nfilters(dcpl.get());
+  for (int k = 0; k < n; ++k) {
+    unsigned flags = 0, config = 0;
+    size_t nvalues = 0;
+    if (H5Pget_filter2(dcpl.get(), static_cast<unsigned>(k), &flags, &nvalues, nullptr, 0, nullptr, &config) ==
+        H5Z_FILTER_FLETCHER32)
+      return true;
+  }
+  return false;
+}
+
+// fixed-length UTF-8 string type for strings of up to `longest` bytes: its
+// values sit in the dataset's own (checksummed) data, unlike variable-length
+// strings, which HDF5 keeps in an unchecked heap
+Handle FixedStringType(size_t longest) {
+  Handle t(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(t.get(), longest + 1);
+  H5Tset_strpad(t.get(), H5T_STR_NULLTERM);
+  H5Tset_cset(t.get(), H5T_CSET_UTF8);
+  return t;
+}
+
+// the strings packed as fixed-length values of `size` bytes each
+std::vector<char> PackStrings(const std::vector<std::string>& v, size_t size) {
+  std::vector<char> buf(std::max<size_t>(1, v.size() * size), '\0');
+  for (size_t k = 0; k < v.size(); ++k) std::copy(v[k].begin(), v[k].end(), buf.begin() + k * size);
+  return buf;
+}
+
+size_t LongestString(const std::vector<std::string>& v) {
+  size_t n = 0;
+  for (const std::string& s : v) n = std::max(n, s.size());
+  return n;
+}
 
 }  // namespace
 
@@ -94,6 +159,9 @@ void WriteFileAtomically(const std::string& path, const std::string& what,
   {
     Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
     H5Pset_file_locking(fapl.get(), true, true);
+    // file format of HDF5 1.8 and later: every metadata block carries a
+    // checksum (HDF5 1.10 reads and writes it)
+    H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_V18, H5F_LIBVER_LATEST);
     Handle file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose);
     if (!file.ok()) throw InputError(WithReason("cannot create the file"), {tmp, 0, what});
     try {
@@ -146,7 +214,9 @@ void Writer::Group(const std::string& name) {
 void Writer::Data(const std::string& name, hid_t file_type, hid_t mem_type, const Dims& dims, const void* data) {
   Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
   if (!space.ok()) Fail("dataset " + name, "cannot create the dataspace " + DimsText(dims));
-  Handle d(H5Dcreate2(file_, name.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+  const Handle dcpl = ChecksummedLayout(dims, file_type);
+  Handle d(H5Dcreate2(file_, name.c_str(), file_type, space.get(), H5P_DEFAULT,
+                      dcpl.ok() ? dcpl.get() : H5P_DEFAULT, H5P_DEFAULT),
            H5Dclose);
   if (!d.ok()) Fail("dataset " + name, "cannot create the dataset");
   static const double dummy = 0.0;
@@ -173,10 +243,9 @@ void Writer::Matrix(const std::string& name, const Eigen::MatrixXd& m) {
 }
 
 void Writer::Strings(const std::string& name, const std::vector<std::string>& v, const Dims& dims) {
-  std::vector<const char*> p;
-  for (const std::string& s : v) p.push_back(s.c_str());
-  const Handle t = StringType();
-  Data(name, t.get(), t.get(), dims, p.data());
+  const Handle t = FixedStringType(LongestString(v));
+  const std::vector<char> buf = PackStrings(v, H5Tget_size(t.get()));
+  Data(name, t.get(), t.get(), dims, buf.data());
 }
 
 void Writer::Attribute(const std::string& object, const std::string& name, hid_t file_type, hid_t mem_type,
@@ -196,16 +265,15 @@ void Writer::Attribute(const std::string& object, const std::string& name, hid_t
 
 void Writer::AttributeStrings(const std::string& object, const std::string& name, const std::vector<std::string>& v,
                               const Dims& dims) {
-  std::vector<const char*> p;
-  for (const std::string& s : v) p.push_back(s.c_str());
-  const Handle t = StringType();
-  Attribute(object, name, t.get(), t.get(), dims, p.data());
+  const Handle t = FixedStringType(LongestString(v));
+  const std::vector<char> buf = PackStrings(v, H5Tget_size(t.get()));
+  Attribute(object, name, t.get(), t.get(), dims, buf.data());
 }
 
 void Writer::AttributeString(const std::string& object, const std::string& name, const std::string& value) {
-  const char* p = value.c_str();
-  const Handle t = StringType();
-  Attribute(object, name, t.get(), t.get(), {}, &p);
+  const Handle t = FixedStringType(value.size());
+  const std::vector<char> buf = PackStrings({value}, H5Tget_size(t.get()));
+  Attribute(object, name, t.get(), t.get(), {}, buf.data());
 }
 
 void Writer::AttributeInt(const std::string& object, const std::string& name, int value) {
@@ -276,10 +344,34 @@ size_t Reader::Length(const std::string& name) const {
   return static_cast<size_t>(got[0]);
 }
 
+void Reader::NoteChecksum(const std::string& name, hid_t d) const {
+  if (HasChecksum(d)) return;
+  Handle s(H5Dget_space(d), H5Sclose);
+  if (H5Sget_simple_extent_npoints(s.get()) > 0) unchecked_.push_back(name);
+}
+
+void Reader::FailedRead(const std::string& name, hid_t d, hid_t mem_type, void* out) const {
+  const std::string reason = WithReason("cannot read the dataset (damaged or truncated file?)");
+  if (HasChecksum(d)) {
+    // read again without verification: if that works, the checksum is what failed
+    Handle dxpl(H5Pcreate(H5P_DATASET_XFER), H5Pclose);
+    H5Pset_edc_check(dxpl.get(), H5Z_DISABLE_EDC);
+    const bool unverified = H5Dread(d, mem_type, H5S_ALL, H5S_ALL, dxpl.get(), out) >= 0;
+    H5Eclear2(H5E_DEFAULT);
+    if (unverified) {
+      Fail("dataset " + name,
+           "checksum mismatch (Fletcher32): the data of this dataset was changed after it was written (a damaged "
+           "disk, copy or transfer); copy the file again or write it again");
+    }
+  }
+  Fail("dataset " + name, reason);
+}
+
 void Reader::Read(const std::string& name, const Handle& d, hid_t mem_type, void* out) const {
   static double dummy;
+  NoteChecksum(name, d.get());
   if (H5Dread(d.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out != nullptr ? out : &dummy) < 0) {
-    Fail("dataset " + name, WithReason("cannot read the dataset (damaged or truncated file?)"));
+    FailedRead(name, d.get(), mem_type, out != nullptr ? out : &dummy);
   }
 }
 
@@ -355,8 +447,10 @@ std::vector<std::string> Reader::StringsOf(const std::string& what, hid_t type, 
     std::vector<char> buf(n * size + 1, '\0');
     Handle mem(H5Tcopy(H5T_C_S1), H5Tclose);
     H5Tset_size(mem.get(), size);
+    H5Tset_cset(mem.get(), H5Tget_cset(type));
     const herr_t r = attribute ? H5Aread(obj, mem.get(), buf.data())
                                : H5Dread(obj, mem.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data());
+    if (r < 0 && !attribute) FailedRead(what.substr(8), obj, mem.get(), buf.data());
     if (r < 0) Fail(what, WithReason("cannot read the strings"));
     for (size_t k = 0; k < n; ++k) {
       const char* s = buf.data() + k * size;
@@ -376,6 +470,7 @@ std::vector<std::string> Reader::Strings(const std::string& name, size_t n) cons
   if (got != Dims{Size(n)}) {
     Fail("dataset " + name, "has shape " + DimsText(got) + ", expected " + DimsText({Size(n)}));
   }
+  NoteChecksum(name, d.get());
   return StringsOf("dataset " + name, t.get(), s.get(), false, d.get());
 }
 

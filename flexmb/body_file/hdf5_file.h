@@ -7,7 +7,11 @@
 /// IEEE); reads check the type class and the shape. Every fault is thrown
 /// as InputError whose context names the file and the dataset, attribute
 /// or group ("dataset /modes/shapes"), with HDF5's innermost reason where
-/// there is one. Not a public header: no stable API.
+/// there is one. Files are written in HDF5's 1.8-and-later format (every
+/// metadata block checksummed) and every dataset with values is chunked with
+/// the Fletcher32 checksum filter; strings are stored fixed-length so that
+/// the checksums cover them too. Reads verify the checksums and report a
+/// mismatch naming the dataset. Not a public header: no stable API.
 
 #include <hdf5.h>
 
@@ -167,8 +171,12 @@ class Reader {
   Handle Checked(const std::string& name, H5T_class_t cls, const Dims& dims) const;
   /// Length of a one-dimensional dataset.
   size_t Length(const std::string& name) const;
-  /// Reads all of the open dataset `d` as `mem_type` into `out`.
+  /// Reads all of the open dataset `d` as `mem_type` into `out`, verifying
+  /// its checksum (InputError "checksum mismatch" naming the dataset).
   void Read(const std::string& name, const Handle& d, hid_t mem_type, void* out) const;
+  /// Names of the datasets with values read so far that carry no checksum
+  /// (files of older writers).
+  const std::vector<std::string>& unchecked() const { return unchecked_; }
 
   /// Doubles of the given shape into `out` (Count(dims) values), all finite.
   void DoublesInto(const std::string& name, const Dims& dims, double* out) const;
@@ -203,8 +211,14 @@ class Reader {
  private:
   std::vector<std::string> StringsOf(const std::string& what, hid_t type, hid_t space, bool attribute,
                                      hid_t obj) const;
+  // records the dataset in unchecked_ if it has values and no checksum
+  void NoteChecksum(const std::string& name, hid_t d) const;
+  // throws for a failed read of dataset `name`: a checksum mismatch if the
+  // data reads without verification, else HDF5's reason
+  [[noreturn]] void FailedRead(const std::string& name, hid_t d, hid_t mem_type, void* out) const;
   hid_t file_;
   std::string path_;
+  mutable std::vector<std::string> unchecked_;
 };
 
 }  // namespace flexmb::io::hdf5

@@ -1,5 +1,6 @@
 #include "flexmb/solver/generalized_alpha.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "flexmb/solver/assembler.h"
@@ -42,6 +43,9 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
   const double bp = (1.0 - am_) / (h * h * beta_ * (1.0 - af_));  // d vdot / d dx
   const double gp = gamma_ / (h * beta_);                        // d v / d dx
   const double ap = (1.0 - af_) / (1.0 - am_);                    // d a / d vdot
+  last_bp_ = bp;
+  last_h_ = h;
+  last_failed_ = true;
 
   // predictor (vdot_{n+1} = 0)
   a1_ = (af_ * vdot_ - am_ * a_) / (1.0 - am_);
@@ -150,6 +154,7 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
       EvaluateConstraints(m, trial_, ws);
       const double viol = na > 0 ? ws.phi.lpNorm<Eigen::Infinity>() : 0.0;
       stats.max_constraint_violation = std::max(stats.max_constraint_violation, viol);
+      last_failed_ = false;
       return StepStatus::kConverged;
     }
   }
@@ -162,6 +167,36 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
   }
   hint_ = worst >= 0 ? "largest constraint residual in " + DescribeEquation(m, worst) : "Newton did not converge";
   return StepStatus::kNewtonFailed;
+}
+
+std::vector<ResidualShare> GeneralizedAlpha::FailureShares(int count) const {
+  if (!last_failed_) return {};
+  // the multipliers of the last iterate, all equations
+  return LargestResidualShares(model_, ws_, res_, trial_.lambda, last_bp_, count);
+}
+
+std::vector<ResidualShare> GeneralizedAlpha::ErrorShares(int count) const {
+  if (last_failed_) return {};
+  // the terms of error_estimate(), summed per body
+  const double c = (beta_ - 1.0 / 6.0) * last_h_ * last_h_;
+  std::vector<ResidualShare> shares;
+  double total = 0.0;
+  for (const auto& b : model_.bodies) {
+    double sum = 0.0;
+    for (int i = b->v_offset; i < b->v_offset + b->nv(); ++i) {
+      const double e = c * (a1_(i) - a_(i)) / (model_.solver.atol + model_.solver.rtol * std::abs(dq_(i)));
+      sum += e * e;
+    }
+    total += sum;
+    shares.push_back({"body", b->name(), sum});
+  }
+  for (ResidualShare& s : shares) s.share = total > 0.0 ? s.share / total : 0.0;
+  std::stable_sort(shares.begin(), shares.end(),
+                   [](const ResidualShare& a, const ResidualShare& b) { return a.share > b.share; });
+  std::vector<ResidualShare> top;
+  for (const ResidualShare& s : shares)
+    if (static_cast<int>(top.size()) < count && s.share >= 0.01) top.push_back(s);
+  return top;
 }
 
 void GeneralizedAlpha::Accept(State& s) {

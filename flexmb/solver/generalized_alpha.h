@@ -20,6 +20,7 @@
 
 #include "flexmb/model/model.h"
 #include "flexmb/model/workspace.h"
+#include "flexmb/solver/residual_share.h"
 #include "flexmb/solver/sparse_lu.h"
 
 namespace flexmb {
@@ -69,6 +70,21 @@ class GeneralizedAlpha {
   /// Equation or body with the largest residual in the last failed attempt.
   const std::string& failure_hint() const { return hint_; }
 
+  /// Whether the last attempt failed (Newton); false when it converged.
+  bool last_failed() const { return last_failed_; }
+
+  /// The bodies, joints and force elements with the largest shares of the
+  /// scaled Newton residual of the last failed attempt, largest first
+  /// (LargestResidualShares; at most `count`). Empty if the last attempt
+  /// converged. Allocates: for failed runs only.
+  std::vector<ResidualShare> FailureShares(int count) const;
+
+  /// The bodies with the largest shares of the local error estimate of the
+  /// last attempt, which converged (the sum over each body's coordinates of
+  /// the squared scaled errors, as a fraction of the whole), largest first,
+  /// at most `count`, none below 1 %. Empty if the last attempt failed.
+  std::vector<ResidualShare> ErrorShares(int count) const;
+
   IntegratorStats stats;
 
  private:
@@ -81,6 +97,9 @@ class GeneralizedAlpha {
   double am_, af_, gamma_, beta_;
   double error_ = 0.0;
   std::string hint_;
+  bool last_failed_ = false;
+  double last_bp_ = 1.0;  // d vdot / d dx of the last attempt
+  double last_h_ = 0.0;   // step size of the last attempt
   // factorization in lu_ usable for steps of size matrix_h_ (modified Newton)
   bool have_matrix_ = false;
   double matrix_h_ = 0.0;

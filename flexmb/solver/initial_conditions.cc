@@ -5,6 +5,7 @@
 #include <Eigen/SparseQR>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "flexmb/common/error.h"
 #include "flexmb/common/log.h"
@@ -234,21 +235,32 @@ ConstraintReport MakeConsistent(const Model& model, State& s, Workspace& ws) {
     InitWorkspace(model, ws, rep.redundant);
     AssemblePositions(model, s, ws, lu);
   }
-  // removed equations must hold too, or the model is over-constrained
-  for (int e : rep.redundant) {
-    for (size_t k = 0; k < model.joints.size(); ++k) {
-      const Joint& j = *model.joints[k];
+  // removed equations must hold too, or the model is over-constrained;
+  // one message per joint, naming all of its removed equations
+  for (size_t k = 0; k < model.joints.size(); ++k) {
+    const Joint& j = *model.joints[k];
+    std::vector<std::string> names;
+    for (int e : rep.redundant) {
       if (e < j.lambda_offset || e >= j.lambda_offset + j.NumEquations()) continue;
       const double v = ws.joints[k].phi(e - j.lambda_offset);
-      if (std::abs(v) > 1e-6)
+      if (std::abs(v) > 1e-6) {
+        char value[32];
+        std::snprintf(value, sizeof(value), "%.3g", v);
         throw InputError("over-constrained: equation '" + j.EquationName(e - j.lambda_offset) +
-                             "' depends on the other constraints but is violated by " +
-                             std::to_string(v) + " after assembly; remove or change this joint",
+                             "' depends on the other constraints but is violated by " + value +
+                             " after assembly; remove or change this joint",
                          {"", 0, "joint '" + j.name() + "'"});
+      }
+      names.push_back(j.EquationName(e - j.lambda_offset));
     }
-    const std::string msg = DescribeEquation(model, e) +
-                            ": redundant constraint equation removed (the motion is determined "
-                            "without it; its reaction share is carried by the other joints)";
+    if (names.empty()) continue;
+    std::string list;
+    for (size_t n = 0; n < names.size(); ++n) list += (n ? ", " : "") + names[n];
+    const bool one = names.size() == 1;
+    const std::string msg = "joint '" + j.name() + "': " + std::to_string(names.size()) + " redundant constraint " +
+                            (one ? "equation" : "equations") + " removed (" + list +
+                            ") (the motion is determined without " + (one ? "it" : "them") +
+                            "; the reaction share is carried by the other joints)";
     rep.messages.push_back(msg);
     LogWarning(msg);
   }

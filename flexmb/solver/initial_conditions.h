@@ -37,11 +37,12 @@ void InitialAccelerations(const Model& model, State& s, Workspace& ws, SparseLu&
 struct ConstraintReport {
   int equations = 0;                 ///< all constraint equations
   std::vector<int> redundant;        ///< removed equations (global indices)
-  std::vector<std::string> messages; ///< one per removed equation
+  std::vector<std::string> messages; ///< one per joint with removed equations, naming them
   int dof = 0;                       ///< degrees of freedom nv - rank(B)
 };
 
-/// The whole sequence: redundancy detection (named warnings), initialization
+/// The whole sequence: redundancy detection (one warning per joint naming its
+/// removed equations), initialization
 /// of ws, position assembly, a consistency check of the removed equations
 /// (InputError if the model is over-constrained inconsistently), velocity
 /// projection and initial accelerations.

@@ -1,11 +1,28 @@
 #include "flexmb/solver/simulator.h"
 
 #include <cmath>
+#include <cstdarg>
+#include <cstdio>
 
 #include "flexmb/common/error.h"
+#include "flexmb/common/log.h"
 #include "flexmb/solver/assembler.h"
 
 namespace flexmb {
+
+namespace {
+
+// printf-style text ("%g" for numbers that mean something at any scale)
+[[gnu::format(printf, 1, 2)]] std::string SimulatorFormat(const char* format, ...) {
+  char buf[512];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(buf, sizeof(buf), format, args);
+  va_end(args);
+  return buf;
+}
+
+}  // namespace
 
 Simulator::Simulator(const Model& model)
     : model_(model),
@@ -34,9 +51,19 @@ void Simulator::Run(double t_end, double output_interval, const Observer& observ
   const double h_max = ss.dt_max > 0 ? ss.dt_max : 100.0 * ss.dt;
   const double t0 = state_.t;
   const double eps = 1e-12 * std::max(1.0, std::abs(t_end));
+  const long steps0 = integrator_.stats.steps, rejected0 = integrator_.stats.rejected;
   long out_index = 0;
   auto next_output = [&]() {
     return output_interval > 0 ? t0 + (out_index + 1) * output_interval : t_end;
+  };
+  // a runaway stops with its own message instead of grinding on
+  auto check_runaway = [&]() {
+    const long rejected = integrator_.stats.rejected - rejected0, accepted = integrator_.stats.steps - steps0;
+    if (IsRunaway(rejected, accepted)) {
+      Fail(SimulatorFormat("runaway: %ld step attempts rejected for %ld accepted (more than %g times as many) at "
+                           "t = %g s; ",
+                           rejected, accepted, kRunawayRatio, state_.t));
+    }
   };
   if (observer) {
     RefreshWorkspace();
@@ -52,47 +79,106 @@ void Simulator::Run(double t_end, double output_interval, const Observer& observ
     }
     const StepStatus st = integrator_.TryStep(state_, h);
     if (st == StepStatus::kConverged && (!ss.adaptive || integrator_.error_estimate() <= 1.0)) {
+      if (!ss.adaptive) NoteAccuracy(h);
       integrator_.Accept(state_);
       if (ss.adaptive) {
         const double err = std::max(integrator_.error_estimate(), 1e-10);
         const double grow = std::clamp(0.9 * std::pow(err, -1.0 / 3.0), 0.2, 2.0);
         if (!hits_output || h >= h_) h_ = std::min(h_max, h * grow);
       }
-      if (hits_output && state_.t >= t_out - eps) ++out_index;
-      if (observer && (output_interval <= 0 || hits_output || state_.t >= t_end - eps)) {
-        RefreshWorkspace();
-        observer(state_, ws_);
-      }
-      continue;
-    }
-    // rejected: cut the step
-    ++integrator_.stats.rejected;
-    if (st == StepStatus::kConverged) {
-      const double err = integrator_.error_estimate();
-      h_ = h * std::clamp(0.9 * std::pow(err, -1.0 / 3.0), 0.1, 0.9);
     } else {
-      h_ = 0.25 * h;
-      if (!ss.adaptive) {
-        // fixed-step runs may still cut a step to get through a hard spot
-        double hh = 0.5 * h;
-        bool ok = false;
-        while (hh >= ss.dt_min) {
-          if (integrator_.TryStep(state_, hh) == StepStatus::kConverged) {
-            integrator_.Accept(state_);
-            ok = true;
-            break;
-          }
-          hh *= 0.5;
+      // rejected: cut the step
+      ++integrator_.stats.rejected;
+      check_runaway();
+      if (ss.adaptive) {
+        if (st == StepStatus::kConverged) {
+          const double err = integrator_.error_estimate();
+          h_ = h * std::clamp(0.9 * std::pow(err, -1.0 / 3.0), 0.1, 0.9);
+        } else {
+          h_ = 0.25 * h;
         }
-        if (ok) continue;
-        h_ = hh;
+        if (h_ < ss.dt_min)
+          Fail(SimulatorFormat("step size fell below dt_min = %g s at t = %g s; ", ss.dt_min, state_.t));
+        continue;
       }
+      // fixed-step runs cut a step into pieces to get through a hard spot;
+      // the pieces end on the step's own time, so that outputs are kept
+      CutStep(state_.t + h, h, eps, check_runaway);
     }
-    if (h_ < ss.dt_min)
-      throw NumericalError("step size fell below dt_min = " + std::to_string(ss.dt_min) +
-                           " s at t = " + std::to_string(state_.t) +
-                           " s; " + integrator_.failure_hint());
+    if (hits_output && state_.t >= t_out - eps) ++out_index;
+    if (observer && (output_interval <= 0 || hits_output || state_.t >= t_end - eps)) {
+      RefreshWorkspace();
+      observer(state_, ws_);
+    }
   }
+  if (!ss.adaptive && accuracy_.max_error > kFarAboveTolerance && accuracy_.warning.empty()) {
+    accuracy_.warning = SimulatorFormat(
+        "fixed step dt = %g s is too large for the tolerance: the local error estimate reached %.3g times it "
+        "(rtol = %g, atol = %g) at t = %g s; a step of about %.2g s would be needed (solver.dt), or let the "
+        "error control choose it (solver.adaptive: true)",
+        ss.dt, accuracy_.max_error, ss.rtol, ss.atol, accuracy_.t, accuracy_.dt_needed);
+    LogWarning(accuracy_.warning);
+  }
+}
+
+void Simulator::NoteAccuracy(double h) {
+  const double err = integrator_.error_estimate();
+  if (!(err <= 1.0)) {
+    const double needed = std::isfinite(err) ? 0.5 * h * std::pow(err, -1.0 / 3.0) : 0.0;
+    if (accuracy_.dt_needed == 0.0 || needed < accuracy_.dt_needed) accuracy_.dt_needed = needed;
+  }
+  if (err > accuracy_.max_error || !std::isfinite(err)) {
+    accuracy_.max_error = err;
+    accuracy_.t = state_.t + h;
+  }
+}
+
+void Simulator::CutStep(double t_target, double h, double eps, const std::function<void()>& check_runaway) {
+  const double dt_min = model_.solver.dt_min;
+  double piece = 0.5 * h;
+  while (state_.t < t_target - eps) {
+    if (piece < dt_min) {
+      h_ = piece;
+      Fail(SimulatorFormat("step size fell below dt_min = %g s at t = %g s (fixed step %g s cut into pieces); ",
+                           dt_min, state_.t, h));
+    }
+    double step = piece;
+    if (state_.t + step >= t_target - eps) step = t_target - state_.t;
+    if (integrator_.TryStep(state_, step) == StepStatus::kConverged) {
+      NoteAccuracy(step);
+      integrator_.Accept(state_);
+      piece = std::min(2.0 * piece, h);
+    } else {
+      ++integrator_.stats.rejected;
+      check_runaway();
+      piece *= 0.5;
+    }
+  }
+}
+
+bool IsRunaway(long rejected, long accepted) {
+  return rejected >= kRunawayMinRejected &&
+         static_cast<double>(rejected) > kRunawayRatio * static_cast<double>(accepted);
+}
+
+void Simulator::Fail(const std::string& what) {
+  failure_shares_ = integrator_.FailureShares(3);
+  if (!integrator_.last_failed()) {
+    // the error control cut the step: name the bodies with the largest error
+    failure_shares_ = integrator_.ErrorShares(3);
+    std::string text = what + SimulatorFormat("the local error estimate stays above the tolerance (rtol = %g, "
+                                              "atol = %g)",
+                                              model_.solver.rtol, model_.solver.atol);
+    if (!failure_shares_.empty()) {
+      std::string named = DescribeResidualShares(failure_shares_);
+      named.replace(0, named.find(':'), "largest share of the local error estimate");
+      text += "; " + named;
+    }
+    throw NumericalError(text, {"", 0, failure_shares_.empty() ? "" : failure_shares_.front().Entity()});
+  }
+  std::string text = what + integrator_.failure_hint();
+  if (!failure_shares_.empty()) text += "; " + DescribeResidualShares(failure_shares_);
+  throw NumericalError(text, {"", 0, failure_shares_.empty() ? "" : failure_shares_.front().Entity()});
 }
 
 }  // namespace flexmb

@@ -117,6 +117,8 @@ void Simulate(const RunOptions& opt, RunSummary& s, std::unique_ptr<Model>& mode
   OutputGrid rows(t0, out.interval, eps), frames(t0, out.animation_interval, eps);
   ProgressBar progress(opt.err, opt.progress, t0, t_end);
   const Simulator& simr = *sim;
+  const size_t init_warnings = s.warnings.size();
+  WarningCollector collect_run(s.warnings);
   sim->Run(t_end, interval, [&](const State& st, const Workspace& ws) {
     if (opt.interrupt && *opt.interrupt) throw Interrupted{};
     const bool last = st.t >= t_end - eps;
@@ -128,6 +130,9 @@ void Simulate(const RunOptions& opt, RunSummary& s, std::unique_ptr<Model>& mode
     progress.Update(st.t, simr.stats().steps);
   });
   progress.Finish(sim->state().t, sim->stats().steps);
+  if (opt.err)
+    for (size_t k = init_warnings; k < s.warnings.size(); ++k)
+      std::fprintf(opt.err, "warning: %s\n", s.warnings[k].c_str());
 }
 
 }  // namespace
@@ -136,6 +141,7 @@ const char* StatusName(RunStatus status) {
   switch (status) {
     case RunStatus::kOk: return "ok";
     case RunStatus::kInterrupted: return "interrupted";
+    case RunStatus::kTerminated: return "terminated";
     default: return "failed";
   }
 }
@@ -145,6 +151,7 @@ int ExitCode(RunStatus status) {
     case RunStatus::kOk: return 0;
     case RunStatus::kInputError: return 2;
     case RunStatus::kInterrupted: return 130;
+    case RunStatus::kTerminated: return 143;
     default: return 1;
   }
 }
@@ -174,8 +181,9 @@ RunSummary RunModel(const RunOptions& opt) {
     s.status = RunStatus::kNumericalError;
     s.message = Describe(e, opt.model_path);
   } catch (const Interrupted&) {
-    s.status = RunStatus::kInterrupted;
-    s.message = "interrupted by the user";
+    const bool term = opt.interrupt && *opt.interrupt == SIGTERM;
+    s.status = term ? RunStatus::kTerminated : RunStatus::kInterrupted;
+    s.message = term ? "terminated by SIGTERM (e.g. a job scheduler or kill)" : "interrupted by the user";
   } catch (const std::exception& e) {
     s.status = RunStatus::kOtherError;
     s.message = e.what();
@@ -194,6 +202,12 @@ RunSummary RunModel(const RunOptions& opt) {
     s.max_constraint_violation = st.max_constraint_violation;
     s.integration_time_s = Seconds(t_start, end);
     s.steps_per_second = s.integration_time_s > 0 ? s.steps / s.integration_time_s : 0.0;
+    if (!sim->failure_shares().empty()) {
+      s.culprit = sim->failure_shares().front().Entity();
+      s.culprit_share = sim->failure_shares().front().share;
+    }
+    s.max_error_estimate = sim->accuracy().max_error;
+    s.dt_needed = sim->accuracy().dt_needed;
   }
   WriteSummaryFile((std::filesystem::path(opt.out_dir) / "summary.json").string(), s);
   return s;
@@ -223,6 +237,10 @@ std::string SummaryJson(const RunSummary& s) {
   add("steps_per_second", JsonNumber(s.steps_per_second));
   add("rows", std::to_string(s.rows));
   add("frames", std::to_string(s.frames));
+  add("culprit", JsonString(s.culprit));
+  add("culprit_share", JsonNumber(s.culprit_share));
+  add("max_error_estimate", JsonNumber(s.max_error_estimate));
+  add("dt_needed", JsonNumber(s.dt_needed));
   std::string w = "[";
   for (size_t i = 0; i < s.warnings.size(); ++i) w += (i ? ", " : "") + JsonString(s.warnings[i]);
   add("warnings", w + "]", true);

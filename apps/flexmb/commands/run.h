@@ -23,13 +23,15 @@ struct RunOptions {
   bool progress = false;         ///< draw a progress bar on `err`
   std::FILE* info = nullptr;     ///< DOF count and file names (nullptr: silent)
   std::FILE* err = nullptr;      ///< warnings and the progress bar (nullptr: silent)
-  /// If set, the run stops at the next output time once *interrupt != 0
-  /// (e.g. set by a SIGINT handler); the summary then says "interrupted".
+  /// If set, the run stops at the next output time once *interrupt != 0,
+  /// which a signal handler sets to the signal's number: SIGTERM ends the
+  /// run as "terminated" (exit 143), any other value (SIGINT, Ctrl-C) as
+  /// "interrupted" (exit 130).
   const volatile std::sig_atomic_t* interrupt = nullptr;
 };
 
 /// How a run ended.
-enum class RunStatus { kOk, kInputError, kNumericalError, kInterrupted, kOtherError };
+enum class RunStatus { kOk, kInputError, kNumericalError, kInterrupted, kOtherError, kTerminated };
 
 /// Outcome and statistics of a run, also written as summary.json.
 struct RunSummary {
@@ -52,13 +54,23 @@ struct RunSummary {
   double steps_per_second = 0.0;  ///< steps / integration_time_s
   long rows = 0;                  ///< rows written to results.csv
   int frames = 0;                 ///< animation frames written
-  std::vector<std::string> warnings;  ///< warnings issued during initialization
+  std::vector<std::string> warnings;  ///< warnings issued during initialization and the run
+  /// The element with the largest share of the scaled Newton residual when
+  /// the run failed ("force element 'k'"; "" if none was named).
+  std::string culprit;
+  double culprit_share = 0.0;     ///< its share, in [0, 1]
+  /// Largest local error estimate of a fixed-step run (1 = the tolerance;
+  /// 0 for adaptive runs).
+  double max_error_estimate = 0.0;
+  /// Step size that would meet the tolerance [s]; 0 if it was met.
+  double dt_needed = 0.0;
 };
 
-/// "ok", "failed" or "interrupted".
+/// "ok", "failed", "interrupted" or "terminated".
 const char* StatusName(RunStatus status);
 
-/// Process exit code of a run: 0 ok, 2 input error, 130 interrupted, 1 otherwise.
+/// Process exit code of a run: 0 ok, 2 input error, 130 interrupted
+/// (SIGINT), 143 terminated (SIGTERM), 1 otherwise.
 int ExitCode(RunStatus status);
 
 /// Runs the model file as described by `options`. Rows of results.csv are
