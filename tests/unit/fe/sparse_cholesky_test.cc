@@ -18,7 +18,7 @@ using testing::AddConstraint;
 using testing::Lattice;
 
 // a clamped steel frame: K is positive definite, about 200 DOF
-AssembledModel ClampedFrame() {
+AssembledModel CholeskyClampedFrame() {
   Mesh mesh = Lattice(4, 3, 3, 0.5);
   AddConstraint(mesh, 0, 0b111111);
   AddConstraint(mesh, 1, 0b111111);
@@ -36,7 +36,7 @@ std::string MessageOf(const std::function<void()>& f) {
 
 // against Eigen's dense Cholesky of the same matrix
 TEST(SparseCholesky, SolvesManyRightHandSidesLikeDenseCholesky) {
-  const AssembledModel model = ClampedFrame();
+  const AssembledModel model = CholeskyClampedFrame();
   const Eigen::MatrixXd dense(model.K);
   const Eigen::Index n = dense.rows();
   SparseCholesky factor;
@@ -54,7 +54,7 @@ TEST(SparseCholesky, SolvesManyRightHandSidesLikeDenseCholesky) {
 // A = P^T L L^T P: the triangular and permutation pieces compose to A^{-1},
 // single-vector and block versions agree
 TEST(SparseCholesky, TriangularSolvesComposeToTheInverse) {
-  const AssembledModel model = ClampedFrame();
+  const AssembledModel model = CholeskyClampedFrame();
   const Eigen::Index n = model.K.rows();
   SparseCholesky factor;
   factor.Factorize(model.K, "K");
@@ -84,7 +84,7 @@ TEST(SparseCholesky, TriangularSolvesComposeToTheInverse) {
 // the symbolic analysis is reused for a matrix of the same pattern and
 // redone for another one; both give correct solves
 TEST(SparseCholesky, RefactorizesNewValuesAndNewPatterns) {
-  const AssembledModel model = ClampedFrame();
+  const AssembledModel model = CholeskyClampedFrame();
   SparseCholesky factor;
   factor.Factorize(model.K, "K");
   const SparseMat shifted = model.K + 1e3 * model.M;
@@ -104,7 +104,7 @@ TEST(SparseCholesky, RefactorizesNewValuesAndNewPatterns) {
 // a negative stiffness fails exactly at its pivot: the message names the
 // matrix and the DOF through the describer
 TEST(SparseCholesky, NotPositiveDefiniteNamesTheDof) {
-  const AssembledModel model = ClampedFrame();
+  const AssembledModel model = CholeskyClampedFrame();
   SparseMat k = model.K;
   const int bad = 17;
   k.coeffRef(bad, bad) = -1.0;
@@ -120,7 +120,7 @@ TEST(SparseCholesky, NotPositiveDefiniteNamesTheDof) {
 // a DOF without any stiffness (zero row and column): the factorization
 // fails exactly at its pivot, and the message names it
 TEST(SparseCholesky, ZeroColumnIsNamed) {
-  const AssembledModel model = ClampedFrame();
+  const AssembledModel model = CholeskyClampedFrame();
   SparseMat k = model.K;
   const int bad = 40;
   for (SparseMat::InnerIterator it(k, bad); it; ++it) it.valueRef() = 0.0;
@@ -147,7 +147,7 @@ TEST(SparseCholesky, RoundOffSingularMatrixIsCaught) {
 }
 
 TEST(SparseCholesky, NonFiniteAndMalformedInput) {
-  AssembledModel model = ClampedFrame();
+  AssembledModel model = CholeskyClampedFrame();
   SparseCholesky factor;
   model.K.coeffRef(3, 3) = std::numeric_limits<double>::quiet_NaN();
   const std::string msg = MessageOf([&] { factor.Factorize(model.K, "K", [](int j) { return "<" + std::to_string(j) + ">"; }); });
