@@ -92,7 +92,8 @@ void Builder::AddSolid(const Entry& e) {
     counts += std::to_string(t->nodes);
   }
   if (row == nullptr)
-    e.Fail(e.name() + " with " + std::to_string(given) + " grid points: only " + counts + " are supported");
+    e.Fail(e.name() + " with " + std::to_string(given) + " grid points: only " + counts + " are supported (" +
+           std::to_string(given) + "-node " + e.name() + " is unsupported)");
   if (e.Size() > 2 + max_nodes) e.Fail(3 + max_nodes, "unexpected field");
   fe::Element el = NewElement(e, row->type);
   el.property = PropertyIndex(e, 2, e.Id(2, "PID"), {"PSOLID"});
