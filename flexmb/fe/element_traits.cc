@@ -9,6 +9,8 @@
 #include "flexmb/fe/elements/solid_hex8.h"
 #include "flexmb/fe/elements/solid_tet10.h"
 #include "flexmb/fe/elements/solid_tet4.h"
+#include "flexmb/fe/elements/solid_wedge15.h"
+#include "flexmb/fe/elements/solid_wedge6.h"
 
 namespace flexmb::fe {
 namespace {
@@ -36,6 +38,8 @@ void TraitsBeam2Geometric(const ElementInput& in, const Eigen::VectorXd& u, MatX
 }
 
 void TraitsHex8Matrices(const ElementInput& in, MatX& K, MatX& M) { SolidHex8Matrices(in, K, M); }
+void TraitsWedge6Matrices(const ElementInput& in, MatX& K, MatX& M) { SolidWedge6Matrices(in, K, M); }
+void TraitsWedge15Matrices(const ElementInput& in, MatX& K, MatX& M) { SolidWedge15Matrices(in, K, M); }
 
 // Nastran cards
 constexpr const char* kTraitsCquad4[] = {"CQUAD4"};
@@ -43,6 +47,7 @@ constexpr const char* kTraitsCtria3[] = {"CTRIA3"};
 constexpr const char* kTraitsCbar[] = {"CBAR", "CBEAM"};
 constexpr const char* kTraitsCtetra[] = {"CTETRA"};
 constexpr const char* kTraitsChexa[] = {"CHEXA"};
+constexpr const char* kTraitsCpenta[] = {"CPENTA"};
 
 // Abaqus names
 constexpr AbaqusName kTraitsS4[] = {{"S4"}, {"S4R"}, {"S4R5"}};
@@ -59,6 +64,8 @@ constexpr const char* kTraitsOtherHexNote =
 constexpr AbaqusName kTraitsC3D8[] = {{"C3D8I"},
                                       {"C3D8", AbaqusVariant::kOther, kTraitsOtherHexNote},
                                       {"C3D8R", AbaqusVariant::kOther, kTraitsOtherHexNote}};
+constexpr AbaqusName kTraitsC3D6[] = {{"C3D6"}};
+constexpr AbaqusName kTraitsC3D15[] = {{"C3D15"}};
 
 // Abaqus faces (element-based surfaces); a shell's both sides are all its nodes
 constexpr AbaqusFace kTraitsQuadFaces[] = {
@@ -74,8 +81,29 @@ constexpr AbaqusFace kTraitsTet10Faces[] = {{"S1", 6, {1, 2, 3, 5, 6, 7}},
 constexpr AbaqusFace kTraitsHexFaces[] = {{"S1", 4, {1, 2, 3, 4}}, {"S2", 4, {5, 8, 7, 6}},
                                           {"S3", 4, {1, 5, 6, 2}}, {"S4", 4, {2, 6, 7, 3}},
                                           {"S5", 4, {3, 7, 8, 4}}, {"S6", 4, {4, 8, 5, 1}}};
+constexpr AbaqusFace kTraitsWedge6Faces[] = {{"S1", 3, {1, 2, 3}},
+                                             {"S2", 3, {4, 6, 5}},
+                                             {"S3", 4, {1, 4, 5, 2}},
+                                             {"S4", 4, {2, 5, 6, 3}},
+                                             {"S5", 4, {3, 6, 4, 1}}};
+constexpr AbaqusFace kTraitsWedge15Faces[] = {{"S1", 6, {1, 2, 3, 7, 8, 9}},
+                                              {"S2", 6, {4, 6, 5, 12, 11, 10}},
+                                              {"S3", 8, {1, 4, 5, 2, 13, 10, 14, 7}},
+                                              {"S4", 8, {2, 5, 6, 3, 14, 11, 15, 8}},
+                                              {"S5", 8, {3, 6, 4, 1, 15, 12, 13, 9}}};
+
+// Nastran CPENTA: vertical edges (G10-G12) before the top ones (G13-G15)
+constexpr int kTraitsNastranWedge15[] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 12, 13, 14, 9, 10, 11};
+
 // gmsh: mid-edge node 9 lies on edge 3-4, 10 on edge 2-4 (flexmb: 2-4, then 3-4)
 constexpr int kTraitsGmshTet10[] = {0, 1, 2, 3, 4, 5, 6, 7, 9, 8};
+// gmsh prism 15: edges 0-1, 0-2, 0-3, 1-2, 1-4, 2-5, 3-4, 3-5, 4-5
+constexpr int kTraitsGmshWedge15[] = {0, 1, 2, 3, 4, 5, 6, 9, 7, 12, 14, 13, 8, 10, 11};
+
+// VTK wedges: the base 0 1 2 turns the other way (its normal points away from 3 4 5)
+constexpr int kTraitsVtkWedge6[] = {0, 2, 1, 3, 5, 4};
+constexpr int kTraitsVtkWedge15[] = {0, 2, 1, 3, 5, 4, 8, 7, 6, 11, 10, 9, 12, 14, 13};
+
 constexpr ElementTraits kTraitsRows[] = {
     {.type = ElementType::kQuad4,
      .name = "quad4",
@@ -170,6 +198,42 @@ constexpr ElementTraits kTraitsRows[] = {
      .matrices = TraitsHex8Matrices,
      .stress = TraitsSolidStress<SolidHex8Stress>,
      .geometric_stiffness = TraitsGeometric<SolidHex8GeometricStiffness>},
+    {.type = kWedge6,
+     .name = "wedge6",
+     .description = "6-node wedge",
+     .nodes = 6,
+     .corners = 6,
+     .family = ElementFamily::kSolid,
+     .nastran_cards = kTraitsCpenta,
+     .nastran_card_grids = 15,
+     .abaqus = kTraitsC3D6,
+     .abaqus_faces = kTraitsWedge6Faces,
+     .gmsh_code = 6,
+     .vtk_code = 13,
+     .vtk_order = kTraitsVtkWedge6,
+     .body_file_code = 6,
+     .matrices = TraitsWedge6Matrices,
+     .stress = TraitsSolidStress<SolidWedge6Stress>,
+     .geometric_stiffness = TraitsGeometric<SolidWedge6GeometricStiffness>},
+    {.type = kWedge15,
+     .name = "wedge15",
+     .description = "15-node wedge",
+     .nodes = 15,
+     .corners = 6,
+     .family = ElementFamily::kSolid,
+     .nastran_cards = kTraitsCpenta,
+     .nastran_card_grids = 15,
+     .nastran_order = kTraitsNastranWedge15,
+     .abaqus = kTraitsC3D15,
+     .abaqus_faces = kTraitsWedge15Faces,
+     .gmsh_code = 18,
+     .gmsh_order = kTraitsGmshWedge15,
+     .vtk_code = 26,
+     .vtk_order = kTraitsVtkWedge15,
+     .body_file_code = 7,
+     .matrices = TraitsWedge15Matrices,
+     .stress = TraitsSolidStress<SolidWedge15Stress>,
+     .geometric_stiffness = TraitsGeometric<SolidWedge15GeometricStiffness>},
 };
 
 constexpr bool TraitsRowsInIdOrder() {
