@@ -15,7 +15,7 @@
 #include "flexmb/fe/mesh.h"
 
 namespace flexmb::fe {
-namespace {
+namespace element_traits_test {
 
 void ExpectPermutation(std::span<const int> order, int n, const std::string& what) {
   if (order.empty()) return;
@@ -62,5 +62,5 @@ TEST(ElementTraits, RowsAreComplete) {
   EXPECT_EQ(NodeCount(static_cast<ElementType>(1000)), 0);
 }
 
-}  // namespace
+}  // namespace element_traits_test
 }  // namespace flexmb::fe

@@ -26,7 +26,7 @@
 #include "tests/unit/fe/fe_test_models.h"
 
 namespace flexmb::fe {
-namespace {
+namespace solid_wedge_test {
 
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 using testing::RandomRotation;
@@ -327,5 +327,5 @@ TEST(WedgeElements, InvertedElementsAreInputErrors) {
                                 {"part.inp:12", "15-node wedge 5", "inverted"});
 }
 
-}  // namespace
+}  // namespace solid_wedge_test
 }  // namespace flexmb::fe

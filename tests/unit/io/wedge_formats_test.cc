@@ -30,7 +30,7 @@
 #include "tests/unit/io/mesh_io_test_util.h"
 
 namespace flexmb::io {
-namespace {
+namespace wedge_formats_test {
 
 using fe::Vec3;
 
@@ -156,5 +156,5 @@ TEST(WedgeFormats, VtkWedgesAndBodyFileCodes) {
   EXPECT_TRUE(HasBodyFileTypeCode(fe::kWedge15));
 }
 
-}  // namespace
+}  // namespace wedge_formats_test
 }  // namespace flexmb::io
