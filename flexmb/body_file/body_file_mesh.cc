@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "flexmb/fe/element_traits.h"
+
 namespace flexmb::io {
 
 namespace {
@@ -17,21 +19,11 @@ using hdf5::Dims;
 using hdf5::Handle;
 using hdf5::Size;
 
-// element type codes of the file (HDF5 enum /mesh/elements/types)
-struct TypeCode {
-  fe::ElementType type;
-  const char* name;
-  signed char code;
-};
-constexpr TypeCode kTypeCodes[] = {
-    {fe::ElementType::kQuad4, "quad4", 0}, {fe::ElementType::kTria3, "tria3", 1},
-    {fe::ElementType::kBeam2, "beam2", 2}, {fe::ElementType::kTet4, "tet4", 3},
-    {fe::ElementType::kTet10, "tet10", 4}, {fe::ElementType::kHex8, "hex8", 5},
-};
-
+// element type codes of the file (HDF5 enum /mesh/elements/types): the
+// body_file_code and name of each row of fe/element_traits.h
 signed char CodeOf(fe::ElementType t) {
-  for (const TypeCode& c : kTypeCodes) {
-    if (c.type == t) return c.code;
+  for (const fe::ElementTraits& c : fe::AllElementTraits()) {
+    if (c.type == t) return static_cast<signed char>(c.body_file_code);
   }
   return -1;
 }
@@ -39,7 +31,10 @@ signed char CodeOf(fe::ElementType t) {
 // the element type enum over base type `base` (file: H5T_STD_I8LE, memory: H5T_NATIVE_SCHAR)
 Handle TypeEnum(hid_t base) {
   Handle t(H5Tenum_create(base), H5Tclose);
-  for (const TypeCode& c : kTypeCodes) H5Tenum_insert(t.get(), c.name, &c.code);
+  for (const fe::ElementTraits& c : fe::AllElementTraits()) {
+    const signed char code = static_cast<signed char>(c.body_file_code);
+    if (code >= 0) H5Tenum_insert(t.get(), c.name, &code);
+  }
   return t;
 }
 
@@ -230,9 +225,9 @@ void ReadElements(const hdf5::Reader& r, int nn, int ne, const fe::Origin& origi
   for (int k = 0; k < ne; ++k) {
     fe::Element& e = mesh.elements[k];
     const std::string what = "element " + std::to_string(ids[k]) + " (entry " + std::to_string(k) + ")";
-    const TypeCode* tc = nullptr;
-    for (const TypeCode& c : kTypeCodes) {
-      if (c.code == codes[k]) tc = &c;
+    const fe::ElementTraits* tc = nullptr;
+    for (const fe::ElementTraits& c : fe::AllElementTraits()) {
+      if (c.body_file_code >= 0 && c.body_file_code == codes[k]) tc = &c;
     }
     if (tc == nullptr) {
       r.Fail("dataset " + g + "types", what + ": unknown element type code " + std::to_string(codes[k]));
@@ -240,10 +235,9 @@ void ReadElements(const hdf5::Reader& r, int nn, int ne, const fe::Origin& origi
     e.id = ids[k];
     e.type = tc->type;
     e.property = props[k];
-    const size_t family = tc->type == fe::ElementType::kQuad4 || tc->type == fe::ElementType::kTria3
-                              ? mesh.shell_sections.size()
-                          : tc->type == fe::ElementType::kBeam2 ? mesh.beam_sections.size()
-                                                                : mesh.solid_sections.size();
+    const size_t family = tc->family == fe::ElementFamily::kShell  ? mesh.shell_sections.size()
+                          : tc->family == fe::ElementFamily::kBeam ? mesh.beam_sections.size()
+                                                                   : mesh.solid_sections.size();
     if (e.property < -1 || e.property >= static_cast<int>(family)) {
       r.Fail("dataset " + g + "properties", what + ": section index " + std::to_string(e.property) +
                                                 " is out of range (" + std::to_string(family) +

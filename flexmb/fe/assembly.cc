@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "flexmb/common/error.h"
+#include "flexmb/fe/element_traits.h"
 #include "flexmb/fe/point_mass.h"
 
 namespace flexmb::fe {
@@ -91,17 +92,16 @@ Resolved ResolveElement(const Mesh& mesh, const Element& e) {
   };
   Resolved r;
   int material = -1;
-  switch (e.type) {
-    case ElementType::kQuad4:
-    case ElementType::kTria3:
+  switch (Traits(e.type).family) {
+    case ElementFamily::kShell:
       r.shell = section(mesh.shell_sections, "shell");
       material = r.shell->material;
       break;
-    case ElementType::kBeam2:
+    case ElementFamily::kBeam:
       r.beam = section(mesh.beam_sections, "beam");
       material = r.beam->material;
       break;
-    default:
+    case ElementFamily::kSolid:
       material = section(mesh.solid_sections, "solid")->material;
       break;
   }

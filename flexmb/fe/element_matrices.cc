@@ -3,12 +3,7 @@
 #include <string>
 
 #include "flexmb/common/error.h"
-#include "flexmb/fe/elements/beam2.h"
-#include "flexmb/fe/elements/shell_quad4.h"
-#include "flexmb/fe/elements/shell_tria3.h"
-#include "flexmb/fe/elements/solid_hex8.h"
-#include "flexmb/fe/elements/solid_tet10.h"
-#include "flexmb/fe/elements/solid_tet4.h"
+#include "flexmb/fe/element_traits.h"
 
 namespace flexmb::fe {
 
@@ -30,23 +25,10 @@ void ElementMatrices(const ElementInput& in, MatX& K, MatX& M) {
   }
   if (in.x == nullptr) Fail(e, "no node coordinates given");
   if (in.material == nullptr) Fail(e, "no material");
-  switch (e.type) {
-    case ElementType::kQuad4:
-      if (in.shell == nullptr) Fail(e, "no shell section");
-      ShellQuad4Matrices(in, K, M);
-      break;
-    case ElementType::kTria3:
-      if (in.shell == nullptr) Fail(e, "no shell section");
-      ShellTria3Matrices(in, K, M);
-      break;
-    case ElementType::kBeam2:
-      if (in.beam == nullptr) Fail(e, "no beam section");
-      Beam2Matrices(in, K, M);
-      break;
-    case ElementType::kTet4: SolidTet4Matrices(in, K, M); break;
-    case ElementType::kTet10: SolidTet10Matrices(in, K, M); break;
-    case ElementType::kHex8: SolidHex8Matrices(in, K, M); break;
-  }
+  const ElementTraits& t = Traits(e.type);
+  if (t.family == ElementFamily::kShell && in.shell == nullptr) Fail(e, "no shell section");
+  if (t.family == ElementFamily::kBeam && in.beam == nullptr) Fail(e, "no beam section");
+  t.matrices(in, K, M);
   const int n = NodeCount(e.type) * DofsPerNode(e.type);
   if (K.rows() != n || K.cols() != n || M.rows() != n || M.cols() != n) {
     Fail(e, "element routine returned matrices of the wrong size");

@@ -1,38 +1,33 @@
 #include "flexmb/fe/mesh.h"
 
+#include "flexmb/fe/element_traits.h"
+
 namespace flexmb::fe {
 
+namespace {
+
+// the row of `type`, or null for an id without one
+const ElementTraits* MeshTypeRow(ElementType type) {
+  const std::span<const ElementTraits> rows = AllElementTraits();
+  const size_t k = static_cast<size_t>(type);
+  return k < rows.size() ? &rows[k] : nullptr;
+}
+
+}  // namespace
+
 int NodeCount(ElementType type) {
-  switch (type) {
-    case ElementType::kQuad4: return 4;
-    case ElementType::kTria3: return 3;
-    case ElementType::kBeam2: return 2;
-    case ElementType::kTet4: return 4;
-    case ElementType::kTet10: return 10;
-    case ElementType::kHex8: return 8;
-  }
-  return 0;
+  const ElementTraits* t = MeshTypeRow(type);
+  return t ? t->nodes : 0;
 }
 
 int DofsPerNode(ElementType type) {
-  switch (type) {
-    case ElementType::kQuad4:
-    case ElementType::kTria3:
-    case ElementType::kBeam2: return 6;
-    default: return 3;
-  }
+  const ElementTraits* t = MeshTypeRow(type);
+  return t ? t->DofsPerNode() : 3;
 }
 
 const char* TypeName(ElementType type) {
-  switch (type) {
-    case ElementType::kQuad4: return "4-node shell";
-    case ElementType::kTria3: return "3-node shell";
-    case ElementType::kBeam2: return "2-node beam";
-    case ElementType::kTet4: return "4-node tetrahedron";
-    case ElementType::kTet10: return "10-node tetrahedron";
-    case ElementType::kHex8: return "8-node hexahedron";
-  }
-  return "element";
+  const ElementTraits* t = MeshTypeRow(type);
+  return t ? t->description : "element";
 }
 
 int Mesh::NodeIndex(int id) const {

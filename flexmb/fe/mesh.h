@@ -50,7 +50,7 @@ struct Material {
   Origin origin;
 };
 
-/// Element families with their node counts.
+/// Element types, described by the rows of fe/element_traits.h; later types are ids declared with their element.
 enum class ElementType {
   kQuad4,   ///< 4-node shell (CQUAD4, S4), 6 DOF per node
   kTria3,   ///< 3-node shell (CTRIA3, S3), 6 DOF per node

@@ -16,6 +16,7 @@
 
 #include "flexmb/common/error.h"
 #include "flexmb/common/text.h"
+#include "flexmb/fe/element_traits.h"
 #include "flexmb/fe_io/exchange_set.h"
 #include "flexmb/fe_io/format_registry.h"
 #include "flexmb/fe_io/imported_matrices.h"
@@ -55,25 +56,10 @@ std::string ElementName(const fe::Element& e) {
   return std::string(fe::TypeName(e.type)) + " element " + std::to_string(e.id);
 }
 
-enum class Family { kShell, kBeam, kSolid };
+using Family = fe::ElementFamily;
+using fe::FamilyName;
 
-Family FamilyOf(ElementType t) {
-  switch (t) {
-    case ElementType::kQuad4:
-    case ElementType::kTria3: return Family::kShell;
-    case ElementType::kBeam2: return Family::kBeam;
-    default: return Family::kSolid;
-  }
-}
-
-const char* FamilyName(Family f) {
-  switch (f) {
-    case Family::kShell: return "shell";
-    case Family::kBeam: return "beam";
-    case Family::kSolid: return "solid";
-  }
-  return "";
-}
+Family FamilyOf(ElementType t) { return fe::Traits(t).family; }
 
 // reading one FE model file
 class FeModelFileParser {

@@ -1,6 +1,7 @@
 #include "flexmb/fe_io/gmsh_reader.h"
 
 #include <algorithm>
+#include <span>
 #include <climits>
 #include <map>
 #include <set>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "flexmb/common/error.h"
+#include "flexmb/fe/element_traits.h"
 #include "flexmb/fe_io/text_scanner.h"
 
 namespace flexmb::io {
@@ -24,61 +26,60 @@ struct GmshType {
   bool point = false;       // type 15: no element, nodes still join their groups' node sets
   bool supported = false;   // else read, and accepted only as a boundary of supported elements
   ElementType type = ElementType::kQuad4;
+  std::span<const int> order;  // node order of the type (fe/element_traits.h)
 };
 
+// the gmsh element types known here: code, node count, dimension, name
+struct GmshCatalogueEntry {
+  int code, nodes, dim;
+  const char* name;
+};
+constexpr GmshCatalogueEntry kGmshCatalogue[] = {
+    {1, 2, 1, "line"},          {2, 3, 2, "triangle"},          {3, 4, 2, "quadrangle"},
+    {4, 4, 3, "tetrahedron"},   {5, 8, 3, "hexahedron"},        {6, 6, 3, "6-node prism"},
+    {7, 5, 3, "5-node pyramid"}, {8, 3, 1, "3-node line"},      {9, 6, 2, "6-node triangle"},
+    {10, 9, 2, "9-node quadrangle"}, {11, 10, 3, "10-node tetrahedron"}, {12, 27, 3, "27-node hexahedron"},
+    {13, 18, 3, "18-node prism"}, {14, 14, 3, "14-node pyramid"}, {15, 1, 0, "point"},
+    {16, 8, 2, "8-node quadrangle"}, {17, 20, 3, "20-node hexahedron"}, {18, 15, 3, "15-node prism"},
+    {19, 13, 3, "13-node pyramid"}, {20, 9, 2, "9-node triangle"}, {21, 10, 2, "10-node triangle"},
+    {26, 4, 1, "4-node line"}};
+constexpr int kGmshPoint = 15;
+
+const GmshCatalogueEntry* GmshEntry(int code) {
+  for (const GmshCatalogueEntry& c : kGmshCatalogue)
+    if (c.code == code) return &c;
+  return nullptr;
+}
+
+// the row of fe/element_traits.h read from gmsh type `code`, or null
+const fe::ElementTraits* GmshRow(int code) {
+  for (const fe::ElementTraits& t : fe::AllElementTraits())
+    if (t.gmsh_code == code) return &t;
+  return nullptr;
+}
+
 bool LookUpType(int code, GmshType& t) {
-  const ElementType q = ElementType::kQuad4;
-  switch (code) {
-    case 1: t = {2, 1, false, true, ElementType::kBeam2}; return true;
-    case 2: t = {3, 2, false, true, ElementType::kTria3}; return true;
-    case 3: t = {4, 2, false, true, ElementType::kQuad4}; return true;
-    case 4: t = {4, 3, false, true, ElementType::kTet4}; return true;
-    case 5: t = {8, 3, false, true, ElementType::kHex8}; return true;
-    case 11: t = {10, 3, false, true, ElementType::kTet10}; return true;
-    case 15: t = {1, 0, true, true, q}; return true;
-    // known but not supported: node counts and dimensions
-    case 6: t = {6, 3, false, false, q}; return true;
-    case 7: t = {5, 3, false, false, q}; return true;
-    case 8: t = {3, 1, false, false, q}; return true;
-    case 9: t = {6, 2, false, false, q}; return true;
-    case 10: t = {9, 2, false, false, q}; return true;
-    case 12: t = {27, 3, false, false, q}; return true;
-    case 13: t = {18, 3, false, false, q}; return true;
-    case 14: t = {14, 3, false, false, q}; return true;
-    case 16: t = {8, 2, false, false, q}; return true;
-    case 17: t = {20, 3, false, false, q}; return true;
-    case 18: t = {15, 3, false, false, q}; return true;
-    case 19: t = {13, 3, false, false, q}; return true;
-    case 20: t = {9, 2, false, false, q}; return true;
-    case 21: t = {10, 2, false, false, q}; return true;
-    case 26: t = {4, 1, false, false, q}; return true;
-    default: return false;
+  const GmshCatalogueEntry* c = GmshEntry(code);
+  if (c == nullptr) return false;
+  t = {c->nodes, c->dim, code == kGmshPoint, code == kGmshPoint, ElementType::kQuad4, {}};
+  if (const fe::ElementTraits* row = GmshRow(code)) {
+    t.supported = true;
+    t.type = row->type;
+    t.order = row->gmsh_order;
   }
+  return true;
 }
 
 std::string UnsupportedType(int code) {
-  const char* name = nullptr;
-  switch (code) {
-    case 6: name = "6-node prism"; break;
-    case 7: name = "5-node pyramid"; break;
-    case 8: name = "3-node line"; break;
-    case 9: name = "6-node triangle"; break;
-    case 10: name = "9-node quadrangle"; break;
-    case 12: name = "27-node hexahedron"; break;
-    case 13: name = "18-node prism"; break;
-    case 14: name = "14-node pyramid"; break;
-    case 16: name = "8-node quadrangle"; break;
-    case 17: name = "20-node hexahedron"; break;
-    case 18: name = "15-node prism"; break;
-    case 19: name = "13-node pyramid"; break;
-    case 20: name = "9-node triangle"; break;
-    case 21: name = "10-node triangle"; break;
-    case 26: name = "4-node line"; break;
-    default: break;
-  }
-  return "gmsh element type " + std::to_string(code) + (name ? std::string(" (") + name + ")" : std::string()) +
-         " is not supported (supported: 1 line, 2 triangle, 3 quadrangle, 4 tetrahedron, 5 hexahedron, "
-         "11 10-node tetrahedron, 15 point)";
+  const GmshCatalogueEntry* c = GmshEntry(code);
+  std::string supported;
+  for (const GmshCatalogueEntry& k : kGmshCatalogue)
+    if (k.code == kGmshPoint || GmshRow(k.code)) {
+      if (!supported.empty()) supported += ", ";
+      supported += std::to_string(k.code) + " " + k.name;
+    }
+  return "gmsh element type " + std::to_string(code) + (c ? std::string(" (") + c->name + ")" : std::string()) +
+         " is not supported (supported: " + supported + ")";
 }
 
 // a physical group: (dimension, tag)
@@ -519,11 +520,11 @@ class GmshParser {
         merged = true;
       }
       if (!merged && !e.type.point) {
-        if (e.type.type == ElementType::kTet10) std::swap(idx[8], idx[9]);  // gmsh: 9 on edge 3-4, 10 on 2-4
         fe::Element el;
         el.id = e.id;
         el.type = e.type.type;
         el.nodes = idx;
+        for (size_t k = 0; k < idx.size(); ++k) el.nodes[k] = idx[fe::FormatNode(e.type.order, static_cast<int>(k))];
         el.origin = {file, e.line};
         index = static_cast<int>(mesh.elements.size());
         mesh.elements.push_back(std::move(el));

@@ -5,11 +5,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <span>
 #include <string_view>
 #include <unordered_map>
 #include <vector>
 
 #include "flexmb/common/error.h"
+#include "flexmb/fe/element_traits.h"
 #include "flexmb/fe_io/text_scanner.h"
 
 namespace flexmb::io {
@@ -17,33 +19,22 @@ namespace {
 
 using fe::ElementType;
 
-// VTK cell type codes
-constexpr int kVertex = 1, kLine = 3, kTriangle = 5, kQuad = 9, kTetra = 10, kHexahedron = 12,
-              kQuadraticTetra = 24;
+// VTK cell type of a vertex (skipped on reading)
+constexpr int kVertex = 1;
 
-int VtkCode(ElementType t) {
-  switch (t) {
-    case ElementType::kBeam2: return kLine;
-    case ElementType::kTria3: return kTriangle;
-    case ElementType::kQuad4: return kQuad;
-    case ElementType::kTet4: return kTetra;
-    case ElementType::kTet10: return kQuadraticTetra;
-    case ElementType::kHex8: return kHexahedron;
-  }
-  return 0;
+// the row of fe/element_traits.h of a VTK cell type, or null for an unsupported one
+const fe::ElementTraits* FromVtk(int code) {
+  for (const fe::ElementTraits& t : fe::AllElementTraits())
+    if (t.vtk_code == code) return &t;
+  return nullptr;
 }
 
-// flexmb type of a VTK cell type; false for an unsupported one
-bool FromVtk(int code, ElementType& t) {
-  switch (code) {
-    case kLine: t = ElementType::kBeam2; return true;
-    case kTriangle: t = ElementType::kTria3; return true;
-    case kQuad: t = ElementType::kQuad4; return true;
-    case kTetra: t = ElementType::kTet4; return true;
-    case kQuadraticTetra: t = ElementType::kTet10; return true;
-    case kHexahedron: t = ElementType::kHex8; return true;
-    default: return false;
-  }
+// the supported cell types for messages: "1 vertex (ignored), 3 beam2, ..."
+std::string VtkSupported() {
+  std::string s = "1 vertex (ignored)";
+  for (const fe::ElementTraits& t : fe::AllElementTraits())
+    if (t.vtk_code > 0) s += ", " + std::to_string(t.vtk_code) + " (" + t.description + ")";
+  return s;
 }
 
 bool EqualNoCase(std::string_view a, std::string_view b) {
@@ -380,12 +371,12 @@ class VtkParser {
                            {file, c.line, entity});
       }
       if (c.code == kVertex) continue;
-      ElementType type;
-      if (!FromVtk(c.code, type))
-        throw InputError("VTK cell type " + std::to_string(c.code) +
-                             " is not supported (supported: 1 vertex (ignored), 3 line, 5 triangle, 9 quad, "
-                             "10 tetra, 12 hexahedron, 24 quadratic tetra)",
+      const fe::ElementTraits* row = FromVtk(c.code);
+      if (row == nullptr)
+        throw InputError("VTK cell type " + std::to_string(c.code) + " is not supported (supported: " +
+                             VtkSupported() + ")",
                          {file, c.line, entity});
+      const ElementType type = row->type;
       if (c.count != fe::NodeCount(type))
         throw InputError("a VTK type " + std::to_string(c.code) + " cell has " +
                              std::to_string(fe::NodeCount(type)) + " points, got " + std::to_string(c.count),
@@ -397,7 +388,8 @@ class VtkParser {
       fe::Element e;
       e.id = id;
       e.type = type;
-      for (int p = 0; p < c.count; ++p) e.nodes.push_back(static_cast<int>(conn_[c.first + p]));
+      for (int p = 0; p < c.count; ++p)
+        e.nodes.push_back(static_cast<int>(conn_[c.first + fe::FormatNode(row->vtk_order, p)]));
       e.origin = {file, c.line};
       mesh.elements.push_back(std::move(e));
     }
@@ -449,13 +441,17 @@ void WriteVtk(const fe::Mesh& mesh, const std::string& path) {
   std::fprintf(f, "POINTS %d double\n", nn);
   for (const fe::Node& n : mesh.nodes) std::fprintf(f, "%.17g %.17g %.17g\n", n.x.x(), n.x.y(), n.x.z());
   std::fprintf(f, "CELLS %zu %lld\n", mesh.elements.size(), static_cast<long long>(size));
+  std::vector<int> cell;
   for (const fe::Element& e : mesh.elements) {
-    std::fprintf(f, "%zu", e.nodes.size());
-    for (int n : e.nodes) std::fprintf(f, " %d", n);
+    const std::span<const int> order = fe::Traits(e.type).vtk_order;
+    cell.assign(e.nodes.size(), 0);
+    for (size_t k = 0; k < e.nodes.size(); ++k) cell[fe::FormatNode(order, static_cast<int>(k))] = e.nodes[k];
+    std::fprintf(f, "%zu", cell.size());
+    for (int n : cell) std::fprintf(f, " %d", n);
     std::fputc('\n', f);
   }
   std::fprintf(f, "CELL_TYPES %zu\n", mesh.elements.size());
-  for (const fe::Element& e : mesh.elements) std::fprintf(f, "%d\n", VtkCode(e.type));
+  for (const fe::Element& e : mesh.elements) std::fprintf(f, "%d\n", fe::Traits(e.type).vtk_code);
   std::fprintf(f, "POINT_DATA %d\nSCALARS node_id int 1\nLOOKUP_TABLE default\n", nn);
   for (const fe::Node& n : mesh.nodes) std::fprintf(f, "%d\n", n.id);
   std::fprintf(f, "CELL_DATA %zu\nSCALARS element_id int 1\nLOOKUP_TABLE default\n", mesh.elements.size());

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "flexmb/common/error.h"
+#include "flexmb/fe/element_traits.h"
 #include "flexmb/fe/elements/element_common.h"
 
 namespace flexmb::reduction {
@@ -29,17 +30,16 @@ fe::ElementInput ResolveElementInput(const fe::Mesh& mesh, const fe::Element& e,
     return &list[e.property];
   };
   int material = -1;
-  switch (e.type) {
-    case fe::ElementType::kQuad4:
-    case fe::ElementType::kTria3:
+  switch (fe::Traits(e.type).family) {
+    case fe::ElementFamily::kShell:
       in.shell = section(mesh.shell_sections, "shell");
       material = in.shell->material;
       break;
-    case fe::ElementType::kBeam2:
+    case fe::ElementFamily::kBeam:
       in.beam = section(mesh.beam_sections, "beam");
       material = in.beam->material;
       break;
-    default: material = section(mesh.solid_sections, "solid")->material; break;
+    case fe::ElementFamily::kSolid: material = section(mesh.solid_sections, "solid")->material; break;
   }
   if (material < 0 || material >= static_cast<int>(mesh.materials.size()))
     throw InputError("its section has no material", ctx);

@@ -6,13 +6,8 @@
 
 #include "flexmb/common/error.h"
 #include "flexmb/fe/assembly.h"
-#include "flexmb/fe/elements/beam2.h"
+#include "flexmb/fe/element_traits.h"
 #include "flexmb/fe/elements/element_common.h"
-#include "flexmb/fe/elements/shell_quad4.h"
-#include "flexmb/fe/elements/shell_tria3.h"
-#include "flexmb/fe/elements/solid_hex8.h"
-#include "flexmb/fe/elements/solid_tet10.h"
-#include "flexmb/fe/elements/solid_tet4.h"
 #include "flexmb/fe/sparse_cholesky.h"
 #include "flexmb/reduction/element_input.h"
 
@@ -42,22 +37,7 @@ void ElementGeometricStiffness(const fe::ElementInput& in, const Eigen::VectorXd
     throw InputError("prestress displacement has " + std::to_string(u.size()) + " values, expected " + std::to_string(nd),
                      fe::ElementContext(e));
   if (axial_force != nullptr) *axial_force = 0.0;
-  switch (e.type) {
-    case fe::ElementType::kBeam2: {
-      MatX S;
-      Eigen::Matrix3d axes;
-      fe::Beam2SectionForces(in, S, axes);
-      const double N = 0.5 * (S.row(0).dot(u) + S.row(6).dot(u));
-      if (axial_force != nullptr) *axial_force = N;
-      fe::Beam2GeometricStiffness(in, N, KG);
-      break;
-    }
-    case fe::ElementType::kQuad4: fe::ShellQuad4GeometricStiffness(in, u, KG); break;
-    case fe::ElementType::kTria3: fe::ShellTria3GeometricStiffness(in, u, KG); break;
-    case fe::ElementType::kTet4: fe::SolidTet4GeometricStiffness(in, u, KG); break;
-    case fe::ElementType::kTet10: fe::SolidTet10GeometricStiffness(in, u, KG); break;
-    case fe::ElementType::kHex8: fe::SolidHex8GeometricStiffness(in, u, KG); break;
-  }
+  fe::Traits(e.type).geometric_stiffness(in, u, KG, axial_force);
 }
 
 fe::SparseMat AssembleGeometricStiffness(const fe::Mesh& mesh, const fe::DofMap& dofs, const Eigen::VectorXd& u_full) {

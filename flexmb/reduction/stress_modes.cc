@@ -7,41 +7,23 @@
 
 #include "flexmb/common/error.h"
 #include "flexmb/fe/element_matrices.h"
-#include "flexmb/fe/elements/beam2.h"
+#include "flexmb/fe/element_traits.h"
 #include "flexmb/fe/elements/element_common.h"
-#include "flexmb/fe/elements/shell_quad4.h"
-#include "flexmb/fe/elements/shell_tria3.h"
-#include "flexmb/fe/elements/solid_hex8.h"
-#include "flexmb/fe/elements/solid_tet10.h"
-#include "flexmb/fe/elements/solid_tet4.h"
 #include "flexmb/reduction/element_input.h"
 #include "flexmb/reduction/parallel_rows.h"
 
 namespace flexmb::reduction {
 namespace {
 
-enum Family { kShell = 0, kBeam = 1, kSolid = 2 };
+// stress tables in the order of fe::ElementFamily
+constexpr int kStressFamilies = 3;
 
-Family FamilyOf(fe::ElementType type) {
-  switch (type) {
-    case fe::ElementType::kQuad4:
-    case fe::ElementType::kTria3: return kShell;
-    case fe::ElementType::kBeam2: return kBeam;
-    default: return kSolid;
-  }
-}
+int FamilyOf(fe::ElementType type) { return static_cast<int>(fe::Traits(type).family); }
 
 // recovery matrix (element dof -> the table's values of one element) and frame
 void Recovery(const fe::ElementInput& in, MatX& S, Mat3& axes) {
   axes.setIdentity();
-  switch (in.element->type) {
-    case fe::ElementType::kQuad4: fe::ShellQuad4Stress(in, S, axes); break;
-    case fe::ElementType::kTria3: fe::ShellTria3Stress(in, S, axes); break;
-    case fe::ElementType::kBeam2: fe::Beam2SectionForces(in, S, axes); break;
-    case fe::ElementType::kTet4: fe::SolidTet4Stress(in, S); break;
-    case fe::ElementType::kTet10: fe::SolidTet10Stress(in, S); break;
-    case fe::ElementType::kHex8: fe::SolidHex8Stress(in, S); break;
-  }
+  fe::Traits(in.element->type).stress(in, S, axes);
 }
 
 StressTable MakeTable(const char* name, std::vector<std::string> components,
@@ -65,7 +47,7 @@ StressModes ComputeStressModes(const fe::Mesh& mesh, const MatX& modes) {
   out.shell = MakeTable("shell", {"sxx", "syy", "sxy"}, {"bottom", "top"});
   out.beam = MakeTable("beam", {"N", "Vy", "Vz", "T", "My", "Mz"}, {"end_a", "end_b"});
   out.solid = MakeTable("solid", {"sxx", "syy", "szz", "sxy", "syz", "szx"}, {"centroid"});
-  StressTable* tables[3] = {&out.shell, &out.beam, &out.solid};
+  StressTable* tables[kStressFamilies] = {&out.shell, &out.beam, &out.solid};
 
   // each element's table and position in it
   const int ne = static_cast<int>(mesh.elements.size());

@@ -11,6 +11,7 @@
 
 #include "flexmb/bodies/flexible_body.h"
 #include "flexmb/common/error.h"
+#include "flexmb/fe/element_traits.h"
 #include "flexmb/model/model.h"
 #include "flexmb/model/state.h"
 #include "flexmb/reduction/stress_modes.h"
@@ -18,20 +19,18 @@
 namespace flexmb {
 namespace {
 
-constexpr unsigned char kLine = 3, kTriangle = 5, kQuad = 9, kTetra = 10, kHexahedron = 12, kWedge = 13,
-                        kQuadraticTetra = 24;
+constexpr unsigned char kLine = 3, kTriangle = 5, kHexahedron = 12, kWedge = 13;
 
-// vtk cell type of an FE element (node orders of Nastran and VTK agree)
-unsigned char CellType(fe::ElementType t) {
-  switch (t) {
-    case fe::ElementType::kQuad4: return kQuad;
-    case fe::ElementType::kTria3: return kTriangle;
-    case fe::ElementType::kBeam2: return kLine;
-    case fe::ElementType::kTet4: return kTetra;
-    case fe::ElementType::kTet10: return kQuadraticTetra;
-    case fe::ElementType::kHex8: return kHexahedron;
-  }
-  return 0;
+// an FE element as a VTK cell, its nodes in VTK order (fe/element_traits.h)
+template <class Cells>
+void AddElementCell(Cells& m, const fe::Element& e) {
+  const fe::ElementTraits& t = fe::Traits(e.type);
+  m.cell_types.push_back(static_cast<unsigned char>(t.vtk_code));
+  m.cell_sizes.push_back(static_cast<int>(e.nodes.size()));
+  const size_t first = m.connectivity.size();
+  m.connectivity.resize(first + e.nodes.size());
+  for (size_t k = 0; k < e.nodes.size(); ++k)
+    m.connectivity[first + fe::FormatNode(t.vtk_order, static_cast<int>(k))] = e.nodes[k];
 }
 constexpr const char* kPvdTail = "  </Collection>\n</VTKFile>\n";
 
@@ -148,9 +147,7 @@ ShapeMesh MakeMeshShape(int body, const fe::Mesh& mesh) {
   m.points_B.reserve(mesh.nodes.size());
   for (const fe::Node& n : mesh.nodes) m.points_B.push_back(n.x);
   for (const fe::Element& e : mesh.elements) {
-    m.cell_types.push_back(CellType(e.type));
-    m.cell_sizes.push_back(static_cast<int>(e.nodes.size()));
-    m.connectivity.insert(m.connectivity.end(), e.nodes.begin(), e.nodes.end());
+    AddElementCell(m, e);
   }
   return m;
 }
@@ -181,9 +178,7 @@ VtkAnimationWriter::VtkAnimationWriter(const std::string& dir, const Model& mode
     for (size_t e = 0; e < r.mesh.elements.size(); ++e) {
       const fe::Element& el = r.mesh.elements[e];
       m.cell_of_element[e] = static_cast<int>(m.cell_types.size());
-      m.cell_types.push_back(CellType(el.type));
-      m.cell_sizes.push_back(static_cast<int>(el.nodes.size()));
-      m.connectivity.insert(m.connectivity.end(), el.nodes.begin(), el.nodes.end());
+      AddElementCell(m, el);
     }
     m.u.setZero(r.modes.rows());
     m.stress[0].setZero(r.stress.shell.modes.rows());

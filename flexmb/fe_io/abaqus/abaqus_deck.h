@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "flexmb/fe/element_traits.h"
 #include "flexmb/fe/mesh.h"
 
 namespace flexmb::io::abaqus {
@@ -94,12 +95,13 @@ double Positive(const DataLine& d, size_t i, const std::string& entity, const ch
 /// Throws if `d` has more than `n` fields.
 void MaxFields(const DataLine& d, size_t n, const std::string& entity);
 
-/// True for the shell element types (quad4, tria3).
-inline bool IsShell(fe::ElementType t) { return t == fe::ElementType::kQuad4 || t == fe::ElementType::kTria3; }
+/// True for the shell element types (family shell in fe/element_traits.h).
+inline bool IsShell(fe::ElementType t) { return fe::Traits(t).family == fe::ElementFamily::kShell; }
 
-/// True for the solid element types (tet4, tet10, hex8).
-inline bool IsSolid(fe::ElementType t) {
-  return t == fe::ElementType::kTet4 || t == fe::ElementType::kTet10 || t == fe::ElementType::kHex8;
-}
+/// True for the beam element types (family beam in fe/element_traits.h).
+inline bool IsBeam(fe::ElementType t) { return fe::Traits(t).family == fe::ElementFamily::kBeam; }
+
+/// True for the solid element types (family solid in fe/element_traits.h).
+inline bool IsSolid(fe::ElementType t) { return fe::Traits(t).family == fe::ElementFamily::kSolid; }
 
 }  // namespace flexmb::io::abaqus

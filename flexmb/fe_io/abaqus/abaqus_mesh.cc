@@ -3,6 +3,7 @@
 #include <string>
 
 #include "flexmb/common/error.h"
+#include "flexmb/fe/element_traits.h"
 #include "flexmb/fe_io/abaqus/abaqus_builder.h"
 #include "flexmb/fe_io/text_scanner.h"
 
@@ -17,35 +18,30 @@ struct TypeInfo {
   Kind kind = Kind::kStructural;
   ElementType type = ElementType::kQuad4;
   bool euler_bernoulli = false;  // B33: no shear flexibility
-  bool other_hex = false;        // C3D8 / C3D8R read as the incompatible-mode hex
+  const char* note = nullptr;    // another formulation, read as `type`: the warning's text
   int nodes = 0;
 };
 
+// the element types of fe/element_traits.h by their Abaqus names, and the point masses
 bool LookupType(const std::string& t, TypeInfo& info) {
-  static const std::map<std::string, TypeInfo> kTypes = {
-      {"S4", {Kind::kStructural, ElementType::kQuad4, false, false, 4}},
-      {"S4R", {Kind::kStructural, ElementType::kQuad4, false, false, 4}},
-      {"S4R5", {Kind::kStructural, ElementType::kQuad4, false, false, 4}},
-      {"S3", {Kind::kStructural, ElementType::kTria3, false, false, 3}},
-      {"S3R", {Kind::kStructural, ElementType::kTria3, false, false, 3}},
-      {"STRI3", {Kind::kStructural, ElementType::kTria3, false, false, 3}},
-      {"B31", {Kind::kStructural, ElementType::kBeam2, false, false, 2}},
-      {"B31H", {Kind::kStructural, ElementType::kBeam2, false, false, 2}},
-      {"B31R", {Kind::kStructural, ElementType::kBeam2, false, false, 2}},
-      {"B33", {Kind::kStructural, ElementType::kBeam2, true, false, 2}},
-      {"B33H", {Kind::kStructural, ElementType::kBeam2, true, false, 2}},
-      {"C3D4", {Kind::kStructural, ElementType::kTet4, false, false, 4}},
-      {"C3D10", {Kind::kStructural, ElementType::kTet10, false, false, 10}},
-      {"C3D8I", {Kind::kStructural, ElementType::kHex8, false, false, 8}},
-      {"C3D8", {Kind::kStructural, ElementType::kHex8, false, true, 8}},
-      {"C3D8R", {Kind::kStructural, ElementType::kHex8, false, true, 8}},
-      {"MASS", {Kind::kMass, ElementType::kQuad4, false, false, 1}},
-      {"ROTARYI", {Kind::kRotaryInertia, ElementType::kQuad4, false, false, 1}},
-  };
-  auto it = kTypes.find(t);
-  if (it == kTypes.end()) return false;
-  info = it->second;
-  return true;
+  for (const fe::ElementTraits& row : fe::AllElementTraits())
+    for (const fe::AbaqusName& a : row.abaqus)
+      if (t == a.name) {
+        info = {Kind::kStructural, row.type, a.variant == fe::AbaqusVariant::kEulerBernoulli,
+                a.variant == fe::AbaqusVariant::kOther ? a.note : nullptr, row.nodes};
+        return true;
+      }
+  if (t == "MASS") info = {Kind::kMass, ElementType::kQuad4, false, nullptr, 1};
+  if (t == "ROTARYI") info = {Kind::kRotaryInertia, ElementType::kQuad4, false, nullptr, 1};
+  return t == "MASS" || t == "ROTARYI";
+}
+
+// the names LookupType knows, for messages
+std::string SupportedTypes() {
+  std::string s;
+  for (const fe::ElementTraits& row : fe::AllElementTraits())
+    for (const fe::AbaqusName& a : row.abaqus) s += std::string(a.name) + ", ";
+  return s + "MASS, ROTARYI";
 }
 
 }  // namespace
@@ -114,11 +110,8 @@ void Builder::Elements(const Card& c) {
   TypeInfo info;
   if (!LookupType(type, info))
     Fail(c.origin, c.name, "unknown or unsupported element type " + Printable(tp->value) +
-                               " (supported: S4, S4R, S4R5, S3, S3R, STRI3, B31, B31H, B31R, B33, B33H, C3D4, "
-                               "C3D10, C3D8, C3D8I, C3D8R, MASS, ROTARYI)");
-  if (info.other_hex)
-    WarnOnce("type " + type, At(c.origin) + ": " + type + " elements are read as flexmb's 8-node hexahedron "
-                                            "with incompatible modes (like C3D8I); the formulation differs");
+                               " (supported: " + SupportedTypes() + ")");
+  if (info.note) WarnOnce("type " + type, At(c.origin) + ": " + type + " elements are " + info.note);
   NamedSet* set = nullptr;
   if (const Param* p = c.Find("ELSET")) set = &NewSet(elsets_, p->value, c.origin, c.name);
   const size_t want = static_cast<size_t>(info.nodes) + 1;
@@ -146,7 +139,7 @@ void Builder::Elements(const Card& c) {
       e.type = info.type;
       e.origin = d.origin;
       for (int j = 0; j < info.nodes; ++j) e.nodes.push_back(NodeIndex(d, j + 1, entity));
-      if (info.type == ElementType::kBeam2) e.orientation = Vec3(0.0, 0.0, -1.0);
+      if (IsBeam(info.type)) e.orientation = Vec3(0.0, 0.0, -1.0);
       rec = {Kind::kStructural, static_cast<int>(mesh_.elements.size())};
       mesh_.elements.push_back(std::move(e));
       euler_.push_back(info.euler_bernoulli);

@@ -10,7 +10,6 @@
 namespace flexmb::io::abaqus {
 namespace {
 
-using fe::ElementType;
 using fe::Vec3;
 
 constexpr double kPi = 3.14159265358979323846;
@@ -282,7 +281,7 @@ void Builder::BeamSection(const std::vector<Card>& cards, const std::vector<int>
   }
   // one section for the shear-flexible (B31) and one for the Euler-Bernoulli (B33) elements
   int index[2] = {-1, -1};
-  AssignSection(c, entity, "beam", [](ElementType t) { return t == ElementType::kBeam2; },
+  AssignSection(c, entity, "beam", IsBeam,
                 [&](fe::Element& e, int k) {
                   const int eb = euler_[k] ? 1 : 0;
                   if (index[eb] < 0) {

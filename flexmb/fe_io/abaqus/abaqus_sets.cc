@@ -14,31 +14,10 @@ using fe::ElementType;
 using fe::Origin;
 
 // element faces (1-based node positions) for element-based surfaces
-const std::vector<int>* Face(ElementType t, const std::string& label) {
-  static const std::map<std::string, std::vector<int>> kHex = {
-      {"S1", {1, 2, 3, 4}}, {"S2", {5, 8, 7, 6}}, {"S3", {1, 5, 6, 2}},
-      {"S4", {2, 6, 7, 3}}, {"S5", {3, 7, 8, 4}}, {"S6", {4, 8, 5, 1}}};
-  static const std::map<std::string, std::vector<int>> kTet4 = {
-      {"S1", {1, 2, 3}}, {"S2", {1, 4, 2}}, {"S3", {2, 4, 3}}, {"S4", {3, 4, 1}}};
-  static const std::map<std::string, std::vector<int>> kTet10 = {{"S1", {1, 2, 3, 5, 6, 7}},
-                                                                  {"S2", {1, 4, 2, 8, 9, 5}},
-                                                                  {"S3", {2, 4, 3, 9, 10, 6}},
-                                                                  {"S4", {3, 4, 1, 10, 8, 7}}};
-  static const std::vector<int> kQuad = {1, 2, 3, 4}, kTria = {1, 2, 3};
-  const std::map<std::string, std::vector<int>>* table = nullptr;
-  switch (t) {
-    case ElementType::kHex8: table = &kHex; break;
-    case ElementType::kTet4: table = &kTet4; break;
-    case ElementType::kTet10: table = &kTet10; break;
-    case ElementType::kQuad4:
-    case ElementType::kTria3:
-      if (label == "SPOS" || label == "SNEG" || label == "S1" || label == "S2")
-        return t == ElementType::kQuad4 ? &kQuad : &kTria;
-      return nullptr;
-    case ElementType::kBeam2: return nullptr;
-  }
-  auto it = table->find(label);
-  return it == table->end() ? nullptr : &it->second;
+const fe::AbaqusFace* Face(ElementType t, const std::string& label) {
+  for (const fe::AbaqusFace& f : fe::Traits(t).abaqus_faces)
+    if (label == f.label) return &f;
+  return nullptr;
 }
 
 }  // namespace
@@ -186,10 +165,10 @@ void Builder::Surface(const Card& c) {
         const ElementRecord& r = elements_.at(eid);
         if (r.kind != Kind::kStructural) Fail(d.origin, entity, ElementName(eid) + " has no faces");
         const fe::Element& e = mesh_.elements[r.index];
-        const std::vector<int>* nodes_of_face = Face(e.type, face);
+        const fe::AbaqusFace* nodes_of_face = Face(e.type, face);
         if (nodes_of_face == nullptr)
           Fail(d.origin, entity, "face '" + Printable(face) + "' does not exist on " + ElementName(eid));
-        for (int k : *nodes_of_face) nodes.Add(e.nodes[k - 1]);
+        for (int k = 0; k < nodes_of_face->count; ++k) nodes.Add(e.nodes[nodes_of_face->nodes[k] - 1]);
       }
     } else {
       Fail(c.origin, entity, "TYPE=" + tp->value + " is not supported (NODE or ELEMENT)");

@@ -11,16 +11,17 @@
 #include <vector>
 
 #include "flexmb/common/error.h"
+#include "flexmb/fe/element_traits.h"
 #include "flexmb/fe_io/abaqus/abaqus_deck.h"
 #include "flexmb/fe_io/text_scanner.h"
 
 namespace flexmb::io {
 namespace {
 
+using abaqus::IsBeam;
 using abaqus::IsShell;
 using abaqus::IsSolid;
 using abaqus::Upper;
-using fe::ElementType;
 
 std::string Num(double v) {
   char buf[40];
@@ -49,19 +50,17 @@ void WriteIds(std::FILE* f, const std::vector<int>& ids) {
   }
 }
 
+// the type's first Abaqus name; a beam without shear flexibility gets its
+// Euler-Bernoulli name (B33)
 const char* AbaqusType(const fe::Mesh& mesh, const fe::Element& e) {
-  switch (e.type) {
-    case ElementType::kQuad4: return "S4";
-    case ElementType::kTria3: return "S3";
-    case ElementType::kTet4: return "C3D4";
-    case ElementType::kTet10: return "C3D10";
-    case ElementType::kHex8: return "C3D8I";
-    case ElementType::kBeam2: {
-      const fe::BeamSection& s = mesh.beam_sections.at(e.property);
-      return s.ky == 0.0 && s.kz == 0.0 ? "B33" : "B31";
-    }
+  const fe::ElementTraits& t = fe::Traits(e.type);
+  if (IsBeam(e.type)) {
+    const fe::BeamSection& s = mesh.beam_sections.at(e.property);
+    if (s.ky == 0.0 && s.kz == 0.0)
+      for (const fe::AbaqusName& a : t.abaqus)
+        if (a.variant == fe::AbaqusVariant::kEulerBernoulli) return a.name;
   }
-  return "?";
+  return t.abaqus.empty() ? "?" : t.abaqus.front().name;
 }
 
 // checks the mesh before anything is written, so that nothing half-written
@@ -85,7 +84,7 @@ std::vector<std::string> CheckWritable(const fe::Mesh& mesh) {
       if (s.nsm != 0.0)
         throw InputError("non-structural mass cannot be written to an Abaqus deck", {s.origin.file, s.origin.line, "shell section " + std::to_string(s.id)});
       material = s.material;
-    } else if (e.type == ElementType::kBeam2) {
+    } else if (IsBeam(e.type)) {
       if (e.property < 0 || e.property >= static_cast<int>(mesh.beam_sections.size()))
         throw InputError("has no beam section", {e.origin.file, e.origin.line, element_entity(e)});
       const fe::BeamSection& s = mesh.beam_sections[e.property];
@@ -175,11 +174,11 @@ void WriteAbaqus(const fe::Mesh& mesh, const std::string& path) {
   for (const fe::Element& e : mesh.elements) {
     max_element_id = std::max(max_element_id, e.id);
     std::string key = std::string(AbaqusType(mesh, e)) + "/" + std::to_string(e.property);
-    if (e.type == ElementType::kBeam2) key += "/" + Num(e.orientation.x()) + "," + Num(e.orientation.y()) + "," + Num(e.orientation.z());
+    if (IsBeam(e.type)) key += "/" + Num(e.orientation.x()) + "," + Num(e.orientation.y()) + "," + Num(e.orientation.z());
     if (IsShell(e.type)) key += "/" + Num(e.shell_offset);
     auto [it, fresh] = group_of_key.emplace(key, static_cast<int>(groups.size()));
     if (fresh) {
-      const char* family = IsShell(e.type) ? "shell" : e.type == ElementType::kBeam2 ? "beam" : "solid";
+      const char* family = fe::FamilyName(fe::Traits(e.type).family);
       groups.push_back({&e, unique("flexmb_" + std::string(family) + "_section_" + std::to_string(e.property + 1))});
     }
     if (run_start == nullptr || key != run_key) {
@@ -257,7 +256,7 @@ void WriteAbaqus(const fe::Mesh& mesh, const std::string& path) {
       std::fprintf(f, "*SHELL SECTION, ELSET=%s, MATERIAL=%s", g.elset.c_str(), material_name[s.material].c_str());
       if (e.shell_offset != 0.0) std::fprintf(f, ", OFFSET=%s", Num(-e.shell_offset / s.thickness).c_str());
       std::fprintf(f, "\n%s\n", Num(s.thickness).c_str());
-    } else if (e.type == ElementType::kBeam2) {
+    } else if (IsBeam(e.type)) {
       const fe::BeamSection& s = mesh.beam_sections[e.property];
       const fe::Material& m = mesh.materials[s.material];
       std::fprintf(f, "*BEAM GENERAL SECTION, ELSET=%s, SECTION=GENERAL, MATERIAL=%s\n", g.elset.c_str(),

@@ -1,16 +1,31 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <Eigen/Geometry>
 
 #include "flexmb/common/error.h"
+#include "flexmb/fe/element_traits.h"
 #include "flexmb/fe_io/nastran/nastran_builder.h"
 
 namespace flexmb::io::nastran {
 
 using fe::Mat3;
 using fe::Vec3;
+
+namespace {
+
+// the rows of fe/element_traits.h read from Nastran card `card`
+std::vector<const fe::ElementTraits*> NastranRows(const std::string& card) {
+  std::vector<const fe::ElementTraits*> rows;
+  for (const fe::ElementTraits& t : fe::AllElementTraits())
+    for (const char* c : t.nastran_cards)
+      if (card == c) rows.push_back(&t);
+  return rows;
+}
+
+}  // namespace
 
 fe::Element Builder::NewElement(const Entry& e, fe::ElementType type) {
   fe::Element el;
@@ -33,9 +48,9 @@ void Builder::ReadNodes(const Entry& e, fe::Element& el, int first, int count) {
 }
 
 void Builder::AddShell(const Entry& e) {
-  const bool quad = e.name() == "CQUAD4";
-  fe::Element el = NewElement(e, quad ? fe::ElementType::kQuad4 : fe::ElementType::kTria3);
-  const int nn = quad ? 4 : 3;
+  const fe::ElementTraits& row = *NastranRows(e.name()).front();
+  fe::Element el = NewElement(e, row.type);
+  const int nn = row.nodes;
   const int pid = e.Int(2, "PID", el.id);
   el.property = PropertyIndex(e, 2, pid, {"PSHELL"});
   ReadNodes(e, el, 3, nn);
@@ -62,30 +77,37 @@ void Builder::AddShell(const Entry& e) {
   mesh_.elements.push_back(std::move(el));
 }
 
+// a solid card is the row whose node count it gives; its grid points in the
+// row's Nastran order
 void Builder::AddSolid(const Entry& e) {
-  const bool tet = e.name() == "CTETRA";
-  const int max_nodes = tet ? 10 : 20;
+  const std::vector<const fe::ElementTraits*> rows = NastranRows(e.name());
+  const int max_nodes = rows.front()->nastran_card_grids;
   int given = 0;
   for (int k = 0; k < max_nodes; ++k) given += e.Blank(3 + k) ? 0 : 1;
-  fe::ElementType type = fe::ElementType::kHex8;
-  if (tet) {
-    if (given != 4 && given != 10)
-      e.Fail("CTETRA with " + std::to_string(given) + " grid points: only 4 or 10 are supported");
-    type = given == 4 ? fe::ElementType::kTet4 : fe::ElementType::kTet10;
-  } else if (given != 8) {
-    e.Fail("CHEXA with " + std::to_string(given) +
-                   " grid points: only 8 are supported (20-node CHEXA is unsupported)");
+  const fe::ElementTraits* row = nullptr;
+  std::string counts;
+  for (const fe::ElementTraits* t : rows) {
+    if (t->nodes == given) row = t;
+    if (!counts.empty()) counts += " or ";
+    counts += std::to_string(t->nodes);
   }
+  if (row == nullptr)
+    e.Fail(e.name() + " with " + std::to_string(given) + " grid points: only " + counts + " are supported (" +
+           std::to_string(given) + "-node " + e.name() + " is unsupported)");
   if (e.Size() > 2 + max_nodes) e.Fail(3 + max_nodes, "unexpected field");
-  fe::Element el = NewElement(e, type);
+  fe::Element el = NewElement(e, row->type);
   el.property = PropertyIndex(e, 2, e.Id(2, "PID"), {"PSOLID"});
-  ReadNodes(e, el, 3, fe::NodeCount(type));
+  ReadNodes(e, el, 3, row->nodes);
+  if (!row->nastran_order.empty()) {
+    const std::vector<int> card = el.nodes;
+    for (int k = 0; k < row->nodes; ++k) el.nodes[k] = card[fe::FormatNode(row->nastran_order, k)];
+  }
   mesh_.elements.push_back(std::move(el));
 }
 
 void Builder::AddBeam(const Entry& e) {
   const bool bar = e.name() == "CBAR";
-  fe::Element el = NewElement(e, fe::ElementType::kBeam2);
+  fe::Element el = NewElement(e, NastranRows(e.name()).front()->type);
   const Card* def_card = bar ? baror_ : beamor_;
   std::optional<Entry> defaults;
   if (def_card) defaults.emplace(*def_card, deck_);

@@ -10,6 +10,7 @@
 
 #include "flexmb/common/error.h"
 #include "flexmb/common/log.h"
+#include "flexmb/fe/element_traits.h"
 #include "flexmb/fe_io/nastran/nastran_builder.h"
 #include "flexmb/fe_io/nastran/nastran_fields.h"
 
@@ -29,12 +30,14 @@ const std::map<std::string, Phase>& Phases() {
         {Phase::kMaterials, {"MAT1", "MAT2", "MAT3", "MAT8", "MAT9", "MAT10", "MAT11"}},
         {Phase::kGrids, {"GRID"}},
         {Phase::kProperties, {"PSHELL", "PBAR", "PBARL", "PBEAM", "PBEAML", "PSOLID"}},
-        {Phase::kElements, {"CQUAD4", "CTRIA3", "CBAR", "CBEAM", "CTETRA", "CHEXA"}},
         {Phase::kLinks, {"RBE2", "CONM2"}},
         {Phase::kSets, {"SPC1", "SPC", "ASET", "ASET1", "BSET", "BSET1", "SET1"}}};
     std::map<std::string, Phase> m;
     for (const auto& [phase, names] : groups)
       for (const char* n : names) m.emplace(n, phase);
+    // the element cards of fe/element_traits.h
+    for (const fe::ElementTraits& t : fe::AllElementTraits())
+      for (const char* n : t.nastran_cards) m.emplace(n, Phase::kElements);
     return m;
   }();
   return kPhases;
@@ -44,7 +47,7 @@ const std::map<std::string, Phase>& Phases() {
 const std::set<std::string> kSilent = {"PARAM", "EIGRL", "EIGR", "SPCADD"};
 
 // cards that would change stiffness or mass: reading on without them would
-// give a wrong model
+// give a wrong model (the element cards of fe/element_traits.h come first)
 const std::set<std::string> kUnsupported = {
     "CROD",   "CONROD", "CTUBE",   "CBUSH",   "CBUSH1D", "CBUSH2D", "CELAS1", "CELAS2",
     "CELAS3", "CELAS4", "CGAP",    "CQUAD",   "CQUAD8",  "CQUADR",  "CTRIA6", "CTRIAR",
@@ -112,9 +115,13 @@ void Builder::Dispatch(const Entry& e) {
   if (n == "GRDSET" || n == "BAROR" || n == "BEAMOR") return AddDefaults(e);
   if (n.rfind("MAT", 0) == 0) return AddMaterial(e);
   if (n == "GRID") return AddGrid(e);
-  if (n == "CQUAD4" || n == "CTRIA3") return AddShell(e);
-  if (n == "CBAR" || n == "CBEAM") return AddBeam(e);
-  if (n == "CTETRA" || n == "CHEXA") return AddSolid(e);
+  for (const fe::ElementTraits& t : fe::AllElementTraits())
+    for (const char* card : t.nastran_cards)
+      if (n == card) {
+        if (t.family == fe::ElementFamily::kShell) return AddShell(e);
+        if (t.family == fe::ElementFamily::kBeam) return AddBeam(e);
+        return AddSolid(e);
+      }
   if (n == "RBE2") return AddRbe2(e);
   if (n == "CONM2") return AddConm2(e);
   if (n == "SPC1" || n == "SPC") return AddSpc(e);

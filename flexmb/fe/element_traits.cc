@@ -1,0 +1,266 @@
+#include "flexmb/fe/element_traits.h"
+
+#include <string>
+
+#include "flexmb/common/error.h"
+#include "flexmb/fe/elements/beam2.h"
+#include "flexmb/fe/elements/shell_quad4.h"
+#include "flexmb/fe/elements/shell_tria3.h"
+#include "flexmb/fe/elements/solid_hex8.h"
+#include "flexmb/fe/elements/solid_tet10.h"
+#include "flexmb/fe/elements/solid_tet4.h"
+#include "flexmb/fe/elements/solid_wedge15.h"
+#include "flexmb/fe/elements/solid_wedge6.h"
+
+namespace flexmb::fe {
+namespace {
+
+// kernels in the table's signatures
+
+template <void (*Geometric)(const ElementInput&, const Eigen::VectorXd&, MatX&)>
+void TraitsGeometric(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG, double*) {
+  Geometric(in, u, KG);
+}
+
+template <void (*Stress)(const ElementInput&, MatX&)>
+void TraitsSolidStress(const ElementInput& in, MatX& S, Eigen::Matrix3d&) {
+  Stress(in, S);
+}
+
+// the beam's prestress is its mean axial force
+void TraitsBeam2Geometric(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG, double* axial_force) {
+  MatX S;
+  Eigen::Matrix3d axes;
+  Beam2SectionForces(in, S, axes);
+  const double N = 0.5 * (S.row(0).dot(u) + S.row(6).dot(u));
+  if (axial_force != nullptr) *axial_force = N;
+  Beam2GeometricStiffness(in, N, KG);
+}
+
+void TraitsHex8Matrices(const ElementInput& in, MatX& K, MatX& M) { SolidHex8Matrices(in, K, M); }
+void TraitsWedge6Matrices(const ElementInput& in, MatX& K, MatX& M) { SolidWedge6Matrices(in, K, M); }
+void TraitsWedge15Matrices(const ElementInput& in, MatX& K, MatX& M) { SolidWedge15Matrices(in, K, M); }
+
+// Nastran cards
+constexpr const char* kTraitsCquad4[] = {"CQUAD4"};
+constexpr const char* kTraitsCtria3[] = {"CTRIA3"};
+constexpr const char* kTraitsCbar[] = {"CBAR", "CBEAM"};
+constexpr const char* kTraitsCtetra[] = {"CTETRA"};
+constexpr const char* kTraitsChexa[] = {"CHEXA"};
+constexpr const char* kTraitsCpenta[] = {"CPENTA"};
+
+// Abaqus names
+constexpr AbaqusName kTraitsS4[] = {{"S4"}, {"S4R"}, {"S4R5"}};
+constexpr AbaqusName kTraitsS3[] = {{"S3"}, {"S3R"}, {"STRI3"}};
+constexpr AbaqusName kTraitsB31[] = {{"B31"},
+                                     {"B31H"},
+                                     {"B31R"},
+                                     {"B33", AbaqusVariant::kEulerBernoulli},
+                                     {"B33H", AbaqusVariant::kEulerBernoulli}};
+constexpr AbaqusName kTraitsC3D4[] = {{"C3D4"}};
+constexpr AbaqusName kTraitsC3D10[] = {{"C3D10"}};
+constexpr const char* kTraitsOtherHexNote =
+    "read as flexmb's 8-node hexahedron with incompatible modes (like C3D8I); the formulation differs";
+constexpr AbaqusName kTraitsC3D8[] = {{"C3D8I"},
+                                      {"C3D8", AbaqusVariant::kOther, kTraitsOtherHexNote},
+                                      {"C3D8R", AbaqusVariant::kOther, kTraitsOtherHexNote}};
+constexpr AbaqusName kTraitsC3D6[] = {{"C3D6"}};
+constexpr AbaqusName kTraitsC3D15[] = {{"C3D15"}};
+
+// Abaqus faces (element-based surfaces); a shell's both sides are all its nodes
+constexpr AbaqusFace kTraitsQuadFaces[] = {
+    {"SPOS", 4, {1, 2, 3, 4}}, {"SNEG", 4, {1, 2, 3, 4}}, {"S1", 4, {1, 2, 3, 4}}, {"S2", 4, {1, 2, 3, 4}}};
+constexpr AbaqusFace kTraitsTriaFaces[] = {
+    {"SPOS", 3, {1, 2, 3}}, {"SNEG", 3, {1, 2, 3}}, {"S1", 3, {1, 2, 3}}, {"S2", 3, {1, 2, 3}}};
+constexpr AbaqusFace kTraitsTet4Faces[] = {
+    {"S1", 3, {1, 2, 3}}, {"S2", 3, {1, 4, 2}}, {"S3", 3, {2, 4, 3}}, {"S4", 3, {3, 4, 1}}};
+constexpr AbaqusFace kTraitsTet10Faces[] = {{"S1", 6, {1, 2, 3, 5, 6, 7}},
+                                            {"S2", 6, {1, 4, 2, 8, 9, 5}},
+                                            {"S3", 6, {2, 4, 3, 9, 10, 6}},
+                                            {"S4", 6, {3, 4, 1, 10, 8, 7}}};
+constexpr AbaqusFace kTraitsHexFaces[] = {{"S1", 4, {1, 2, 3, 4}}, {"S2", 4, {5, 8, 7, 6}},
+                                          {"S3", 4, {1, 5, 6, 2}}, {"S4", 4, {2, 6, 7, 3}},
+                                          {"S5", 4, {3, 7, 8, 4}}, {"S6", 4, {4, 8, 5, 1}}};
+constexpr AbaqusFace kTraitsWedge6Faces[] = {{"S1", 3, {1, 2, 3}},
+                                             {"S2", 3, {4, 6, 5}},
+                                             {"S3", 4, {1, 4, 5, 2}},
+                                             {"S4", 4, {2, 5, 6, 3}},
+                                             {"S5", 4, {3, 6, 4, 1}}};
+constexpr AbaqusFace kTraitsWedge15Faces[] = {{"S1", 6, {1, 2, 3, 7, 8, 9}},
+                                              {"S2", 6, {4, 6, 5, 12, 11, 10}},
+                                              {"S3", 8, {1, 4, 5, 2, 13, 10, 14, 7}},
+                                              {"S4", 8, {2, 5, 6, 3, 14, 11, 15, 8}},
+                                              {"S5", 8, {3, 6, 4, 1, 15, 12, 13, 9}}};
+
+// Nastran CPENTA: vertical edges (G10-G12) before the top ones (G13-G15)
+constexpr int kTraitsNastranWedge15[] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 12, 13, 14, 9, 10, 11};
+
+// gmsh: mid-edge node 9 lies on edge 3-4, 10 on edge 2-4 (flexmb: 2-4, then 3-4)
+constexpr int kTraitsGmshTet10[] = {0, 1, 2, 3, 4, 5, 6, 7, 9, 8};
+// gmsh prism 15: edges 0-1, 0-2, 0-3, 1-2, 1-4, 2-5, 3-4, 3-5, 4-5
+constexpr int kTraitsGmshWedge15[] = {0, 1, 2, 3, 4, 5, 6, 9, 7, 12, 14, 13, 8, 10, 11};
+
+// VTK wedges: the base 0 1 2 turns the other way (its normal points away from 3 4 5)
+constexpr int kTraitsVtkWedge6[] = {0, 2, 1, 3, 5, 4};
+constexpr int kTraitsVtkWedge15[] = {0, 2, 1, 3, 5, 4, 8, 7, 6, 11, 10, 9, 12, 14, 13};
+
+constexpr ElementTraits kTraitsRows[] = {
+    {.type = ElementType::kQuad4,
+     .name = "quad4",
+     .description = "4-node shell",
+     .nodes = 4,
+     .corners = 4,
+     .family = ElementFamily::kShell,
+     .nastran_cards = kTraitsCquad4,
+     .abaqus = kTraitsS4,
+     .abaqus_faces = kTraitsQuadFaces,
+     .gmsh_code = 3,
+     .vtk_code = 9,
+     .body_file_code = 0,
+     .matrices = ShellQuad4Matrices,
+     .stress = ShellQuad4Stress,
+     .geometric_stiffness = TraitsGeometric<ShellQuad4GeometricStiffness>},
+    {.type = ElementType::kTria3,
+     .name = "tria3",
+     .description = "3-node shell",
+     .nodes = 3,
+     .corners = 3,
+     .family = ElementFamily::kShell,
+     .nastran_cards = kTraitsCtria3,
+     .abaqus = kTraitsS3,
+     .abaqus_faces = kTraitsTriaFaces,
+     .gmsh_code = 2,
+     .vtk_code = 5,
+     .body_file_code = 1,
+     .matrices = ShellTria3Matrices,
+     .stress = ShellTria3Stress,
+     .geometric_stiffness = TraitsGeometric<ShellTria3GeometricStiffness>},
+    {.type = ElementType::kBeam2,
+     .name = "beam2",
+     .description = "2-node beam",
+     .nodes = 2,
+     .corners = 2,
+     .family = ElementFamily::kBeam,
+     .nastran_cards = kTraitsCbar,
+     .abaqus = kTraitsB31,
+     .gmsh_code = 1,
+     .vtk_code = 3,
+     .body_file_code = 2,
+     .matrices = Beam2Matrices,
+     .stress = Beam2SectionForces,
+     .geometric_stiffness = TraitsBeam2Geometric},
+    {.type = ElementType::kTet4,
+     .name = "tet4",
+     .description = "4-node tetrahedron",
+     .nodes = 4,
+     .corners = 4,
+     .family = ElementFamily::kSolid,
+     .nastran_cards = kTraitsCtetra,
+     .nastran_card_grids = 10,
+     .abaqus = kTraitsC3D4,
+     .abaqus_faces = kTraitsTet4Faces,
+     .gmsh_code = 4,
+     .vtk_code = 10,
+     .body_file_code = 3,
+     .matrices = SolidTet4Matrices,
+     .stress = TraitsSolidStress<SolidTet4Stress>,
+     .geometric_stiffness = TraitsGeometric<SolidTet4GeometricStiffness>},
+    {.type = ElementType::kTet10,
+     .name = "tet10",
+     .description = "10-node tetrahedron",
+     .nodes = 10,
+     .corners = 4,
+     .family = ElementFamily::kSolid,
+     .nastran_cards = kTraitsCtetra,
+     .nastran_card_grids = 10,
+     .abaqus = kTraitsC3D10,
+     .abaqus_faces = kTraitsTet10Faces,
+     .gmsh_code = 11,
+     .gmsh_order = kTraitsGmshTet10,
+     .vtk_code = 24,
+     .body_file_code = 4,
+     .matrices = SolidTet10Matrices,
+     .stress = TraitsSolidStress<SolidTet10Stress>,
+     .geometric_stiffness = TraitsGeometric<SolidTet10GeometricStiffness>},
+    {.type = ElementType::kHex8,
+     .name = "hex8",
+     .description = "8-node hexahedron",
+     .nodes = 8,
+     .corners = 8,
+     .family = ElementFamily::kSolid,
+     .nastran_cards = kTraitsChexa,
+     .nastran_card_grids = 20,
+     .abaqus = kTraitsC3D8,
+     .abaqus_faces = kTraitsHexFaces,
+     .gmsh_code = 5,
+     .vtk_code = 12,
+     .body_file_code = 5,
+     .matrices = TraitsHex8Matrices,
+     .stress = TraitsSolidStress<SolidHex8Stress>,
+     .geometric_stiffness = TraitsGeometric<SolidHex8GeometricStiffness>},
+    {.type = kWedge6,
+     .name = "wedge6",
+     .description = "6-node wedge",
+     .nodes = 6,
+     .corners = 6,
+     .family = ElementFamily::kSolid,
+     .nastran_cards = kTraitsCpenta,
+     .nastran_card_grids = 15,
+     .abaqus = kTraitsC3D6,
+     .abaqus_faces = kTraitsWedge6Faces,
+     .gmsh_code = 6,
+     .vtk_code = 13,
+     .vtk_order = kTraitsVtkWedge6,
+     .body_file_code = 6,
+     .matrices = TraitsWedge6Matrices,
+     .stress = TraitsSolidStress<SolidWedge6Stress>,
+     .geometric_stiffness = TraitsGeometric<SolidWedge6GeometricStiffness>},
+    {.type = kWedge15,
+     .name = "wedge15",
+     .description = "15-node wedge",
+     .nodes = 15,
+     .corners = 6,
+     .family = ElementFamily::kSolid,
+     .nastran_cards = kTraitsCpenta,
+     .nastran_card_grids = 15,
+     .nastran_order = kTraitsNastranWedge15,
+     .abaqus = kTraitsC3D15,
+     .abaqus_faces = kTraitsWedge15Faces,
+     .gmsh_code = 18,
+     .gmsh_order = kTraitsGmshWedge15,
+     .vtk_code = 26,
+     .vtk_order = kTraitsVtkWedge15,
+     .body_file_code = 7,
+     .matrices = TraitsWedge15Matrices,
+     .stress = TraitsSolidStress<SolidWedge15Stress>,
+     .geometric_stiffness = TraitsGeometric<SolidWedge15GeometricStiffness>},
+};
+
+constexpr bool TraitsRowsInIdOrder() {
+  for (int k = 0; k < static_cast<int>(std::size(kTraitsRows)); ++k)
+    if (static_cast<int>(kTraitsRows[k].type) != k) return false;
+  return true;
+}
+static_assert(TraitsRowsInIdOrder(), "element traits rows must be stored in type id order");
+
+}  // namespace
+
+std::span<const ElementTraits> AllElementTraits() { return kTraitsRows; }
+
+const ElementTraits& Traits(ElementType type) {
+  const int k = static_cast<int>(type);
+  if (k < 0 || k >= static_cast<int>(std::size(kTraitsRows)))
+    throw InputError("unknown element type id " + std::to_string(k));
+  return kTraitsRows[k];
+}
+
+const char* FamilyName(ElementFamily family) {
+  switch (family) {
+    case ElementFamily::kShell: return "shell";
+    case ElementFamily::kBeam: return "beam";
+    case ElementFamily::kSolid: return "solid";
+  }
+  return "";
+}
+
+}  // namespace flexmb::fe
