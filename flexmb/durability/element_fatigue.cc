@@ -36,33 +36,31 @@ ElementResults AnalyzeElements(StressRecovery& rec, const FatigueOptions& opt) {
   out.range.assign(ne, 0.0);
   out.damage.assign(ne, 0.0);
   out.damage_point.assign(ne, 0);
-  std::vector<double> counted(nt), reversals, stack;
+  std::vector<double> reversals, stack;
+  PointHistory h;
   for (int k0 = 0; k0 < ne; k0 += opt.block) {
     const int count = std::min(opt.block, ne - k0);
     rec.Recover(k0, count);
     for (int k = k0; k < k0 + count; ++k) {
       for (int p = 0; p < np; ++p) {
-        // one pass: extremes, and the counted measure's history
-        double lo = inf, hi = -inf;
-        for (int r = 0; r < nt; ++r) {
-          const PointStress s = rec.At(k, p, r);
-          if (s.von_mises > out.max_von_mises[k]) {
-            out.max_von_mises[k] = s.von_mises;
-            out.max_von_mises_instant[k] = r;
-            out.max_von_mises_point[k] = p;
-          }
-          out.min_signed_von_mises[k] = std::min(out.min_signed_von_mises[k], s.signed_von_mises);
-          out.max_signed_von_mises[k] = std::max(out.max_signed_von_mises[k], s.signed_von_mises);
-          out.max_principal[k] = std::max(out.max_principal[k], s.max_principal);
-          out.min_principal[k] = std::min(out.min_principal[k], s.min_principal);
-          const double v = s.Get(opt.measure);
-          counted[r] = v;
-          lo = std::min(lo, v);
-          hi = std::max(hi, v);
+        // all measures over the instants, then their extremes
+        rec.Histories(k, p, h);
+        if (nt == 0) continue;
+        Eigen::Index at = 0;
+        const double vm = h.von_mises.maxCoeff(&at);
+        if (vm > out.max_von_mises[k]) {
+          out.max_von_mises[k] = vm;
+          out.max_von_mises_instant[k] = static_cast<int>(at);
+          out.max_von_mises_point[k] = p;
         }
-        if (nt > 0) out.range[k] = std::max(out.range[k], hi - lo);
+        out.min_signed_von_mises[k] = std::min(out.min_signed_von_mises[k], h.signed_von_mises.minCoeff());
+        out.max_signed_von_mises[k] = std::max(out.max_signed_von_mises[k], h.signed_von_mises.maxCoeff());
+        out.max_principal[k] = std::max(out.max_principal[k], h.max_principal.maxCoeff());
+        out.min_principal[k] = std::min(out.min_principal[k], h.min_principal.minCoeff());
+        const Eigen::ArrayXd& counted = h.Get(opt.measure);
+        out.range[k] = std::max(out.range[k], counted.maxCoeff() - counted.minCoeff());
         if (!opt.curve) continue;
-        const double d = MinerDamage(counted.data(), nt, *opt.curve, opt.mean_stress, reversals, stack);
+        const double d = MinerDamage(h.Get(opt.measure).data(), nt, *opt.curve, opt.mean_stress, reversals, stack);
         if (d > out.damage[k]) {
           out.damage[k] = d;
           out.damage_point[k] = p;

@@ -37,6 +37,17 @@ double PointStress::Get(StressMeasure m) const {
   return 0.0;
 }
 
+const Eigen::ArrayXd& PointHistory::Get(StressMeasure m) const {
+  switch (m) {
+    case StressMeasure::kVonMises: return von_mises;
+    case StressMeasure::kSignedVonMises: return signed_von_mises;
+    case StressMeasure::kMaxPrincipal: return max_principal;
+    case StressMeasure::kMinPrincipal: return min_principal;
+    case StressMeasure::kMaxAbsPrincipal: break;
+  }
+  return max_abs_principal;
+}
+
 PointStress PlaneStressMeasures(double sxx, double syy, double sxy) {
   PointStress p;
   const double c = 0.5 * (sxx + syy), d = 0.5 * (sxx - syy);
@@ -45,7 +56,7 @@ PointStress PlaneStressMeasures(double sxx, double syy, double sxy) {
   p.min_principal = c - r;
   p.max_abs_principal = std::abs(p.max_principal) >= std::abs(p.min_principal) ? p.max_principal : p.min_principal;
   // von Mises of the plane state: s1^2 - s1 s2 + s2^2 = c^2 + 3 r^2
-  p.von_mises = std::sqrt(c * c + 3.0 * r * r);
+  p.von_mises = std::sqrt(c * c + 3.0 * (r * r));
   p.signed_von_mises = p.max_abs_principal < 0 ? -p.von_mises : p.von_mises;
   return p;
 }
@@ -112,6 +123,38 @@ PointStress StressRecovery::At(int k, int p, int r) const {
   double s[6];
   for (int c = 0; c < 6; ++c) s[c] = Column(k, 0, c)[r];
   return SolidStressMeasures(s);
+}
+
+void StressRecovery::Histories(int k, int p, PointHistory& h) const {
+  const Eigen::Index n = Instants();
+  for (Eigen::ArrayXd* a : {&h.von_mises, &h.signed_von_mises, &h.max_principal, &h.min_principal,
+                            &h.max_abs_principal})
+    if (a->size() != n) a->resize(n);
+  if (!shell_) {
+    for (Eigen::Index r = 0; r < n; ++r) {
+      const PointStress s = At(k, p, static_cast<int>(r));
+      h.von_mises(r) = s.von_mises;
+      h.signed_von_mises(r) = s.signed_von_mises;
+      h.max_principal(r) = s.max_principal;
+      h.min_principal(r) = s.min_principal;
+      h.max_abs_principal(r) = s.max_abs_principal;
+    }
+    return;
+  }
+  // plane stress as array expressions over the instants
+  using Map = Eigen::Map<const Eigen::ArrayXd>;
+  Eigen::ArrayXd* comp[3] = {&sxx_, &syy_, &sxy_};
+  for (int c = 0; c < 3; ++c) {
+    if (p == 1) *comp[c] = 0.5 * (Map(Column(k, 0, c), n) + Map(Column(k, 1, c), n));
+    else *comp[c] = Map(Column(k, p == 0 ? 0 : 1, c), n);
+  }
+  c_ = 0.5 * (sxx_ + syy_);
+  r_ = ((0.5 * (sxx_ - syy_)).square() + sxy_.square()).sqrt();
+  h.max_principal = c_ + r_;
+  h.min_principal = c_ - r_;
+  h.von_mises = (c_.square() + 3.0 * r_.square()).sqrt();
+  h.max_abs_principal = (h.max_principal.abs() >= h.min_principal.abs()).select(h.max_principal, h.min_principal);
+  h.signed_von_mises = (h.max_abs_principal < 0.0).select(-h.von_mises, h.von_mises);
 }
 
 void StressRecovery::History(int k, int p, StressMeasure m, double* out) const {

@@ -49,6 +49,14 @@ PointStress PlaneStressMeasures(double sxx, double syy, double sxy);
 /// Measures of a 3-D stress state (sxx, syy, szz, sxy, syz, szx).
 PointStress SolidStressMeasures(const double* s);
 
+/// All measures of one recovery point over the instants [Pa] (arrays of
+/// Instants() entries; resized on first use, then reused).
+struct PointHistory {
+  Eigen::ArrayXd von_mises, signed_von_mises, max_principal, min_principal, max_abs_principal;
+  /// The array of measure m.
+  const Eigen::ArrayXd& Get(StressMeasure m) const;
+};
+
 /// Batched recovery of one shell or solid table; see the file comment.
 class StressRecovery {
  public:
@@ -73,6 +81,9 @@ class StressRecovery {
   void Recover(int k0, int count);
   /// The measures of point p of element k (of the last Recover) at instant r.
   PointStress At(int k, int p, int r) const;
+  /// Every measure at point p of element k (of the last Recover) at all
+  /// instants into h (shells: array expressions over the instants).
+  void Histories(int k, int p, PointHistory& h) const;
   /// History of measure m at point p of element k (of the last Recover)
   /// into out[0 .. Instants()).
   void History(int k, int p, StressMeasure m, double* out) const;
@@ -85,6 +96,7 @@ class StressRecovery {
 
   const reduction::StressTable& table_;
   bool shell_ = false;
+  mutable Eigen::ArrayXd sxx_, syy_, sxy_, c_, r_;  // scratch of Histories
   Eigen::MatrixXd wt_;      // T x n
   Eigen::MatrixXd values_;  // T x (count * locations * components)
   int k0_ = 0, count_ = 0;
