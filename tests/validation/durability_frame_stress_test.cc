@@ -13,9 +13,12 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <numeric>
 
 #include "flexmb/durability/element_fatigue.h"
+#include "flexmb/durability/modal_history.h"
+#include "flexmb/io/body_file.h"
 #include "flexmb/fe/assembly.h"
 #include "flexmb/fe/sparse_cholesky.h"
 #include "flexmb/reduction/stress_modes.h"
@@ -135,6 +138,39 @@ TEST(DurabilityFrameStress, MountLoadsRecoveredFromStaticModesMatchFullFe) {
   const StressFixture f = MakeStressFixture(body->mesh);
   ASSERT_EQ(f.seats.size(), 4u);
   EXPECT_LT(HotSpotError(*body, f, 0), 0.02);
+}
+
+// the elastic truck's lane change keeps the frame's modal coordinates; the
+// stresses recovered from them afterwards give the run's own frame maximum
+// (FrameResponse of lane_change_test.cc, evaluated during the run): same
+// value, element and time
+TEST(DurabilityFrameStress, LaneChangeModalCoordinatesGiveTheRunsFrameMaximum) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "flexmb_durability_lane_change";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  LaneChangeOptions o;
+  o.file = TruckFile();
+  o.out_dir = dir.string();
+  o.frame = "elastic";
+  o.speed_kmh = 55.0;
+  o.stop_distance = 50.0;
+  const LaneChangeResult r = RunLaneChange(o);
+  ASSERT_TRUE(r.completed) << r.message;
+  const durability::ModalHistory h = durability::ReadRunModalHistory(dir.string());
+  const int b = h.Body("frame");
+  const reduction::ReducedBody body = io::ReadBody(h.bodies[static_cast<size_t>(b)].body_file);
+  durability::StressRecovery rec(body.stress.shell, h.coordinates[static_cast<size_t>(b)]);
+  const durability::ElementResults e = durability::AnalyzeElements(rec, durability::FatigueOptions{});
+  const auto k = std::max_element(e.max_von_mises.begin(), e.max_von_mises.end()) - e.max_von_mises.begin();
+  const int element = body.mesh.elements[static_cast<size_t>(body.stress.shell.elements[static_cast<size_t>(k)])].id;
+  const double t = h.times[static_cast<size_t>(e.max_von_mises_instant[static_cast<size_t>(k)])];
+  std::printf("run: %.4f MPa in element %d at %.3f s; post: %.4f MPa in element %d at %.3f s (%zu instants)\n",
+              r.max_frame_stress * 1e-6, r.max_stress_element, r.max_stress_time, e.max_von_mises[static_cast<size_t>(k)] * 1e-6,
+              element, t, h.times.size());
+  EXPECT_NEAR(e.max_von_mises[static_cast<size_t>(k)], r.max_frame_stress, 1e-9 * r.max_frame_stress);
+  EXPECT_EQ(element, r.max_stress_element);
+  EXPECT_EQ(t, r.max_stress_time);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace durability_frame_stress_test
