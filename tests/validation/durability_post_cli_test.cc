@@ -131,6 +131,37 @@ TEST_F(DurabilityPostCli, HistoriesEqualTheRunsStressSensorAndFilesAgree) {
   EXPECT_NE(vtu.find("NumberOfCells=\"40\""), std::string::npos);
 }
 
+// S-N options against each other, element by element: the Basquin line
+// m = 3 through the category's point (no knee, no cut-off) lies below the
+// EN 1993-1-9 curve everywhere, so it does at least its damage; Goodman never
+// lowers a range (compressive means are left as they are), so it does at
+// least the uncorrected damage, and more where means are tensile
+TEST_F(DurabilityPostCli, SnOptionsOrderTheDamage) {
+  RunStrip();
+  auto damage = [&](const std::string& options, const std::string& out) {
+    const CliResult r = RunCli(dir_, "post res --body strip -o " + out + " " + options);
+    EXPECT_EQ(r.code, 0) << options << "\n" << r.err;
+    const PostCsv c = ReadPostCsv(dir_ / out / "elements.csv");
+    std::vector<double> d;
+    for (const auto& row : c.rows) d.push_back(row[c.Column("damage")]);
+    return d;
+  };
+  const std::vector<double> en = damage("--sn en1993-71", "en");
+  const std::vector<double> basquin = damage("--sn-basquin 71e6,2e6,3", "basquin");
+  const std::vector<double> goodman = damage("--sn en1993-71 --mean-stress goodman --ultimate 400e6", "goodman");
+  ASSERT_EQ(en.size(), 40u);
+  ASSERT_EQ(basquin.size(), en.size());
+  ASSERT_EQ(goodman.size(), en.size());
+  int more = 0;
+  for (size_t i = 0; i < en.size(); ++i) {
+    EXPECT_GE(basquin[i], en[i] * (1 - 1e-12)) << i;
+    EXPECT_GE(goodman[i], en[i] * (1 - 1e-12)) << i;
+    more += goodman[i] > en[i] * (1 + 1e-6);
+  }
+  EXPECT_GT(*std::max_element(en.begin(), en.end()), 0.0);
+  EXPECT_GT(more, 0);
+}
+
 TEST_F(DurabilityPostCli, BadInputIsNamed) {
   RunStrip();
   auto fails = [&](const std::string& args, const std::vector<std::string>& parts) {
@@ -146,6 +177,8 @@ TEST_F(DurabilityPostCli, BadInputIsNamed) {
   fails("post res --body strip --sn-file sn.csv", {"sn.csv:2", "not monotonic"});
   fails("post res --body strip --sn en1993-99", {"unknown S-N curve preset 'en1993-99'", "en1993-71"});
   fails("post res --body strip --measure tresca", {"unknown stress measure 'tresca'"});
+  fails("post res --body strip --mean-stress goodman", {"ultimate strength"});
+  fails("post res --body strip --sn en1993-71 --sn-basquin 71e6,2e6,3", {"give one S-N curve"});
 }
 
 }  // namespace durability_post_cli_test
