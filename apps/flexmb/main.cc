@@ -19,6 +19,7 @@
 #include "apps/flexmb/commands/reduce_commands.h"
 #include "apps/flexmb/commands/run.h"
 #include "apps/flexmb/commands/lane_change.h"
+#include "apps/flexmb/commands/post_command.h"
 
 namespace {
 
@@ -175,6 +176,25 @@ int main(int argc, char** argv) {
   body_info->add_option("file", body_info_opt.body_path, "body file (.h5)")->required();
   body_info->add_flag("--json", body_info_opt.json, "print one JSON object instead of text");
 
+  flexmb::commands::PostOptions post_opt;
+  CLI::App* post = app.add_subcommand("post", "stresses, hot spots and fatigue damage of a flexible body of a run");
+  post->add_option("dir", post_opt.run_dir, "run folder (holds modal_coordinates.bin)")->required();
+  post->add_option("--body", post_opt.body, "flexible body name")->required();
+  post->add_option("--out,-o", post_opt.out_dir, "output folder (default DIR/post_BODY)");
+  post->add_option("--top", post_opt.top, "hot spots listed (default 10)");
+  post->add_option("--measure", post_opt.measure,
+                   "counted stress: max_abs_principal (default), signed_von_mises, von_mises, max_principal, min_principal");
+  post->add_option("--sn", post_opt.sn, "S-N preset, e.g. en1993-71 (EN 1993-1-9 detail category)");
+  post->add_option("--sn-file", post_opt.sn_file, "S-N table: CSV of cycles, range [Pa]");
+  post->add_option("--sn-basquin", post_opt.sn_basquin, "S_ref[Pa],N_ref,m1[,N_knee,m2[,N_cut]]")->delimiter(',');
+  post->add_option("--mean-stress", post_opt.mean_stress, "none (default), goodman, fkm");
+  post->add_option("--ultimate", post_opt.ultimate, "Goodman: ultimate strength [Pa]");
+  post->add_option("--sensitivity", post_opt.sensitivity, "FKM: mean-stress sensitivity M");
+  post->add_option("--distance-km", post_opt.distance_km, "distance of the run [km]: damage per 1000 km, life in km");
+  post->add_option("--element", post_opt.elements, "element id: stress history to CSV (repeatable)");
+  post->add_option("--node", post_opt.nodes, "node id: elastic displacement history to CSV (repeatable)");
+  post->add_flag("--json", post_opt.json, "print one JSON object instead of text");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -210,6 +230,7 @@ int main(int argc, char** argv) {
   if (info->parsed()) return Guarded([&] { return flexmb::io::FeInfo(info_opt, std::cout); });
   if (fe_export->parsed()) return Guarded([&] { return flexmb::io::FeExport(export_opt, std::cout); });
   if (reduce->parsed()) return Guarded([&] { return flexmb::io::Reduce(reduce_opt, std::cout); });
+  if (post->parsed()) return Guarded([&] { return flexmb::commands::Post(post_opt, std::cout); });
   if (body_info->parsed()) return Guarded([&] { return flexmb::io::BodyInfo(body_info_opt, std::cout); });
   return Guarded([&] {
     if (flexmb::vehicle::IsLaneChangeFile(model)) {

@@ -18,6 +18,7 @@
 #include "flexmb/common/error.h"
 #include "flexmb/body_file/body_file.h"
 #include "flexmb/common/json_text.h"
+#include "flexmb/durability/modal_history.h"
 #include "flexmb/model_file/solver_section.h"
 #include "flexmb/yaml/yaml_context.h"
 #include "apps/flexmb/commands/run.h"
@@ -458,6 +459,9 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
   double next_row = 0.0;
   const Body* frame_body = model.bodies[h.frame_body].get();
   const Marker& frame_ref = model.markers[static_cast<size_t>(h.frame_ref)];
+  // elastic frame: its modal coordinates at every row, for "flexmb post"
+  std::unique_ptr<durability::ModelModalHistory> modal;
+  if (!opt.out_dir.empty() && h.elastic) modal = std::make_unique<durability::ModelModalHistory>(opt.out_dir, model);
   FrameResponse frame_response(h.elastic ? static_cast<const FlexibleBody*>(frame_body) : nullptr, csv);
   char line[FrameResponse::kRowChars];
   r.frame_modal_coordinates = h.elastic ? f.truck.elastic_frame->invariants.n : 0;
@@ -532,6 +536,7 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
       }
       // elastic frame: deflection and stress hot spot at the output times
       // (the row waits for its frame columns in the batch)
+      if (row && modal) modal->Write(st);
       if (row && frame_response.active())
         frame_response.Add(st.t, st.q.data() + frame_body->q_offset, record, csv ? line : nullptr, r);
       if (animation) {

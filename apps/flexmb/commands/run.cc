@@ -9,6 +9,7 @@
 
 #include "flexmb/common/error.h"
 #include "flexmb/common/log.h"
+#include "flexmb/durability/modal_history.h"
 #include "flexmb/model_file/model_file.h"
 #include "flexmb/results/progress.h"
 #include "flexmb/results/results_writer.h"
@@ -85,6 +86,7 @@ void Simulate(const RunOptions& opt, RunSummary& s, std::unique_ptr<Model>& mode
 
   const std::filesystem::path dir(opt.out_dir);
   ResultsWriter results((dir / "results.csv").string(), *model);
+  durability::ModelModalHistory modal(dir.string(), *model);
   const OutputSettings& out = model->output;
   std::unique_ptr<VtkAnimationWriter> anim;
   if (out.animation || opt.animation)
@@ -122,7 +124,10 @@ void Simulate(const RunOptions& opt, RunSummary& s, std::unique_ptr<Model>& mode
   sim->Run(t_end, interval, [&](const State& st, const Workspace& ws) {
     if (opt.interrupt && *opt.interrupt) throw Interrupted{};
     const bool last = st.t >= t_end - eps;
-    if (rows.Due(st.t) || last) results.Write(st, ws);
+    if (rows.Due(st.t) || last) {
+      results.Write(st, ws);
+      modal.Write(st);
+    }
     if (anim && (frames.Due(st.t) || last)) anim->WriteFrame(st);
     s.t_end = st.t;
     s.rows = results.rows();
