@@ -293,7 +293,7 @@ void ParseSolver(const YAML::Node& node, ParseContext& ctx) {
   ctx.SetEntity("solver");
   ctx.CheckKeys(node, {"t_end", "dt", "dt_min", "dt_max", "rho_inf", "adaptive", "rtol", "atol",
                        "newton_tol", "max_newton", "geometric_stiffness", "assembly_tol",
-                       "redundancy_tol", "jacobian_reuse", "jacobian_reuse_rate"});
+                       "redundancy_tol", "jacobian_reuse", "jacobian_reuse_rate", "analysis"});
   SolverSettings& s = ctx.model().solver;
   auto positive = [&](const char* key, double fallback) {
     const double x = ctx.Double(node, key, fallback);
@@ -325,6 +325,13 @@ void ParseSolver(const YAML::Node& node, ParseContext& ctx) {
   s.assembly_tol = positive("assembly_tol", s.assembly_tol);
   s.redundancy_tol = positive("redundancy_tol", s.redundancy_tol);
   if (s.redundancy_tol >= 1.0) ctx.Fail(node["redundancy_tol"], "'redundancy_tol' must be below 1");
+  if (node["analysis"]) {
+    const std::string a = ctx.String(node, "analysis", "dynamics");
+    if (a == "dynamics") s.analysis = Analysis::kDynamics;
+    else if (a == "statics") s.analysis = Analysis::kStatics;
+    else if (a == "statics_then_dynamics") s.analysis = Analysis::kStaticsThenDynamics;
+    else ctx.Fail(node["analysis"], "'analysis' must be dynamics, statics or statics_then_dynamics, got " + a);
+  }
 }
 
 void ParseOutput(const YAML::Node& node, ParseContext& ctx) {

@@ -80,6 +80,8 @@ void Simulate(const RunOptions& opt, RunSummary& s, std::unique_ptr<Model>& mode
               std::unique_ptr<Simulator>& sim, Clock::time_point& t_start) {
   model = LoadModelFile(opt.model_path);
   s.model_name = model->name;
+  if (model->solver.analysis == Analysis::kStatics)
+    throw InputError("solver.analysis is 'statics': a static solve, not a time integration (flexmb statics)");
   if (opt.t_end) {
     if (!(*opt.t_end > 0) || !std::isfinite(*opt.t_end))
       throw InputError("--t-end must be a positive number of seconds");
@@ -110,6 +112,13 @@ void Simulate(const RunOptions& opt, RunSummary& s, std::unique_ptr<Model>& mode
     s.dof = rep.dof;
     s.constraint_equations = rep.equations;
     s.redundant_constraints = static_cast<int>(rep.redundant.size());
+  }
+  if (model->solver.analysis == Analysis::kStaticsThenDynamics) {
+    // start from the static equilibrium at t0 (drivers at their t0 values)
+    const StaticsResult st = sim->SettleStatics();
+    if (opt.info)
+      std::fprintf(opt.info, "static equilibrium at t = %g s: %d load increments, %d Newton iterations\n",
+                   sim->state().t, st.increments, st.iterations);
   }
   s.t_end = sim->state().t;
   if (opt.err)

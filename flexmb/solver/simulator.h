@@ -10,6 +10,7 @@
 #include "flexmb/model/workspace.h"
 #include "flexmb/solver/generalized_alpha.h"
 #include "flexmb/solver/initial_conditions.h"
+#include "flexmb/solver/statics.h"
 
 namespace flexmb {
 
@@ -30,6 +31,12 @@ class Simulator {
   /// every `output_interval` [s] (0: every step). Throws NumericalError naming
   /// the joint or body at fault when the step size falls below dt_min.
   void Run(double t_end, double output_interval, const Observer& observer);
+
+  /// Moves the (initialized) current state to its static equilibrium at its
+  /// time (SolveStatics, velocities zero) and restarts the integrator from
+  /// there (accelerations and multipliers of the new state). Throws
+  /// NumericalError as SolveStatics; the state is then unchanged in time.
+  StaticsResult SettleStatics(const StaticsSettings& settings = {});
 
   /// Evaluates the workspace at the current state (markers, constraints,
   /// forces) so that sensors can read it.
