@@ -17,6 +17,18 @@
 namespace flexmb::cli {
 namespace {
 
+// a warning when the state `what` moves (accelerations a or velocities)
+void ModesWarnIfMoving(const AnalysisModel& am, const VecX& a, const std::string& what,
+                       std::vector<std::string>& warnings) {
+  Eigen::Index k = 0;
+  const double amax = a.size() ? a.cwiseAbs().maxCoeff(&k) : 0.0;
+  const double vmax = am.state.v.size() ? am.state.v.cwiseAbs().maxCoeff() : 0.0;
+  if (amax > 1e-6 || vmax > 1e-9)
+    warnings.push_back(what + " is not an equilibrium (largest acceleration " + std::to_string(amax) + " at " +
+                       VelocityCoordinateName(*am.model, static_cast<int>(k)) + ", largest velocity " +
+                       std::to_string(vmax) + "): the modes are those of the tangent system at that state");
+}
+
 // the state to linearize about, in am; its accelerations into a
 void ModesState(const ModesCommandOptions& opt, AnalysisModel& am, VecX& a, std::vector<std::string>& warnings) {
   if (opt.at == "time") {
@@ -32,6 +44,7 @@ void ModesState(const ModesCommandOptions& opt, AnalysisModel& am, VecX& a, std:
     am.ws = sim.workspace();
     am.report = sim.constraints();
     a = am.ws.vdot;
+    ModesWarnIfMoving(am, a, "the state at --time", warnings);
     return;
   }
   if (opt.at != "statics" && opt.at != "initial")
@@ -39,12 +52,7 @@ void ModesState(const ModesCommandOptions& opt, AnalysisModel& am, VecX& a, std:
   LoadAnalysisModel(opt.model_path, opt.time, am, warnings);
   if (opt.at == "initial") {
     a = am.ws.vdot;
-    Eigen::Index k = 0;
-    const double amax = a.size() ? a.cwiseAbs().maxCoeff(&k) : 0.0;
-    if (amax > 1e-6 || (am.state.v.size() && am.state.v.cwiseAbs().maxCoeff() > 1e-9))
-      warnings.push_back("the initial state is not an equilibrium (largest acceleration " + std::to_string(amax) +
-                         " at " + VelocityCoordinateName(*am.model, static_cast<int>(k)) +
-                         "): the modes are those of the tangent system at that state");
+    ModesWarnIfMoving(am, a, "the initial state", warnings);
     return;
   }
   try {
