@@ -13,6 +13,9 @@
 #include <optional>
 #include <string>
 
+#include "apps/flexmb/commands/linearize_command.h"
+#include "apps/flexmb/commands/modes_command.h"
+#include "apps/flexmb/commands/statics_command.h"
 #include "flexmb/common/process_tuning.h"
 #include "flexmb/common/error.h"
 #include "apps/flexmb/commands/fe_commands.h"
@@ -97,6 +100,48 @@ int main(int argc, char** argv) {
   run->add_option("--animation-fps", animation_fps,
                   "lane-change files only: write the animation at this many frames per second of simulated time "
                   "(default: the file's animation_fps, 25)");
+
+  flexmb::cli::StaticsCommandOptions statics_opt;
+  CLI::App* statics = app.add_subcommand("statics", "static equilibrium of a model file (load stepping)");
+  statics->add_option("model", statics_opt.model_path, "model file (YAML)")->required();
+  statics->add_option("--out,-o", statics_opt.out_dir, "output directory")->required();
+  statics->add_option("--time", statics_opt.time, "time at which drivers and loads are evaluated [s] (default 0)");
+  statics->add_flag("--animation", statics_opt.animation, "write anim.pvd, one frame per load step");
+  bool statics_quiet = false;
+  statics->add_flag("--quiet,-q", statics_quiet, "no summary line");
+
+  flexmb::cli::ModesCommandOptions sys_modes_opt;
+  CLI::App* sys_modes = app.add_subcommand("modes", "linearized modes of a model file about a state");
+  sys_modes->add_option("model", sys_modes_opt.model_path, "model file (YAML)")->required();
+  sys_modes->add_option("--out,-o", sys_modes_opt.out_dir, "output directory")->required();
+  sys_modes->add_option("--at", sys_modes_opt.at,
+                        "state: statics (static equilibrium, default), initial (the consistent initial state) "
+                        "or time (simulated to --time)")
+      ->check(CLI::IsMember({"statics", "initial", "time"}));
+  sys_modes->add_option("--time", sys_modes_opt.time,
+                        "with --at time: simulate to this time [s]; otherwise: time of the loads (default 0)");
+  sys_modes->add_option("--count,-n", sys_modes_opt.count, "vibration modes reported, lowest first (default 10)");
+  bool sys_modes_no_anim = false;
+  sys_modes->add_flag("--no-animation", sys_modes_no_anim, "no mode_<k>/anim.pvd animations");
+  sys_modes->add_option("--frames", sys_modes_opt.frames, "animation frames per period (default 24)");
+  sys_modes->add_option("--amplitude", sys_modes_opt.amplitude,
+                        "animation amplitude: largest shape entry [m or rad] (default 0.1)");
+  bool sys_modes_quiet = false;
+  sys_modes->add_flag("--quiet,-q", sys_modes_quiet, "no frequency table");
+
+  flexmb::cli::LinearizeCommandOptions lin_opt;
+  CLI::App* lin = app.add_subcommand("linearize", "state-space model (A, B, C, D) of a model file about a state");
+  lin->add_option("model", lin_opt.model_path, "model file (YAML)")->required();
+  lin->add_option("--out,-o", lin_opt.out_dir, "output directory")->required();
+  lin->add_option("--inputs", lin_opt.inputs, "force elements as inputs (point_force, point_torque, spring_damper)")
+      ->delimiter(',')
+      ->required();
+  lin->add_option("--outputs", lin_opt.outputs, "sensors as outputs (default: all)")->delimiter(',');
+  lin->add_option("--at", lin_opt.at, "state: statics (default) or initial")
+      ->check(CLI::IsMember({"statics", "initial"}));
+  lin->add_option("--time", lin_opt.time, "time of the loads and drivers [s] (default 0)");
+  bool lin_quiet = false;
+  lin->add_flag("--quiet,-q", lin_quiet, "no summary line");
 
   CLI::App* truck = app.add_subcommand("truck", "truck lane-change test tools");
   truck->require_subcommand(1);
@@ -215,7 +260,32 @@ int main(int argc, char** argv) {
       return r.completed || r.rolled_over ? 0 : 1;
     });
   }
+  if (run->parsed() && flexmb::cli::ModelAsksForStatics(model)) {
+    flexmb::cli::StaticsCommandOptions o;
+    o.model_path = model;
+    o.out_dir = out;
+    o.animation = animation;
+    o.info = quiet ? nullptr : stdout;
+    o.err = stderr;
+    return flexmb::cli::StaticsCommand(o);
+  }
   if (run->parsed()) return Run(model, out, t_end, dt, animation, quiet);
+  if (statics->parsed()) {
+    statics_opt.info = statics_quiet ? nullptr : stdout;
+    statics_opt.err = stderr;
+    return flexmb::cli::StaticsCommand(statics_opt);
+  }
+  if (lin->parsed()) {
+    lin_opt.info = lin_quiet ? nullptr : stdout;
+    lin_opt.err = stderr;
+    return flexmb::cli::LinearizeCommand(lin_opt);
+  }
+  if (sys_modes->parsed()) {
+    sys_modes_opt.animation = !sys_modes_no_anim;
+    sys_modes_opt.info = sys_modes_quiet ? nullptr : stdout;
+    sys_modes_opt.err = stderr;
+    return flexmb::cli::ModesCommand(sys_modes_opt);
+  }
   if (max_speed->parsed()) {
     return Guarded([&] {
       flexmb::vehicle::LaneChangeOptions o{truck_file, "", std::nullopt, frame, std::nullopt, true, nullptr};

@@ -8,6 +8,13 @@
 
 namespace flexmb {
 
+/// What `flexmb run` does with a model (model file: solver.analysis).
+enum class Analysis {
+  kDynamics,              ///< time integration from the initial state
+  kStatics,               ///< static equilibrium only (as `flexmb statics`)
+  kStaticsThenDynamics,   ///< static equilibrium, then time integration from it
+};
+
 /// Settings of the time integrator and the nonlinear solvers.
 struct SolverSettings {
   double t_end = 1.0;          ///< end time [s]
@@ -32,6 +39,7 @@ struct SolverSettings {
   double jacobian_reuse_rate = 0.2;
   double assembly_tol = 1e-10; ///< position assembly tolerance on ||Phi|| [m]
   double redundancy_tol = 1e-8; ///< relative rank tolerance for redundant constraints
+  Analysis analysis = Analysis::kDynamics;  ///< what `flexmb run` does (solver.analysis)
 };
 
 /// A broken rule of the solver settings: the model-file key it is about and

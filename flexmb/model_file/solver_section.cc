@@ -1,5 +1,6 @@
 #include "flexmb/model_file/solver_section.h"
 
+#include <string>
 #include <vector>
 
 namespace flexmb {
@@ -8,7 +9,7 @@ void ReadSolverSection(const YAML::Node& node, YamlContext& ctx, SolverSettings&
                        std::initializer_list<const char*> extra) {
   std::vector<const char*> keys = {"t_end", "dt", "dt_min", "dt_max", "rho_inf", "adaptive", "rtol", "atol",
                                    "newton_tol", "max_newton", "geometric_stiffness", "assembly_tol",
-                                   "redundancy_tol", "jacobian_reuse", "jacobian_reuse_rate"};
+                                   "redundancy_tol", "jacobian_reuse", "jacobian_reuse_rate", "analysis"};
   keys.insert(keys.end(), extra.begin(), extra.end());
   ctx.CheckKeys(node, keys);
   s.t_end = ctx.Double(node, "t_end", s.t_end);
@@ -26,6 +27,13 @@ void ReadSolverSection(const YAML::Node& node, YamlContext& ctx, SolverSettings&
   s.jacobian_reuse_rate = ctx.Double(node, "jacobian_reuse_rate", s.jacobian_reuse_rate);
   s.assembly_tol = ctx.Double(node, "assembly_tol", s.assembly_tol);
   s.redundancy_tol = ctx.Double(node, "redundancy_tol", s.redundancy_tol);
+  if (node["analysis"]) {
+    const std::string a = ctx.String(node, "analysis");
+    if (a == "dynamics") s.analysis = Analysis::kDynamics;
+    else if (a == "statics") s.analysis = Analysis::kStatics;
+    else if (a == "statics_then_dynamics") s.analysis = Analysis::kStaticsThenDynamics;
+    else ctx.Fail(node["analysis"], "'analysis' must be dynamics, statics or statics_then_dynamics, got " + a);
+  }
   // the rules every writer of the settings obeys (model/settings.h), at the line of the key
   if (const auto p = FindSolverSettingsProblem(s)) ctx.Fail(node[p->key] ? node[p->key] : node, p->message);
 }

@@ -7,6 +7,7 @@
 #include "flexmb/common/error.h"
 #include "flexmb/common/log.h"
 #include "flexmb/solver/assembler.h"
+#include "flexmb/solver/sparse_lu.h"
 
 namespace flexmb {
 
@@ -37,6 +38,15 @@ const ConstraintReport& Simulator::Initialize() {
   integrator_.Start(state_);
   initialized_ = true;
   return report_;
+}
+
+StaticsResult Simulator::SettleStatics(const StaticsSettings& settings) {
+  if (!initialized_) Initialize();
+  const StaticsResult r = SolveStatics(model_, state_, ws_, settings);
+  SparseLu lu;
+  InitialAccelerations(model_, state_, ws_, lu);
+  integrator_.Start(state_);
+  return r;
 }
 
 void Simulator::RefreshWorkspace() {

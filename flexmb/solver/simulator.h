@@ -11,6 +11,7 @@
 #include "flexmb/model/workspace.h"
 #include "flexmb/solver/generalized_alpha.h"
 #include "flexmb/solver/initial_conditions.h"
+#include "flexmb/solver/statics.h"
 
 namespace flexmb {
 
@@ -58,6 +59,12 @@ class Simulator {
   /// when the step size falls below dt_min, or when the run is a runaway
   /// (IsRunaway: far more rejected attempts than accepted steps).
   void Run(double t_end, double output_interval, const Observer& observer);
+
+  /// Moves the (initialized) current state to its static equilibrium at its
+  /// time (SolveStatics, velocities zero) and restarts the integrator from
+  /// there (accelerations and multipliers of the new state). Throws
+  /// NumericalError as SolveStatics; the state is then unchanged in time.
+  StaticsResult SettleStatics(const StaticsSettings& settings = {});
 
   /// Evaluates the workspace at the current state (markers, constraints,
   /// forces) so that sensors can read it.

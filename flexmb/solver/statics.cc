@@ -77,6 +77,10 @@ class StaticsSolver {
         q_conv = s_.q;
         lam_conv = lam_;
         ++res_.increments;
+        if (set_.on_increment) {
+          StoreLambda();
+          set_.on_increment(mu, used, res_);
+        }
         if (used <= 5) dmu *= 2.0;
         continue;
       }

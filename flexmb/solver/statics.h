@@ -25,10 +25,20 @@
 ///   9 iterations with full steps, 1871 with the line search;
 ///   docs/design.md, "Engine statics").
 
+#include <functional>
+
 #include "flexmb/model/model.h"
 #include "flexmb/model/workspace.h"
 
 namespace flexmb {
+
+/// Result of a static solve.
+struct StaticsResult {
+  int iterations = 0;         ///< Newton iterations used (all increments, failed ones included)
+  double residual = 0.0;      ///< final largest force residual [N, N m]
+  int increments = 0;         ///< converged load increments
+  int cuts = 0;               ///< failed increments (each halved the increment)
+};
 
 /// Settings of the static solver.
 struct StaticsSettings {
@@ -39,14 +49,12 @@ struct StaticsSettings {
   double initial_increment = 1.0;  ///< first load-factor increment (1: the full load at once)
   double min_increment = 1e-5;     ///< smallest load-factor increment before giving up
   bool line_search = false;   ///< line search on s(a) (see the file comment); false: full Newton steps
-};
-
-/// Result of a static solve.
-struct StaticsResult {
-  int iterations = 0;         ///< Newton iterations used (all increments, failed ones included)
-  double residual = 0.0;      ///< final largest force residual [N, N m]
-  int increments = 0;         ///< converged load increments
-  int cuts = 0;               ///< failed increments (each halved the increment)
+  /// Called after every converged load increment with the load factor
+  /// reached (in (0, 1]), the Newton iterations of that increment and the
+  /// statistics so far; the state passed to SolveStatics then holds that
+  /// equilibrium (multipliers included) and the workspace's markers,
+  /// constraints and forces are evaluated at it. Empty: not called.
+  std::function<void(double load_factor, int iterations, const StaticsResult&)> on_increment;
 };
 
 /// Moves `s` (velocities set to zero, time fixed) to static equilibrium.

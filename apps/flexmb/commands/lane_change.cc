@@ -145,6 +145,8 @@ LaneChangeFile ReadFile(const std::string& path) {
   if (const YAML::Node s = t["solver"]) {
     ctx.SetEntity("solver");
     ReadSolverSection(s, ctx, f.solver, {"output_interval"});
+    if (f.solver.analysis != Analysis::kDynamics)
+      ctx.Fail(s["analysis"], "a lane-change test is a time integration: 'analysis' must be dynamics");
     f.dt_min_given = bool(s["dt_min"]);
     f.output_interval = ctx.Double(s, "output_interval", f.output_interval);
   }

@@ -81,6 +81,8 @@ void Simulate(const RunOptions& opt, RunSummary& s, std::unique_ptr<Model>& mode
               std::unique_ptr<Simulator>& sim, Clock::time_point& t_start) {
   model = LoadModelFile(opt.model_path, SolverOverrides{opt.t_end, opt.dt});
   s.model_name = model->name;
+  if (model->solver.analysis == Analysis::kStatics)
+    throw InputError("solver.analysis is 'statics': a static solve, not a time integration (flexmb statics)");
   const double t_end = model->solver.t_end;
   s.t_end_requested = t_end;
 
@@ -101,6 +103,13 @@ void Simulate(const RunOptions& opt, RunSummary& s, std::unique_ptr<Model>& mode
     s.dof = rep.dof;
     s.constraint_equations = rep.equations;
     s.redundant_constraints = static_cast<int>(rep.redundant.size());
+  }
+  if (model->solver.analysis == Analysis::kStaticsThenDynamics) {
+    // start from the static equilibrium at t0 (drivers at their t0 values)
+    const StaticsResult st = sim->SettleStatics();
+    if (opt.info)
+      std::fprintf(opt.info, "static equilibrium at t = %g s: %d load increments, %d Newton iterations\n",
+                   sim->state().t, st.increments, st.iterations);
   }
   s.t_end = sim->state().t;
   if (opt.err)

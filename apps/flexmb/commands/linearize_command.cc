@@ -1,0 +1,234 @@
+#include "linearize_command.h"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+
+#include "analysis_support.h"
+#include "flexmb/common/json_text.h"
+#include "flexmb/solver/assembler.h"
+#include "flexmb/solver/linearization.h"
+#include "flexmb/solver/statics.h"
+
+namespace flexmb::cli {
+namespace {
+
+// the generalized forces (nv x m) of the inputs and their names
+MatX LinearizeInputs(const Model& m, const Workspace& ws, const std::vector<std::string>& names,
+                     std::vector<std::string>& labels) {
+  std::vector<VecX> cols;
+  // adds J_i^T w_i (+ J_j^T w_j) for a wrench (f_i, m_i, f_j, m_j)
+  const auto add = [&](const ForceElement& f, const Vec12& w, const std::string& label) {
+    VecX q = VecX::Zero(m.nv);
+    const MarkerState& mi = ws.markers[f.marker_i];
+    q.segment(mi.v_offset, mi.nv) += mi.J.transpose() * w.head<6>();
+    if (f.marker_j >= 0) {
+      const MarkerState& mj = ws.markers[f.marker_j];
+      q.segment(mj.v_offset, mj.nv) += mj.J.transpose() * w.tail<6>();
+    }
+    cols.push_back(q);
+    labels.push_back(label);
+  };
+  for (const std::string& name : names) {
+    const ForceElement* f = nullptr;
+    for (const auto& e : m.forces)
+      if (e->name() == name) f = e.get();
+    if (!f) throw InputError("--inputs: no force element named '" + name + "'");
+    const std::string type = f->type();
+    if (type == "point_force" || type == "point_torque") {
+      const int off = type == "point_force" ? 0 : 3;
+      const char* axes[3] = {"x", "y", "z"};
+      for (int k = 0; k < 3; ++k) {
+        Vec12 w = Vec12::Zero();
+        w(off + k) = 1.0;
+        add(*f, w, name + "." + (off ? "m" : "f") + axes[k]);
+      }
+    } else if (type == "spring_damper") {
+      const Vec3 d = ws.markers[f->marker_j].p_WM - ws.markers[f->marker_i].p_WM;
+      if (!(d.norm() > 0.0)) throw NumericalError("--inputs: the markers of '" + name + "' coincide");
+      const Vec3 u = d.normalized();
+      Vec12 w = Vec12::Zero();
+      w.head<3>() = u;
+      w.segment<3>(6) = -u;
+      add(*f, w, name + ".tension");
+    } else {
+      throw InputError("--inputs: force element '" + name + "' of type " + type +
+                       " cannot be an input (point_force, point_torque or spring_damper)");
+    }
+  }
+  MatX Q(m.nv, static_cast<int>(cols.size()));
+  for (size_t k = 0; k < cols.size(); ++k) Q.col(k) = cols[k];
+  return Q;
+}
+
+// the components of the chosen sensors at s (accelerations a in ws.vdot)
+VecX LinearizeSensors(const Model& m, const State& s, Workspace& ws, const VecX& a, const std::vector<int>& sensors,
+                      int count) {
+  EvaluateMarkers(m, s, ws);
+  EvaluateConstraints(m, s, ws);
+  EvaluateForces(m, s, ws, false);
+  ws.vdot = a;
+  VecX y(count);
+  int k = 0;
+  for (int i : sensors) {
+    const int c = static_cast<int>(m.sensors[i]->Components().size());
+    m.sensors[i]->Evaluate(m, s, ws, y.data() + k);
+    k += c;
+  }
+  return y;
+}
+
+void LinearizeWriteMatrix(const std::filesystem::path& p, const MatX& A) {
+  std::string t = "%%MatrixMarket matrix array real general\n" + std::to_string(A.rows()) + " " +
+                  std::to_string(A.cols()) + "\n";
+  char buf[40];
+  for (Eigen::Index j = 0; j < A.cols(); ++j)
+    for (Eigen::Index i = 0; i < A.rows(); ++i) {
+      std::snprintf(buf, sizeof buf, "%.17g\n", A(i, j));
+      t += buf;
+    }
+  WriteAnalysisFile(p.string(), t);
+}
+
+std::string LinearizeNames(const std::vector<std::string>& v) {
+  std::string s = "[";
+  for (size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + io::JsonString(v[i]);
+  return s + "]";
+}
+
+}  // namespace
+
+int LinearizeCommand(const LinearizeCommandOptions& opt) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<std::string> warnings;
+  std::string status = "ok", message;
+  int code = 0, n_states = 0, n_inputs = 0, n_outputs = 0;
+  AnalysisModel am;
+  std::error_code ec;
+  std::filesystem::create_directories(opt.out_dir, ec);
+  if (ec) {
+    if (opt.err) std::fprintf(opt.err, "error: %s: cannot create the output directory: %s\n", opt.out_dir.c_str(),
+                              ec.message().c_str());
+    return 2;
+  }
+  const std::filesystem::path dir(opt.out_dir);
+  try {
+    if (opt.at != "statics" && opt.at != "initial") throw InputError("--at must be statics or initial, got '" + opt.at + "'");
+    if (opt.inputs.empty()) throw InputError("--inputs: name at least one force element");
+    LoadAnalysisModel(opt.model_path, opt.time, am, warnings);
+    const Model& m = *am.model;
+    VecX a0 = am.ws.vdot;
+    if (opt.at == "statics") {
+      try {
+        SolveStatics(m, am.state, am.ws);
+      } catch (const NumericalError& e) {
+        throw NumericalError("--at statics: no static equilibrium to linearize about: " + e.message(), e.context());
+      }
+      a0.setZero();
+    }
+    if (opt.err)
+      for (const std::string& w : warnings) std::fprintf(opt.err, "warning: %s\n", w.c_str());
+    LinearizedSystem L = Linearize(m, am.state, a0, am.ws);
+    std::vector<int> indep;
+    ReduceWithBasis(L, PartitionedNullSpace(L.B, std::max(1e-12, m.solver.redundancy_tol), indep));
+    const int n = static_cast<int>(L.N.cols());
+    std::vector<std::string> input_names;
+    EvaluateMarkers(m, am.state, am.ws);
+    const MatX Qu = LinearizeInputs(m, am.ws, opt.inputs, input_names);
+    // outputs
+    std::vector<int> sensors;
+    std::vector<std::string> output_names;
+    if (opt.outputs.empty())
+      for (size_t i = 0; i < m.sensors.size(); ++i) sensors.push_back(static_cast<int>(i));
+    for (const std::string& name : opt.outputs) {
+      int found = -1;
+      for (size_t i = 0; i < m.sensors.size(); ++i)
+        if (m.sensors[i]->name() == name) found = static_cast<int>(i);
+      if (found < 0) throw InputError("--outputs: no sensor named '" + name + "'");
+      sensors.push_back(found);
+    }
+    for (int i : sensors)
+      for (const std::string& c : m.sensors[i]->Components()) output_names.push_back(m.sensors[i]->name() + "." + c);
+    const int p = static_cast<int>(output_names.size()), nu = static_cast<int>(Qu.cols());
+    if (p == 0) throw InputError("--outputs: the model has no sensors to output");
+    // A, B: Mr z'' + Cr z' + Kr z = N^T Qu u
+    const Eigen::LLT<MatX> llt(L.Mr);
+    const MatX MiK = llt.solve(L.Kr), MiC = llt.solve(L.Cr), MiQ = llt.solve(L.N.transpose() * Qu);
+    MatX A = MatX::Zero(2 * n, 2 * n), B = MatX::Zero(2 * n, nu);
+    A.topRightCorner(n, n).setIdentity();
+    A.bottomLeftCorner(n, n) = -MiK;
+    A.bottomRightCorner(n, n) = -MiC;
+    B.bottomRows(n) = MiQ;
+    // C, D by central differences of the sensors along the states and inputs
+    MatX C(p, 2 * n), D(p, nu);
+    State st = am.state;
+    const State s0 = am.state;
+    const double eps = 1e-6;
+    VecX dx(m.nv);
+    for (int k = 0; k < 2 * n + nu; ++k) {
+      VecX y[2];
+      for (int side = 0; side < 2; ++side) {
+        const double h = side ? -eps : eps;
+        VecX x = VecX::Zero(2 * n), u = VecX::Zero(nu);
+        if (k < 2 * n) x(k) = h; else u(k - 2 * n) = h;
+        dx = L.N * x.head(n);
+        RetractAll(m, s0.q, dx, st.q);
+        st.v = s0.v + L.N * x.tail(n);
+        const VecX a = a0 + L.N * (A.bottomRows(n) * x + B.bottomRows(n) * u);
+        y[side] = LinearizeSensors(m, st, am.ws, a, sensors, p);
+      }
+      const VecX col = (y[0] - y[1]) / (2.0 * eps);
+      if (k < 2 * n) C.col(k) = col; else D.col(k - 2 * n) = col;
+    }
+    if (!A.allFinite() || !B.allFinite() || !C.allFinite() || !D.allFinite())
+      throw NumericalError("linearize: the state-space matrices are not finite");
+    LinearizeWriteMatrix(dir / "A.mtx", A);
+    LinearizeWriteMatrix(dir / "B.mtx", B);
+    LinearizeWriteMatrix(dir / "C.mtx", C);
+    LinearizeWriteMatrix(dir / "D.mtx", D);
+    std::vector<std::string> state_names;
+    for (int k = 0; k < n; ++k) state_names.push_back("dx " + VelocityCoordinateName(m, indep[k]));
+    for (int k = 0; k < n; ++k) state_names.push_back("v " + VelocityCoordinateName(m, indep[k]));
+    const VecX y0 = LinearizeSensors(m, s0, am.ws, a0, sensors, p);
+    std::string js = "{\n  \"model\": " + io::JsonString(opt.model_path) + ",\n  \"at\": " + io::JsonString(opt.at) +
+                     ",\n  \"time\": " + io::JsonNumber(s0.t) + ",\n  \"states\": " + LinearizeNames(state_names) +
+                     ",\n  \"inputs\": " + LinearizeNames(input_names) + ",\n  \"outputs\": " +
+                     LinearizeNames(output_names) + ",\n  \"output_values\": " + io::JsonArray(y0) +
+                     ",\n  \"files\": {\"A\": \"A.mtx\", \"B\": \"B.mtx\", \"C\": \"C.mtx\", \"D\": \"D.mtx\"}\n}\n";
+    WriteAnalysisFile((dir / "statespace.json").string(), js);
+    n_states = 2 * n, n_inputs = nu, n_outputs = p;
+    if (opt.info)
+      std::fprintf(opt.info, "state-space model of '%s': %d states, %d inputs, %d outputs; results in %s\n",
+                   m.name.c_str(), n_states, n_inputs, n_outputs, opt.out_dir.c_str());
+  } catch (const InputError& e) {
+    status = "failed", message = AnalysisErrorText(e, opt.model_path), code = 2;
+  } catch (const NumericalError& e) {
+    status = "failed", message = AnalysisErrorText(e, opt.model_path), code = 1;
+  } catch (const std::exception& e) {
+    status = "failed", message = e.what(), code = 1;
+  }
+  if (code != 0 && opt.err) std::fprintf(opt.err, "error: %s\n", message.c_str());
+  JsonObjectText sum;
+  sum.Text("status", status);
+  sum.Text("message", message);
+  sum.Text("analysis", "linearize");
+  sum.Text("model", opt.model_path);
+  sum.Text("at", opt.at);
+  sum.Raw("states", std::to_string(n_states));
+  sum.Raw("inputs", std::to_string(n_inputs));
+  sum.Raw("outputs", std::to_string(n_outputs));
+  sum.Raw("redundant_constraints", std::to_string(am.report.redundant.size()));
+  sum.Number("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  sum.Texts("warnings", warnings);
+  try {
+    WriteAnalysisFile((dir / "summary.json").string(), sum.str());
+  } catch (const InputError& e) {
+    if (opt.err) std::fprintf(opt.err, "error: %s\n", e.what());
+    if (code == 0) code = 2;
+  }
+  return code;
+}
+
+}  // namespace flexmb::cli

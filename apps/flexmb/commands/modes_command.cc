@@ -1,0 +1,199 @@
+#include "modes_command.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include "analysis_support.h"
+#include "flexmb/common/json_text.h"
+#include "flexmb/model_file/model_file.h"
+#include "flexmb/results/vtk_animation.h"
+#include "flexmb/solver/assembler.h"
+#include "flexmb/solver/simulator.h"
+#include "flexmb/solver/statics.h"
+#include "flexmb/solver/system_modes.h"
+
+namespace flexmb::cli {
+namespace {
+
+// a warning when the state `what` moves (accelerations a or velocities)
+void ModesWarnIfMoving(const AnalysisModel& am, const VecX& a, const std::string& what,
+                       std::vector<std::string>& warnings) {
+  Eigen::Index k = 0;
+  const double amax = a.size() ? a.cwiseAbs().maxCoeff(&k) : 0.0;
+  const double vmax = am.state.v.size() ? am.state.v.cwiseAbs().maxCoeff() : 0.0;
+  if (amax > 1e-6 || vmax > 1e-9)
+    warnings.push_back(what + " is not an equilibrium (largest acceleration " + std::to_string(amax) + " at " +
+                       VelocityCoordinateName(*am.model, static_cast<int>(k)) + ", largest velocity " +
+                       std::to_string(vmax) + "): the modes are those of the tangent system at that state");
+}
+
+// the state to linearize about, in am; its accelerations into a
+void ModesState(const ModesCommandOptions& opt, AnalysisModel& am, VecX& a, std::vector<std::string>& warnings) {
+  if (opt.at == "time") {
+    if (!(opt.time >= 0.0) || !std::isfinite(opt.time)) throw InputError("--time must be a number of seconds >= 0");
+    am.model = LoadModelFile(opt.model_path);
+    Simulator sim(*am.model);
+    {
+      AnalysisWarnings collect(warnings);
+      sim.Initialize();
+    }
+    if (opt.time > sim.state().t) sim.Run(opt.time, 0.0, nullptr);
+    am.state = sim.state();
+    am.ws = sim.workspace();
+    am.report = sim.constraints();
+    a = am.ws.vdot;
+    ModesWarnIfMoving(am, a, "the state at --time", warnings);
+    return;
+  }
+  if (opt.at != "statics" && opt.at != "initial")
+    throw InputError("--at must be statics, initial or time, got '" + opt.at + "'");
+  LoadAnalysisModel(opt.model_path, opt.time, am, warnings);
+  if (opt.at == "initial") {
+    a = am.ws.vdot;
+    ModesWarnIfMoving(am, a, "the initial state", warnings);
+    return;
+  }
+  try {
+    SolveStatics(*am.model, am.state, am.ws);
+  } catch (const NumericalError& e) {
+    throw NumericalError("--at statics: no static equilibrium to linearize about: " + e.message(), e.context());
+  }
+  a = VecX::Zero(am.model->nv);
+}
+
+std::string ModesArray(const VecX& v) {
+  std::string s = "[";
+  for (Eigen::Index i = 0; i < v.size(); ++i) s += (i ? ", " : "") + io::JsonNumber(v(i));
+  return s + "]";
+}
+
+// one animation of mode `mode` over one period in dir
+void ModesAnimation(const Model& m, const State& s0, const SystemMode& mode, const ModesCommandOptions& opt,
+                    const std::filesystem::path& dir) {
+  VtkAnimationWriter anim(dir.string(), m);
+  const double f = mode.damped_frequency_hz > 0.0 ? mode.damped_frequency_hz : 0.0;
+  const double period = f > 0.0 ? 1.0 / f : 1.0;
+  State st = s0;
+  VecX dx(m.nv);
+  for (int j = 0; j <= opt.frames; ++j) {
+    const double th = 2.0 * std::numbers::pi * j / opt.frames;
+    // oscillatory: Re(x e^{i th}); without a period a sine sweep of the shape
+    if (f > 0.0)
+      dx = opt.amplitude * (std::cos(th) * mode.shape - std::sin(th) * mode.shape_imag);
+    else
+      dx = opt.amplitude * std::sin(th) * mode.shape;
+    RetractAll(m, s0.q, dx, st.q);
+    st.t = period * j / opt.frames;
+    anim.WriteFrame(st);
+  }
+}
+
+}  // namespace
+
+int ModesCommand(const ModesCommandOptions& opt) {
+  const auto start = std::chrono::steady_clock::now();
+  JsonObjectText sum;
+  std::vector<std::string> warnings;
+  std::string status = "ok", message;
+  int code = 0, dof = 0, rigid = 0, reported = 0;
+  AnalysisModel am;
+  std::error_code ec;
+  std::filesystem::create_directories(opt.out_dir, ec);
+  if (ec) {
+    if (opt.err) std::fprintf(opt.err, "error: %s: cannot create the output directory: %s\n", opt.out_dir.c_str(),
+                              ec.message().c_str());
+    return 2;
+  }
+  const std::filesystem::path dir(opt.out_dir);
+  try {
+    if (opt.count < 1) throw InputError("--count must be at least 1");
+    if (opt.frames < 2) throw InputError("--frames must be at least 2");
+    if (!(opt.amplitude > 0.0) || !std::isfinite(opt.amplitude)) throw InputError("--amplitude must be positive");
+    VecX a;
+    ModesState(opt, am, a, warnings);
+    if (opt.err)
+      for (const std::string& w : warnings) std::fprintf(opt.err, "warning: %s\n", w.c_str());
+    const Model& m = *am.model;
+    const LinearizedSystem sys = Linearize(m, am.state, a, am.ws);
+    dof = static_cast<int>(sys.N.cols());
+    const std::vector<SystemMode> all = SolveSystemModes(sys);
+    std::vector<const SystemMode*> modes;
+    for (const SystemMode& md : all) {
+      if (md.kind == ModeKind::kRigid) ++rigid;
+      if (md.kind == ModeKind::kRigid || reported < opt.count) {
+        modes.push_back(&md);
+        if (md.kind != ModeKind::kRigid) ++reported;
+      }
+    }
+    // table and JSON
+    std::string csv = "mode,kind,frequency_hz,damped_frequency_hz,damping_ratio,eigenvalue_real,eigenvalue_imag\n";
+    std::string js = "{\n  \"model\": " + io::JsonString(opt.model_path) + ",\n  \"at\": " + io::JsonString(opt.at) +
+                     ",\n  \"time\": " + io::JsonNumber(am.state.t) + ",\n  \"dof\": " + std::to_string(dof) +
+                     ",\n  \"rigid_modes\": " + std::to_string(rigid) + ",\n  \"coordinates\": [";
+    for (int c = 0; c < m.nv; ++c) js += (c ? ", " : "") + io::JsonString(VelocityCoordinateName(m, c));
+    js += "],\n  \"modes\": [\n";
+    char line[512];
+    if (opt.info)
+      std::fprintf(opt.info, "model '%s': %d degrees of freedom, %d rigid-body modes\n%5s  %-11s %16s %16s %12s\n",
+                   m.name.c_str(), dof, rigid, "mode", "kind", "frequency [Hz]", "damped [Hz]", "damping");
+    for (size_t k = 0; k < modes.size(); ++k) {
+      const SystemMode& md = *modes[k];
+      std::snprintf(line, sizeof line, "%zu,%s,%.15g,%.15g,%.15g,%.15g,%.15g\n", k + 1, ModeKindName(md.kind),
+                    md.frequency_hz, md.damped_frequency_hz, md.damping_ratio, md.eigenvalue.real(),
+                    md.eigenvalue.imag());
+      csv += line;
+      if (opt.info)
+        std::fprintf(opt.info, "%5zu  %-11s %16.9g %16.9g %12.6g\n", k + 1, ModeKindName(md.kind), md.frequency_hz,
+                     md.damped_frequency_hz, md.damping_ratio);
+      js += std::string(k ? ",\n" : "") + "    {\"mode\": " + std::to_string(k + 1) +
+            ", \"kind\": " + io::JsonString(ModeKindName(md.kind)) +
+            ", \"frequency_hz\": " + io::JsonNumber(md.frequency_hz) +
+            ", \"damped_frequency_hz\": " + io::JsonNumber(md.damped_frequency_hz) +
+            ", \"damping_ratio\": " + io::JsonNumber(md.damping_ratio) +
+            ", \"eigenvalue\": [" + io::JsonNumber(md.eigenvalue.real()) + ", " +
+            io::JsonNumber(md.eigenvalue.imag()) + "], \"shape\": " + ModesArray(md.shape) +
+            ", \"shape_imag\": " + ModesArray(md.shape_imag) + "}";
+    }
+    js += "\n  ]\n}\n";
+    WriteAnalysisFile((dir / "modes.csv").string(), csv);
+    WriteAnalysisFile((dir / "modes.json").string(), js);
+    if (opt.animation)
+      for (size_t k = 0; k < modes.size(); ++k)
+        if (modes[k]->kind != ModeKind::kRigid)
+          ModesAnimation(m, am.state, *modes[k], opt, dir / ("mode_" + std::to_string(k + 1)));
+    if (opt.info) std::fprintf(opt.info, "results in %s\n", opt.out_dir.c_str());
+  } catch (const InputError& e) {
+    status = "failed", message = AnalysisErrorText(e, opt.model_path), code = 2;
+  } catch (const NumericalError& e) {
+    status = "failed", message = AnalysisErrorText(e, opt.model_path), code = 1;
+  } catch (const std::exception& e) {
+    status = "failed", message = e.what(), code = 1;
+  }
+  if (code != 0 && opt.err) std::fprintf(opt.err, "error: %s\n", message.c_str());
+  sum.Text("status", status);
+  sum.Text("message", message);
+  sum.Text("analysis", "modes");
+  sum.Text("model", opt.model_path);
+  sum.Text("model_name", am.model ? am.model->name : "");
+  sum.Text("at", opt.at);
+  sum.Number("time", am.state.t);
+  sum.Raw("dof", std::to_string(dof));
+  sum.Raw("rigid_modes", std::to_string(rigid));
+  sum.Raw("modes", std::to_string(reported));
+  sum.Raw("constraint_equations", std::to_string(am.report.equations));
+  sum.Raw("redundant_constraints", std::to_string(am.report.redundant.size()));
+  sum.Texts("redundant", am.report.messages);
+  sum.Number("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  sum.Texts("warnings", warnings);
+  try {
+    WriteAnalysisFile((dir / "summary.json").string(), sum.str());
+  } catch (const InputError& e) {
+    if (opt.err) std::fprintf(opt.err, "error: %s\n", e.what());
+    if (code == 0) code = 2;
+  }
+  return code;
+}
+
+}  // namespace flexmb::cli

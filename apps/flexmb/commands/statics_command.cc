@@ -1,0 +1,156 @@
+#include "statics_command.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+
+#include "analysis_support.h"
+#include "flexmb/model_file/model_file.h"
+#include "flexmb/results/vtk_animation.h"
+#include "flexmb/solver/statics.h"
+
+namespace flexmb::cli {
+namespace {
+
+// the results table of the load steps: load factor, Newton iterations,
+// residual and every sensor component
+class StaticsTable {
+ public:
+  StaticsTable(const std::string& path, const Model& m) : m_(m) {
+    file_ = std::fopen(path.c_str(), "w");
+    if (!file_) throw InputError("cannot open the results file for writing", {path, 0, ""});
+    std::fprintf(file_, "load_factor,iterations,residual");
+    for (const auto& s : m.sensors) {
+      const std::vector<std::string> comps = s->Components();
+      counts_.push_back(static_cast<int>(comps.size()));
+      for (const std::string& c : comps) std::fprintf(file_, ",%s.%s", s->name().c_str(), c.c_str());
+    }
+    std::fputc('\n', file_);
+    std::fflush(file_);
+  }
+  ~StaticsTable() { std::fclose(file_); }
+  StaticsTable(const StaticsTable&) = delete;
+  StaticsTable& operator=(const StaticsTable&) = delete;
+
+  void Write(double mu, int iterations, double residual, const State& s, const Workspace& ws) {
+    std::fprintf(file_, "%.15g,%d,%.6g", mu, iterations, residual);
+    for (size_t i = 0; i < m_.sensors.size(); ++i) {
+      values_.assign(counts_[i], 0.0);
+      m_.sensors[i]->Evaluate(m_, s, ws, values_.data());
+      for (double x : values_) std::fprintf(file_, ",%.15g", x);
+    }
+    std::fputc('\n', file_);
+    std::fflush(file_);
+    ++rows_;
+  }
+  long rows() const { return rows_; }
+
+ private:
+  const Model& m_;
+  std::FILE* file_ = nullptr;
+  std::vector<int> counts_;
+  std::vector<double> values_;
+  long rows_ = 0;
+};
+
+}  // namespace
+
+bool ModelAsksForStatics(const std::string& model_path) {
+  try {
+    return LoadModelFile(model_path)->solver.analysis == Analysis::kStatics;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+int StaticsCommand(const StaticsCommandOptions& opt) {
+  const auto start = std::chrono::steady_clock::now();
+  JsonObjectText sum;
+  std::vector<std::string> warnings;
+  std::string status = "ok", message;
+  int code = 0;
+  double load_factor = 0.0;
+  StaticsResult res;
+  long rows = 0;
+  int frames = 0;
+  AnalysisModel am;
+  std::error_code ec;
+  std::filesystem::create_directories(opt.out_dir, ec);
+  if (ec) {
+    if (opt.err) std::fprintf(opt.err, "error: %s: cannot create the output directory: %s\n", opt.out_dir.c_str(),
+                              ec.message().c_str());
+    return 2;
+  }
+  const std::filesystem::path dir(opt.out_dir);
+  try {
+    if (!std::isfinite(opt.time)) throw InputError("--time must be a finite number of seconds");
+    LoadAnalysisModel(opt.model_path, opt.time, am, warnings);
+    if (opt.err)
+      for (const std::string& w : warnings) std::fprintf(opt.err, "warning: %s\n", w.c_str());
+    StaticsTable table((dir / "results.csv").string(), *am.model);
+    std::unique_ptr<VtkAnimationWriter> anim;
+    if (opt.animation || am.model->output.animation)
+      anim = std::make_unique<VtkAnimationWriter>(dir.string(), *am.model);
+    am.ws.vdot.setZero();
+    StaticsSettings set;
+    State frame;
+    set.on_increment = [&](double mu, int iterations, const StaticsResult& r) {
+      load_factor = mu;
+      table.Write(mu, iterations, r.residual, am.state, am.ws);
+      rows = table.rows();
+      if (!anim) return;
+      frame = am.state;
+      frame.t = mu;
+      anim->WriteFrame(frame);
+      frames = anim->frames();
+    };
+    res = SolveStatics(*am.model, am.state, am.ws, set);
+    if (opt.info)
+      std::fprintf(opt.info,
+                   "static equilibrium of '%s' at t = %g s: %d load steps (%d cut), %d Newton iterations, "
+                   "residual %.3g; results in %s\n",
+                   am.model->name.c_str(), am.state.t, res.increments, res.cuts, res.iterations, res.residual,
+                   opt.out_dir.c_str());
+  } catch (const InputError& e) {
+    status = "failed", message = AnalysisErrorText(e, opt.model_path), code = 2;
+  } catch (const NumericalError& e) {
+    status = "failed", message = AnalysisErrorText(e, opt.model_path), code = 1;
+    if (message.find("load factor") == std::string::npos)
+    {
+      char lf[32];
+      std::snprintf(lf, sizeof lf, "%.4g", load_factor);
+      message += std::string(" (load factor reached: ") + lf + " of 1)";
+    }
+  } catch (const std::exception& e) {
+    status = "failed", message = e.what(), code = 1;
+  }
+  if (code != 0 && opt.err) std::fprintf(opt.err, "error: %s\n", message.c_str());
+  sum.Text("status", status);
+  sum.Text("message", message);
+  sum.Text("analysis", "statics");
+  sum.Text("model", opt.model_path);
+  sum.Text("model_name", am.model ? am.model->name : "");
+  sum.Number("time", opt.time);
+  sum.Number("load_factor", load_factor);
+  sum.Raw("load_steps", std::to_string(res.increments));
+  sum.Raw("cuts", std::to_string(res.cuts));
+  sum.Raw("newton_iterations", std::to_string(res.iterations));
+  sum.Number("residual", res.residual);
+  sum.Raw("dof", std::to_string(am.report.dof));
+  sum.Raw("constraint_equations", std::to_string(am.report.equations));
+  sum.Raw("redundant_constraints", std::to_string(am.report.redundant.size()));
+  sum.Raw("rows", std::to_string(rows));
+  sum.Raw("frames", std::to_string(frames));
+  sum.Number("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  sum.Texts("warnings", warnings);
+  try {
+    WriteAnalysisFile((dir / "summary.json").string(), sum.str());
+  } catch (const InputError& e) {
+    if (opt.err) std::fprintf(opt.err, "error: %s\n", e.what());
+    if (code == 0) code = 2;
+  }
+  return code;
+}
+
+}  // namespace flexmb::cli
