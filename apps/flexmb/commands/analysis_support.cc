@@ -1,4 +1,4 @@
-#include "analysis_support.h"
+#include "apps/flexmb/commands/analysis_support.h"
 
 #include <cmath>
 #include <filesystem>
@@ -58,6 +58,28 @@ void WriteAnalysisFile(const std::string& path, const std::string& text) {
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
   if (ec) throw InputError("cannot write the file: " + ec.message(), {path, 0, ""});
+}
+
+bool CreateAnalysisDir(const std::string& dir, std::FILE* err) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (!ec) return true;
+  if (err) std::fprintf(err, "error: %s: cannot create the output directory: %s\n", dir.c_str(), ec.message().c_str());
+  return false;
+}
+
+int FinishAnalysisSummary(JsonObjectText& sum, const std::string& dir,
+                          std::chrono::steady_clock::time_point start,
+                          const std::vector<std::string>& warnings, std::FILE* err, int code) {
+  sum.Number("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  sum.Texts("warnings", warnings);
+  try {
+    WriteAnalysisFile((std::filesystem::path(dir) / "summary.json").string(), sum.str());
+  } catch (const InputError& e) {
+    if (err) std::fprintf(err, "error: %s\n", e.what());
+    if (code == 0) code = 2;
+  }
+  return code;
 }
 
 }  // namespace flexmb::cli

@@ -5,6 +5,7 @@
 /// list, error messages naming the model file, and the key-value JSON of
 /// their summary.json.
 
+#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -66,5 +67,16 @@ class JsonObjectText {
 
 /// Writes `text` to `path` through a temporary file and a rename.
 void WriteAnalysisFile(const std::string& path, const std::string& text);
+
+/// Creates the output folder `dir`; false (after printing the error on
+/// `err`, if given) when it cannot be created.
+bool CreateAnalysisDir(const std::string& dir, std::FILE* err);
+
+/// Adds `wall_time_s` (since `start`) and `warnings` to `sum`, writes it as
+/// DIR/summary.json and returns `code`, or 2 if the file cannot be written
+/// and `code` was 0 (the error printed on `err`).
+int FinishAnalysisSummary(JsonObjectText& sum, const std::string& dir,
+                          std::chrono::steady_clock::time_point start,
+                          const std::vector<std::string>& warnings, std::FILE* err, int code);
 
 }  // namespace flexmb::cli

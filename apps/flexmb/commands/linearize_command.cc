@@ -1,4 +1,4 @@
-#include "linearize_command.h"
+#include "apps/flexmb/commands/linearize_command.h"
 
 #include <Eigen/Cholesky>
 #include <algorithm>
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "analysis_support.h"
+#include "apps/flexmb/commands/analysis_support.h"
 #include "flexmb/common/json_text.h"
 #include "flexmb/solver/assembler.h"
 #include "flexmb/solver/linearization.h"
@@ -106,13 +106,7 @@ int LinearizeCommand(const LinearizeCommandOptions& opt) {
   std::string status = "ok", message;
   int code = 0, n_states = 0, n_inputs = 0, n_outputs = 0;
   AnalysisModel am;
-  std::error_code ec;
-  std::filesystem::create_directories(opt.out_dir, ec);
-  if (ec) {
-    if (opt.err) std::fprintf(opt.err, "error: %s: cannot create the output directory: %s\n", opt.out_dir.c_str(),
-                              ec.message().c_str());
-    return 2;
-  }
+  if (!CreateAnalysisDir(opt.out_dir, opt.err)) return 2;
   const std::filesystem::path dir(opt.out_dir);
   try {
     if (opt.at != "statics" && opt.at != "initial") throw InputError("--at must be statics or initial, got '" + opt.at + "'");
@@ -220,15 +214,7 @@ int LinearizeCommand(const LinearizeCommandOptions& opt) {
   sum.Raw("inputs", std::to_string(n_inputs));
   sum.Raw("outputs", std::to_string(n_outputs));
   sum.Raw("redundant_constraints", std::to_string(am.report.redundant.size()));
-  sum.Number("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  sum.Texts("warnings", warnings);
-  try {
-    WriteAnalysisFile((dir / "summary.json").string(), sum.str());
-  } catch (const InputError& e) {
-    if (opt.err) std::fprintf(opt.err, "error: %s\n", e.what());
-    if (code == 0) code = 2;
-  }
-  return code;
+  return FinishAnalysisSummary(sum, opt.out_dir, start, warnings, opt.err, code);
 }
 
 }  // namespace flexmb::cli

@@ -1,11 +1,11 @@
-#include "modes_command.h"
+#include "apps/flexmb/commands/modes_command.h"
 
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
 
-#include "analysis_support.h"
+#include "apps/flexmb/commands/analysis_support.h"
 #include "flexmb/common/json_text.h"
 #include "flexmb/model_file/model_file.h"
 #include "flexmb/results/vtk_animation.h"
@@ -99,13 +99,7 @@ int ModesCommand(const ModesCommandOptions& opt) {
   std::string status = "ok", message;
   int code = 0, dof = 0, rigid = 0, reported = 0;
   AnalysisModel am;
-  std::error_code ec;
-  std::filesystem::create_directories(opt.out_dir, ec);
-  if (ec) {
-    if (opt.err) std::fprintf(opt.err, "error: %s: cannot create the output directory: %s\n", opt.out_dir.c_str(),
-                              ec.message().c_str());
-    return 2;
-  }
+  if (!CreateAnalysisDir(opt.out_dir, opt.err)) return 2;
   const std::filesystem::path dir(opt.out_dir);
   try {
     if (opt.count < 1) throw InputError("--count must be at least 1");
@@ -185,15 +179,7 @@ int ModesCommand(const ModesCommandOptions& opt) {
   sum.Raw("constraint_equations", std::to_string(am.report.equations));
   sum.Raw("redundant_constraints", std::to_string(am.report.redundant.size()));
   sum.Texts("redundant", am.report.messages);
-  sum.Number("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  sum.Texts("warnings", warnings);
-  try {
-    WriteAnalysisFile((dir / "summary.json").string(), sum.str());
-  } catch (const InputError& e) {
-    if (opt.err) std::fprintf(opt.err, "error: %s\n", e.what());
-    if (code == 0) code = 2;
-  }
-  return code;
+  return FinishAnalysisSummary(sum, opt.out_dir, start, warnings, opt.err, code);
 }
 
 }  // namespace flexmb::cli

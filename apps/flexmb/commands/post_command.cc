@@ -1,4 +1,4 @@
-#include "post_command.h"
+#include "apps/flexmb/commands/post_command.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,11 +1,11 @@
-#include "statics_command.h"
+#include "apps/flexmb/commands/statics_command.h"
 
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <memory>
 
-#include "analysis_support.h"
+#include "apps/flexmb/commands/analysis_support.h"
 #include "flexmb/model_file/model_file.h"
 #include "flexmb/results/vtk_animation.h"
 #include "flexmb/solver/statics.h"
@@ -75,13 +75,7 @@ int StaticsCommand(const StaticsCommandOptions& opt) {
   long rows = 0;
   int frames = 0;
   AnalysisModel am;
-  std::error_code ec;
-  std::filesystem::create_directories(opt.out_dir, ec);
-  if (ec) {
-    if (opt.err) std::fprintf(opt.err, "error: %s: cannot create the output directory: %s\n", opt.out_dir.c_str(),
-                              ec.message().c_str());
-    return 2;
-  }
+  if (!CreateAnalysisDir(opt.out_dir, opt.err)) return 2;
   const std::filesystem::path dir(opt.out_dir);
   try {
     if (!std::isfinite(opt.time)) throw InputError("--time must be a finite number of seconds");
@@ -142,15 +136,7 @@ int StaticsCommand(const StaticsCommandOptions& opt) {
   sum.Raw("redundant_constraints", std::to_string(am.report.redundant.size()));
   sum.Raw("rows", std::to_string(rows));
   sum.Raw("frames", std::to_string(frames));
-  sum.Number("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  sum.Texts("warnings", warnings);
-  try {
-    WriteAnalysisFile((dir / "summary.json").string(), sum.str());
-  } catch (const InputError& e) {
-    if (opt.err) std::fprintf(opt.err, "error: %s\n", e.what());
-    if (code == 0) code = 2;
-  }
-  return code;
+  return FinishAnalysisSummary(sum, opt.out_dir, start, warnings, opt.err, code);
 }
 
 }  // namespace flexmb::cli
