@@ -1,0 +1,65 @@
+"""FE models, reduction and body files from Python, on the free steel strip
+of the command-line tests (tests/data/fe/nastran/cli_strip.bdf: 1 m x 50 mm
+x 5 mm, E = 210 GPa, rho = 7850 kg/m^3, nu = 0)."""
+
+import math
+import os
+import subprocess
+import json
+
+import numpy as np
+import pytest
+
+import flexmb
+
+ENDS = "1,22,43,21,42,63"
+E, RHO, L, B, T = 2.1e11, 7850.0, 1.0, 0.05, 0.005
+MASS = RHO * L * B * T
+
+
+@pytest.fixture
+def strip(source_dir):
+    return os.path.join(source_dir, "tests", "data", "fe", "nastran", "cli_strip.bdf")
+
+
+def test_fe_modes_free_strip(strip):
+    r = flexmb.fe_modes(strip, count=8)
+    f = r["frequencies_hz"]
+    assert len(f) == 8
+    assert max(abs(x) for x in f[:6]) < 0.1  # six rigid-body modes
+    # Euler-Bernoulli free-free beam, bending about the thickness: (4.7300)^2/(2 pi L^2) sqrt(EI/(rho A))
+    f1 = 4.730040745 ** 2 / (2 * math.pi * L ** 2) * math.sqrt(E * T ** 2 / (12 * RHO))
+    assert f[6] == pytest.approx(f1, rel=0.02)
+    assert r["mass_kg"] == pytest.approx(MASS, rel=1e-12)
+    assert flexmb.fe_info(strip)["nodes"] == 63
+
+
+def test_reduce_and_body_file_match_cli(cli, strip, tmp_path):
+    rep = flexmb.reduce(strip, tmp_path / "py.h5", interface=ENDS, modes=10)
+    proc = subprocess.run([cli, "reduce", strip, "--interface", ENDS, "--modes", "10", "-o",
+                           str(tmp_path / "cli.h5"), "--json"], capture_output=True, text=True, check=True)
+    ref = json.loads(proc.stdout)
+    assert rep["frequencies_hz"] == ref["frequencies_hz"]
+    assert rep["flexible_modes"] == ref["flexible_modes"]
+    body = flexmb.Body(tmp_path / "py.h5")
+    n = body.mode_count
+    assert n == rep["flexible_modes"]
+    np.testing.assert_array_equal(body.frequencies_hz, np.array(rep["frequencies_hz"]))
+    assert body.modes.shape == (6 * 63, n) and body.modes.dtype == np.float64
+    assert body.nodes.shape == (63, 3)
+    assert body.mass.shape == (n, n) and body.stiffness.shape == (n, n)
+    # orthonormal modes: reduced mass identity, stiffness diag(omega^2)
+    np.testing.assert_allclose(body.mass, np.eye(n), atol=1e-9)
+    np.testing.assert_allclose(np.diag(body.stiffness), (2 * np.pi * body.frequencies_hz) ** 2, rtol=1e-9)
+    # mass properties of the box from the inertia invariants
+    assert body.total_mass == pytest.approx(MASS, rel=1e-9)
+    np.testing.assert_allclose(body.center_of_mass, [0.5 * L, 0.5 * B, 0.0], atol=1e-9)
+    assert body.stress_modes("shell")["modes"].shape[1] == n
+    assert sorted(body.node_ids[body.interface_nodes].tolist()) == sorted(int(i) for i in ENDS.split(","))
+    info = flexmb.body_info(tmp_path / "py.h5")
+    assert info["mass_kg"] == pytest.approx(MASS, rel=1e-9)
+
+
+def test_fe_error_names_file(tmp_path):
+    with pytest.raises(flexmb.InputError, match="nope.bdf"):
+        flexmb.fe_modes(tmp_path / "nope.bdf")
