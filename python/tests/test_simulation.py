@@ -185,3 +185,32 @@ def test_results_to_pandas_or_clear_error(source_dir):
             res.to_pandas()
     else:
         assert list(res.to_pandas().columns) == list(res.keys())[1:]
+
+
+def test_gil_released_while_integrating(source_dir):
+    # another Python thread runs while C++ integrates (it would stall if the GIL were held)
+    import threading
+    sim = flexmb.load(os.path.join(source_dir, "examples", "bricard", "model.yaml"))
+    sim.initialize()
+    worker = threading.Thread(target=sim.run, args=(2.0,))
+    count = 0
+    worker.start()
+    while worker.is_alive():
+        count += 1
+    worker.join()
+    assert sim.t == pytest.approx(2.0)
+    assert count > 10000
+
+
+def test_callback_exception_propagates():
+    sim = flexmb.from_dict(inverted_pendulum({"input": "torque"}))
+
+    def failing(s):
+        if s.t > 0.05:
+            raise ValueError("controller failed")
+
+    with pytest.raises(ValueError, match="controller failed"):
+        sim.run(1.0, callback=failing, interval=0.01)
+    assert 0.05 < sim.t < 0.07
+    sim.run(0.2)  # the simulation goes on from where it stopped
+    assert sim.t == pytest.approx(0.2)
