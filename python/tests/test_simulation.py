@@ -214,3 +214,33 @@ def test_callback_exception_propagates():
     assert 0.05 < sim.t < 0.07
     sim.run(0.2)  # the simulation goes on from where it stopped
     assert sim.t == pytest.approx(0.2)
+
+
+def test_inputs_drive_point_force_and_torque():
+    # a free 2 kg body (inertia 0.5 kg m^2 about z), no gravity; force and torque inputs
+    # set before the first step: v and w are a t exactly (constant acceleration)
+    sim = flexmb.from_dict({
+        "name": "free", "gravity": [0, 0, 0],
+        "bodies": [{"name": "box", "mass": 2.0, "inertia": [0.5, 0.5, 0.5], "markers": [{"name": "c"}]}],
+        "forces": [
+            {"name": "push", "type": "point_force", "marker": "box.c", "force": [{"input": "fx"}, 0, 0]},
+            {"name": "spin", "type": "point_torque", "marker": "box.c", "torque": [0, 0, {"input": "tz"}]},
+        ],
+        "solver": {"dt": 1.0e-3},
+    })
+    assert sorted(sim.input_names) == ["fx", "tz"]
+    sim.set_input("fx", 4.0)
+    sim.set_input("tz", 1.0)
+    sim.step(0.5)
+    v = sim.body_v("box")
+    assert v[0] == pytest.approx(4.0 / 2.0 * 0.5, abs=1e-12)  # 1 m/s
+    assert v[5] == pytest.approx(1.0 / 0.5 * 0.5, abs=1e-12)  # 1 rad/s
+    # a step in the inputs: the integrator spreads the jump of the acceleration
+    # over the next step (velocity error of order h |delta a|, h = 1 ms)
+    sim.set_input("fx", -2.0)
+    sim.set_input("tz", 0.0)
+    sim.step(0.5)
+    assert v[0] == pytest.approx(1.0 - 1.0 * 0.5, abs=1e-3 * 3.0)  # 0.5 m/s; delta a = 3 m/s^2
+    assert v[5] == pytest.approx(1.0, abs=1e-3 * 2.0)  # delta alpha = 2 rad/s^2
+    with pytest.raises(KeyError, match="no input named 'fy'"):
+        sim.set_input("fy", 1.0)
