@@ -13,6 +13,7 @@
 #include "flexmb/common/log.h"
 #include "python/core_bindings.h"
 #include "flexmb/io/model_file.h"
+#include "flexmb/sensors/joint_sensors.h"
 
 namespace flexmb::python {
 namespace py = pybind11;
@@ -164,6 +165,11 @@ void PySimulation::Run(double t_end, py::object callback, py::object argument, d
   try {
     py::gil_scoped_release release;
     sim->Run(t_end, interval, [&](const State& st, const Workspace& ws) {
+      if (!has_callback) {
+        // Ctrl-C (KeyboardInterrupt) ends a long run at the next output time
+        py::gil_scoped_acquire acquire;
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+      }
       const bool last = st.t >= t_end - eps;
       // a continued run does not repeat the row of its start
       const bool repeat = continuing && st.t <= data[0].back();
@@ -171,6 +177,7 @@ void PySimulation::Run(double t_end, py::object callback, py::object argument, d
       if (has_callback && calls.Due(st.t)) {
         py::gil_scoped_acquire acquire;
         callback(argument);
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
       }
     });
   } catch (const Error& e) {
@@ -307,6 +314,16 @@ void BindSimulation(py::module_& m) {
         const Joint& j = *s.model->joints[SimulationIndex(s.model->FindJoint(name), "joint", name)];
         return SimulationView(self, s.sim->state().lambda.data() + j.lambda_offset, j.NumEquations());
       }, py::arg("joint"), "the joint's constraint multipliers (view) [N or N m per equation]")
+      .def("joint_reaction", [](S& s, const std::string& name, bool world) {
+        const int j = SimulationIndex(s.model->FindJoint(name), "joint", name);
+        s.Initialize();
+        const JointReactionSensor sensor(name, j, world);
+        py::array_t<double> a(6);
+        sensor.Evaluate(*s.model, s.sim->state(), s.sim->workspace(), a.mutable_data());
+        return a;
+      }, py::arg("joint"), py::arg("world") = false,
+         "(fx, fy, fz [N], mx, my, mz [N m]): the wrench the joint applies to marker j about its origin, in "
+         "marker i's axes (world=True: world axes), as the joint_reaction sensor (at the last output time)")
       .def("sensor_values", [](S& s) {
         s.Initialize();
         std::vector<double> v(s.columns.size() - 1);

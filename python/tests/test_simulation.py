@@ -244,3 +244,30 @@ def test_inputs_drive_point_force_and_torque():
     assert v[5] == pytest.approx(1.0, abs=1e-3 * 2.0)  # delta alpha = 2 rad/s^2
     with pytest.raises(KeyError, match="no input named 'fy'"):
         sim.set_input("fy", 1.0)
+
+
+def test_joint_reaction_of_hanging_rod():
+    # a 1 kg rod hanging at rest from a pin: the pin carries its weight, m g upwards, no moment
+    sim = flexmb.from_dict({
+        "name": "hanging", "gravity": [0, -9.81, 0],
+        "ground": {"markers": [{"name": "pivot"}]},
+        "bodies": [{"name": "rod", "mass": 1.0, "inertia": [0.0834, 0.001, 0.0834], "position": [0, -0.5, 0],
+                    "markers": [{"name": "pin", "position": [0, 0.5, 0]}]}],
+        "joints": [{"name": "pin", "type": "revolute", "i": "ground.pivot", "j": "rod.pin"}],
+        "solver": {"dt": 1.0e-3},
+    })
+    sim.step(0.1)
+    np.testing.assert_allclose(sim.joint_reaction("pin", world=True), [0, 9.81, 0, 0, 0, 0], atol=1e-9)
+    np.testing.assert_allclose(sim.joint_coordinates("pin"), [0.0], atol=1e-12)
+
+
+def test_ctrl_c_interrupts_long_run(source_dir):
+    import signal
+    import threading
+    sim = flexmb.load(pendulum(source_dir))  # 2000 s: minutes of integration
+    timer = threading.Timer(0.3, lambda: signal.raise_signal(signal.SIGINT))
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        sim.run()
+    timer.join()
+    assert 0 < sim.t < 2000
