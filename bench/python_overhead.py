@@ -36,8 +36,10 @@ for k in range(repeat):
     py_times.append(sim.stats["integration_time_s"])
 steps = sim.stats["steps"]
 cli_best, py_best = min(cli_times), min(py_times)
+pairs = sorted(p / c for p, c in zip(py_times, cli_times))
 print(f"bricard, {steps} steps: CLI integration {cli_best * 1e3:.1f} ms, Python {py_best * 1e3:.1f} ms "
-      f"(best of {repeat}), ratio Python/CLI {py_best / cli_best:.4f}")
+      f"(best of {repeat}), ratio Python/CLI of the bests {py_best / cli_best:.4f}, "
+      f"median of the {repeat} pairs {pairs[len(pairs) // 2]:.4f}")
 
 pendulum = {
     "name": "inverted_pendulum", "gravity": [0, -9.81, 0],
