@@ -9,12 +9,12 @@ from .results import Results
 
 def load(path):
     """Loads a YAML model file; returns a Simulation (errors as `flexmb run`)."""
-    return _attach(_core.Simulation.from_file(str(path)))
+    return _core.Simulation.from_file(str(path))
 
 
 def from_yaml(text, name="<string>"):
     """Loads model-file text; `name` stands for the file in error messages."""
-    return _attach(_core.Simulation.from_string(text, name))
+    return _core.Simulation.from_string(text, name)
 
 
 def to_yaml(model):
@@ -39,9 +39,10 @@ def _results(sim):
     return Results(sim.result_arrays())
 
 
-def _attach(sim):
-    return sim
+def _repr(sim):
+    return f"Simulation({sim.name!r}, t = {sim.t:g} s)"
 
 
 # Simulation.results(): the recorded rows as a Results object
 _core.Simulation.results = _results
+_core.Simulation.__repr__ = _repr
