@@ -1,11 +1,20 @@
-// Body files as numpy (flexmb._core.read_body): the reduced body of a body
-// file (io::ReadBody) with its frequencies, reduced matrices, inertia
-// invariants, mode shapes, stress modes and mesh.
+// FE models and body files as numpy: the modes of a full FE model with
+// their shapes (flexmb._core.fe_mode_shapes, as `fe modes`), and the reduced
+// body of a body file (read_body: io::ReadBody) with its frequencies,
+// reduced matrices, inertia invariants, mode shapes, stress modes and mesh.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+
+#include "flexmb/common/error.h"
+#include "flexmb/fe/assembly.h"
+#include "flexmb/fe/fe_model.h"
+#include "flexmb/fe/modal.h"
 #include "flexmb/io/body_file.h"
+#include "flexmb/io/command_support.h"
+#include "flexmb/io/fe_model_file.h"
 #include "flexmb/reduction/reduced_body.h"
 #include "python/core_bindings.h"
 
@@ -42,9 +51,69 @@ py::dict BodiesStressTable(const reduction::StressTable& t) {
   return d;
 }
 
+// runs f; an error without a file is rethrown naming `path` (as the fe commands do)
+template <class F>
+auto BodiesInFile(const std::string& path, F&& f) {
+  try {
+    return f();
+  } catch (const InputError& e) {
+    if (!e.context().file.empty()) throw;
+    throw InputError(e.message(), {path, 0, e.context().entity});
+  } catch (const NumericalError& e) {
+    if (!e.context().file.empty()) throw;
+    throw NumericalError(e.message(), {path, 0, e.context().entity});
+  }
+}
+
 }  // namespace
 
 void BindBodies(py::module_& m) {
+  m.def("fe_mode_shapes", [](const std::string& path, int count, const std::string& fix, bool lumped,
+                             double shift) {
+    if (count < 1) throw InputError("count must be at least 1, got " + std::to_string(count));
+    fe::FeModel model;
+    fe::AssembledModel a;
+    fe::ModalResult r;
+    {
+      py::gil_scoped_release release;
+      model = BodiesInFile(path, [&] { return io::LoadFeModel(path); });
+      fe::AssemblyOptions ao;
+      ao.mass_form = lumped ? fe::MassForm::kLumped : fe::MassForm::kConsistent;
+      ao.extra_fixed_nodes = io::command::NodeListOption(model.mesh, fix, path);
+      a = BodiesInFile(path, [&] { return fe::BuildMatrices(model, ao); });
+      if (a.dofs.n_free == 0)
+        throw InputError("the model has no free DOF (all constrained or fixed): nothing to solve", {path, 0, ""});
+      fe::ModalOptions mo;
+      mo.count = count;
+      mo.shift = shift;
+      r = BodiesInFile(path, [&] { return fe::SolveModes(a, mo); });
+    }
+    // u_full = T u_free, then per node its 6 slots (0 where inactive)
+    const MatX full = a.T * r.modes;
+    const int nn = static_cast<int>(a.dofs.full.size());
+    py::array_t<double> shapes({static_cast<py::ssize_t>(nn) * 6, static_cast<py::ssize_t>(full.cols())});
+    auto sh = shapes.mutable_unchecked<2>();
+    for (int k = 0; k < nn; ++k)
+      for (int c = 0; c < 6; ++c) {
+        const int row = a.dofs.full[k][c];
+        for (Eigen::Index j = 0; j < full.cols(); ++j) sh(6 * k + c, j) = row >= 0 ? full(row, j) : 0.0;
+      }
+    py::array_t<double> xyz({static_cast<py::ssize_t>(nn), py::ssize_t{3}});
+    std::fill(xyz.mutable_data(), xyz.mutable_data() + 3 * nn, 0.0);
+    for (int k = 0; k < nn && k < static_cast<int>(model.mesh.nodes.size()); ++k)
+      for (int i = 0; i < 3; ++i) xyz.mutable_at(k, i) = model.mesh.nodes[k].x(i);
+    py::dict d;
+    d["frequencies_hz"] = py::array_t<double>(r.frequencies_hz.size(), r.frequencies_hz.data());
+    d["shapes"] = shapes;
+    d["nodes"] = xyz;
+    d["node_ids"] = a.dofs.node_ids;
+    d["dofs"] = a.dofs.n_free;
+    return d;
+  }, py::arg("model"), py::arg("count") = 10, py::arg("fix") = "", py::arg("lumped") = false,
+        py::arg("shift") = 0.0,
+        "Modes of a full FE model as `fe modes` solves them, with their shapes: frequencies_hz, shapes (6 rows "
+        "per node: ux uy uz rx ry rz, mass-normalized, x count), nodes (N x 3) [m], node_ids, dofs.");
+
   m.def("read_body", [](const std::string& path) {
     reduction::ReducedBody b;
     {

@@ -8,7 +8,7 @@ files, the truck lane change, parameter studies and plots. See docs/python.md.
 from ._core import Error, InputError, NumericalError, Input, Simulation
 from .model import load, from_dict, from_yaml, check
 from .results import Results, read_results
-from .commands import run_file, fe_modes, fe_info, fe_export, reduce, body_info
+from .commands import run_file, fe_modes, fe_mode_shapes, fe_info, fe_export, reduce, body_info
 from .bodies import Body, read_body
 from .vehicle import LaneChangeResult, lane_change, max_pass_speed
 from .study import run_study
@@ -17,7 +17,7 @@ __all__ = [
     "Error", "InputError", "NumericalError", "Input", "Simulation",
     "load", "from_dict", "from_yaml", "check",
     "Results", "read_results",
-    "run_file", "fe_modes", "fe_info", "fe_export", "reduce", "body_info",
+    "run_file", "fe_modes", "fe_mode_shapes", "fe_info", "fe_export", "reduce", "body_info",
     "Body", "read_body",
     "LaneChangeResult", "lane_change", "max_pass_speed",
     "run_study",

@@ -61,3 +61,12 @@ def reduce(model, output, interface="", modes=-1, cutoff_hz=0.0, keep=-1, fix=""
 def body_info(body):
     """`flexmb body info --json`."""
     return json.loads(_core.body_info(os.fspath(body)))
+
+
+def fe_mode_shapes(model, count=10, fix="", lumped=False, shift=0.0):
+    """The modes of `fe modes` with their shapes as numpy: frequencies_hz
+    (count), shapes (6 rows per node: ux uy uz [m] rx ry rz [rad], M-orthonormal,
+    x count), nodes (N x 3) [m], node_ids, dofs (free DOF)."""
+    if isinstance(fix, (list, tuple)):
+        fix = ",".join(str(i) for i in fix)
+    return _core.fe_mode_shapes(os.fspath(model), count, fix, lumped, shift)

@@ -86,3 +86,22 @@ def test_flexible_body_modal_coordinates_are_views(strip, tmp_path):
     # (generalized-alpha at omega h = 0.017: phase and amplitude errors of order (omega h)^2 = 3e-4)
     assert w[0] == pytest.approx(1e-3 * math.cos(omega * 0.01), abs=1e-6)
     assert np.abs(w[1:]).max() < 1e-12
+
+
+def test_fe_mode_shapes_free_strip(strip):
+    r = flexmb.fe_mode_shapes(strip, count=8)
+    np.testing.assert_array_equal(r["frequencies_hz"], flexmb.fe_modes(strip, count=8)["frequencies_hz"])
+    assert r["shapes"].shape == (6 * 63, 8) and r["nodes"].shape == (63, 3) and r["dofs"] == 378
+    # first flexible mode: Euler-Bernoulli free-free beam, M-orthonormal: phi(x) / sqrt(m) with
+    # phi = cosh bx + cos bx - s (sinh bx + sin bx), b L = 4.730041, s = 0.982502 (phi(0) = 2)
+    bl, s = 4.730040745, 0.982502215
+
+    def phi(x):
+        b = bl * x / L
+        return (np.cosh(b) + np.cos(b) - s * (np.sinh(b) + np.sin(b))) / math.sqrt(MASS)
+
+    u = r["shapes"][:, 6].reshape(-1, 6)
+    x = r["nodes"][:, 0]
+    sign = np.sign(u[0, 2]) * np.sign(phi(x[0]))
+    np.testing.assert_allclose(sign * u[:, 2], phi(x), rtol=0, atol=0.01 * phi(0.0))
+    assert np.abs(u[:, :2]).max() < 1e-12  # bending out of plane only
