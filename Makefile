@@ -1,6 +1,6 @@
 # Entry points. `make demo` and `make test` work on a fresh machine: both
 # install the Debian packages (scripts/install-deps.sh) and build first.
-.PHONY: deps build demo test test-unit test-asan fuzz bench clean
+.PHONY: deps build demo test test-unit test-python python test-asan fuzz bench clean
 
 JOBS ?= $(shell nproc)
 BUILD := build/release
@@ -22,6 +22,13 @@ test: build
 
 test-unit: build
 	ctest --preset release -j $(JOBS) -L unit
+
+# The Python module (docs/python.md): built by `build`; prints how to import it.
+python: build
+	@echo "flexmb Python module: export PYTHONPATH=$(CURDIR)/$(BUILD)/python (then /usr/bin/python3 -c 'import flexmb')"
+
+test-python: build
+	ctest --preset release -j $(JOBS) -L python
 
 test-asan: deps
 	cmake --preset asan >/dev/null

@@ -19,6 +19,8 @@ PACKAGES=(
   pybind11-dev python3-dev python3-numpy python3-matplotlib
   # peer codes for cross-checks
   calculix-ccx gmsh
+  # Python module tests (ctest label python; docs/python.md)
+  python3-pytest
 )
 
 missing=()

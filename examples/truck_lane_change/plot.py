@@ -13,6 +13,7 @@ element) over time.
 """
 import argparse
 import csv
+import importlib.util
 import json
 import os
 
@@ -35,6 +36,16 @@ def load(run_dir):
     except (OSError, KeyError, ValueError):
         pass
     return label, cols
+
+
+def flexmb_plot():
+    """The plot helpers of the Python module (python/flexmb/plot.py), loaded
+    from the source tree: they need matplotlib only, not the compiled core."""
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python", "flexmb", "plot.py")
+    spec = importlib.util.spec_from_file_location("flexmb_plot", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
 
 
 def mark_run_up(ax, runs):
@@ -64,19 +75,7 @@ def main():
         ("axle_loads", "axle load [kN]", ["front_axle_load_kN", "rear_axle_load_kN"]),
         ("tire_loads", "tire vertical load [kN] (rear: twin set)", ["fz_fl_kN", "fz_fr_kN", "fz_rl_kN", "fz_rr_kN"]),
     ]
-    for name, ylabel, keys in panels:
-        fig, ax = plt.subplots(figsize=(7, 4))
-        for label, c in runs:
-            for k in keys:
-                ax.plot(c["time"], c[k], label=label + ("" if len(keys) == 1 else " " + k.rsplit("_", 1)[0]))
-        mark_run_up(ax, runs)
-        ax.set_xlabel("time [s]")
-        ax.set_ylabel(ylabel)
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=7)
-        fig.tight_layout()
-        fig.savefig(os.path.join(out, name + ".png"), dpi=110)
-        plt.close(fig)
+    flexmb_plot().overlay(runs, panels, out_dir=out, decorate=mark_run_up)
     elastic = [(label, c) for label, c in runs if "frame_max_displacement_mm" in c]
     for name, key, pos, ylabel in [
         ("frame_deflection", "frame_max_displacement_mm", "frame_max_displacement_x",

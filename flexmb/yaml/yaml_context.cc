@@ -5,6 +5,7 @@
 #include <sstream>
 #include <vector>
 
+#include "flexmb/math/input_function.h"
 
 namespace flexmb {
 namespace {
@@ -245,9 +246,16 @@ std::shared_ptr<const ScalarFunction> YamlContext::Function(const YAML::Node& no
   const YAML::Node f = Required(*this, node, key);
   if (f.IsScalar()) return std::make_shared<ConstantFunction>(Number(f, Quoted(key)));
   if (!f.IsMap())
-    Fail(f, "expected a number, {expression: ...} or {table: ...} for " + Quoted(key) + ", got " +
-                Describe(f));
-  CheckKeys(f, {"expression", "table", "interpolation", "extrapolate"});
+    Fail(f, "expected a number, {expression: ...}, {table: ...} or {input: ...} for " + Quoted(key) +
+                ", got " + Describe(f));
+  if (f["input"]) {
+    // a value set by a script between steps (math/input_function.h)
+    CheckKeys(f, {"input", "initial"});
+    const std::string name = String(f, "input");
+    if (name.empty()) Fail(f["input"], "'input' needs a name");
+    return std::make_shared<InputFunction>(RegisterInput(name, Double(f, "initial", 0.0)));
+  }
+  CheckKeys(f, {"expression", "table", "interpolation", "extrapolate", "input"});
   if (f["expression"] && f["table"]) Fail(f, "give either 'expression' or 'table', not both");
   if (f["expression"]) {
     if (f["interpolation"] || f["extrapolate"])

@@ -82,7 +82,7 @@ class YamlContext {
   Mat3 Orientation(const YAML::Node& node, const char* key) const;
   /// A function at node[key]: a number (constant), {expression: "..."}
   /// in `variable`, or {table: [[x, y], ...], interpolation: linear|spline,
-  /// extrapolate: bool}.
+  /// extrapolate: bool}, or {input: NAME, initial: VALUE} (math/input_function.h).
   std::shared_ptr<const ScalarFunction> Function(const YAML::Node& node, const char* key,
                                                   const char* variable = "t") const;
 

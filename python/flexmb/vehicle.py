@@ -1,0 +1,53 @@
+"""The truck lane change (`flexmb run truck.yaml`) and the max-speed search
+(`flexmb truck max-speed`) from Python."""
+
+import dataclasses
+import json
+import os
+
+from . import _core
+from .results import read_results
+
+
+@dataclasses.dataclass
+class LaneChangeResult:
+    """Outcome and metrics of one lane change (keys of summary.json; speeds
+    in km/h, times in s, lengths in m, angles in deg, accelerations in m/s^2,
+    loads in N, stresses in Pa) and the results (Results, or None when no
+    output directory was written)."""
+    metrics: dict
+    results: object = None
+
+    @property
+    def passed(self):
+        """Completed without leaving the corridor or lifting a wheel."""
+        return bool(self.metrics.get("passed"))
+
+    @property
+    def completed(self):
+        return bool(self.metrics.get("completed"))
+
+    def __getattr__(self, name):
+        metrics = self.__dict__.get("metrics", {})
+        if name in metrics:
+            return metrics[name]
+        raise AttributeError(name)
+
+
+def lane_change(file, speed_kmh=None, frame=None, dt=None, out_dir=None, stop_on_failure=False,
+                stop_distance=None, run_up_time=None):
+    """Runs the lane-change test of `file` at speed_kmh [km/h] with a 'rigid'
+    or 'elastic' frame (None: as the file says). With out_dir, results.csv
+    and summary.json are written there and read back into .results."""
+    text = _core.lane_change(os.fspath(file), speed_kmh, frame, dt, os.fspath(out_dir) if out_dir else "",
+                             stop_on_failure, stop_distance, run_up_time)
+    metrics = json.loads(text)
+    results = read_results(out_dir) if out_dir and os.path.exists(os.path.join(out_dir, "results.csv")) else None
+    return LaneChangeResult(metrics, results)
+
+
+def max_pass_speed(file, low, high, tol=0.5, frame=None):
+    """Highest entry speed [km/h] in [low, high] at which the test is passed
+    (bisection to tol km/h). Returns None if even `low` fails."""
+    v, low_ok = _core.max_pass_speed(os.fspath(file), low, high, tol, frame)
+    return v if low_ok else None
