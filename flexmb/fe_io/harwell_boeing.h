@@ -51,7 +51,8 @@ struct HarwellBoeingWriteOptions {
 /// the fewest digits (up to 17 significant, or 19 for huge or tiny ones)
 /// that read back to the same double, so writing and reading back is bit
 /// for bit; it picks the type from the values: RSA/RUA, or ISA/IUA when all
-/// are integers, PSA/PUA when all are 1. Throws InputError naming the path
+/// are integers, PSA/PUA when all are 1. The integer format has no negative
+/// zero: a -0.0 in an integer-valued matrix reads back as +0.0. Throws InputError naming the path
 /// for a non-square or empty matrix, a non-finite value, an asymmetric
 /// matrix with `symmetric` set, or an I/O failure.
 void WriteHarwellBoeing(const fe::SparseMat& A, const std::string& path,

@@ -150,6 +150,32 @@ TEST(HarwellBoeing, RbioWritesUnitAndIntegerMatricesAsPatternAndInteger) {
   ExpectBitIdentical(b.A, K);
 }
 
+// RBio's integer format has no negative zero (found by the fuzzer): an
+// integer-valued matrix with -0.0 is written as ISA and reads back with +0.0,
+// equal in value; a real matrix keeps its -0.0 bit for bit
+TEST(HarwellBoeing, NegativeZeroOfAnIntegerMatrixReadsBackAsPositiveZero) {
+  fe::SparseMat K = testing::IntegerTestMatrix().sparseView();
+  K.makeCompressed();
+  K.coeffRef(1, 0) = -0.0;
+  K.coeffRef(0, 1) = -0.0;
+  const std::string p1 = ScratchPath("negative_zero_integer.hb");
+  WriteHarwellBoeing(K, p1);
+  const HarwellBoeingMatrix a = ReadHarwellBoeing(p1);
+  EXPECT_EQ(a.type, "ISA");
+  EXPECT_EQ(a.A.coeff(1, 0), 0.0);
+  EXPECT_FALSE(std::signbit(a.A.coeff(1, 0)));
+  EXPECT_EQ(a.A.nonZeros(), K.nonZeros());
+  EXPECT_EQ(Eigen::MatrixXd(a.A), Eigen::MatrixXd(K));
+
+  K.coeffRef(2, 2) = 0.5;
+  const std::string p2 = ScratchPath("negative_zero_real.hb");
+  WriteHarwellBoeing(K, p2);
+  const HarwellBoeingMatrix b = ReadHarwellBoeing(p2);
+  EXPECT_EQ(b.type, "RSA");
+  EXPECT_TRUE(std::signbit(b.A.coeff(1, 0)));
+  ExpectBitIdentical(b.A, K);
+}
+
 TEST(HarwellBoeing, WriteRejectsAsymmetricNonFiniteAndEmpty) {
   Eigen::MatrixXd dense = Eigen::MatrixXd::Identity(10, 10) * 4.0;
   dense(2, 7) = dense(7, 2) = -1.5;
