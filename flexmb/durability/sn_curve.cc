@@ -1,9 +1,10 @@
 #include "flexmb/durability/sn_curve.h"
 
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <sstream>
+
+#include "flexmb/common/number_table.h"
 
 namespace flexmb::durability {
 namespace {
@@ -103,34 +104,13 @@ SnCurve SnCurve::Table(const std::vector<double>& cycles, const std::vector<doub
 }
 
 SnCurve SnCurve::ReadCsv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError("cannot open the S-N file", {path, 0, ""});
+  const NumberTable table = ReadNumberTable(path, 2, "S-N file", "cycles, range");
   std::vector<double> n, s;
-  std::vector<int> lines;
-  std::string line;
-  bool header_allowed = true;
-  for (int ln = 1; std::getline(in, line); ++ln) {
-    const size_t hash = line.find('#');
-    if (hash != std::string::npos) line.resize(hash);
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    for (char& ch : line)
-      if (ch == ',' || ch == ';') ch = ' ';
-    std::istringstream fields(line);
-    double a = 0, b = 0;
-    std::string rest;
-    if (!(fields >> a >> b) || (fields >> rest)) {
-      if (header_allowed && n.empty()) {
-        header_allowed = false;
-        continue;
-      }
-      throw InputError("S-N file: expected two numbers 'cycles, range'", {path, ln, ""});
-    }
-    header_allowed = false;
-    n.push_back(a);
-    s.push_back(b);
-    lines.push_back(ln);
+  for (const std::vector<double>& row : table.rows) {
+    n.push_back(row[0]);
+    s.push_back(row[1]);
   }
-  return Table(n, s, {path, 0, ""}, lines);
+  return Table(n, s, {path, 0, ""}, table.lines);
 }
 
 double SnCurve::Cycles(double s) const {

@@ -4,14 +4,24 @@
 #include <cctype>
 #include <cmath>
 #include <complex>
-#include <fstream>
 #include <random>
-#include <sstream>
+#include <cstdio>
 #include <unsupported/Eigen/FFT>
 
 #include "flexmb/common/error.h"
+#include "flexmb/common/number_table.h"
 
 namespace flexmb::vehicle {
+namespace {
+
+// a number as it would be written in the file (%g)
+std::string RoadNumber(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+}  // namespace
 
 double RoadProfile::Height(int side, double at) const {
   const std::vector<double>& z = side == 0 ? z_left : z_right;
@@ -73,38 +83,14 @@ RoadProfile GenerateIso8608(const Iso8608Options& o) {
 }
 
 RoadProfile ReadRoadCsv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError("cannot open the road file", {path, 0, ""});
+  const NumberTable table = ReadNumberTable(path, 3, "road file", "x, z_left, z_right");
   RoadProfile r;
-  std::string line;
-  bool header_allowed = true;
-  for (int ln = 1; std::getline(in, line); ++ln) {
-    const size_t hash = line.find('#');
-    if (hash != std::string::npos) line.resize(hash);
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    for (char& ch : line)
-      if (ch == ',' || ch == ';') ch = ' ';
-    std::istringstream fields(line);
-    std::string s[3], rest;
-    double v[3];
-    bool ok = static_cast<bool>(fields >> s[0] >> s[1] >> s[2]) && !(fields >> rest);
-    for (int i = 0; ok && i < 3; ++i) {
-      char* end = nullptr;
-      v[i] = std::strtod(s[i].c_str(), &end);
-      ok = end != s[i].c_str() && *end == '\0';
+  for (size_t k = 0; k < table.rows.size(); ++k) {
+    const std::vector<double>& v = table.rows[k];
+    if (!r.x.empty() && !(v[0] > r.x.back())) {
+      throw InputError("road file: x not increasing (" + RoadNumber(v[0]) + " after " + RoadNumber(r.x.back()) + ")",
+                       {path, table.lines[k], ""});
     }
-    if (!ok) {
-      if (header_allowed && r.x.empty()) {
-        header_allowed = false;
-        continue;
-      }
-      throw InputError("road file: expected three numbers 'x, z_left, z_right'", {path, ln, ""});
-    }
-    header_allowed = false;
-    for (double a : v)
-      if (!std::isfinite(a)) throw InputError("road file: NaN or infinite value", {path, ln, ""});
-    if (!r.x.empty() && !(v[0] > r.x.back()))
-      throw InputError("road file: x not increasing (" + s[0] + " after the previous line's value)", {path, ln, ""});
     r.x.push_back(v[0]);
     r.z_left.push_back(v[1]);
     r.z_right.push_back(v[2]);
