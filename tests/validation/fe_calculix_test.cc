@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "ccx_compare.h"
 #include "ccx_runner.h"
 #include "flexmb/common/log.h"
 #include "flexmb/fe/assembly.h"
@@ -32,52 +33,18 @@ namespace flexmb::fe {
 namespace fe_calculix_test {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kE = 2.1e11, kNu = 0.3, kRho = 7850.0;
+constexpr double kE = flexmb::testing::kCcxE, kNu = flexmb::testing::kCcxNu, kRho = flexmb::testing::kCcxRho;
 
+using flexmb::testing::CcxDeck;
 using flexmb::testing::CcxScratchDir;
+using flexmb::testing::CcxSteelMesh;
+using flexmb::testing::FlexmbFrequencies;
 using flexmb::testing::HaveCcx;
+using flexmb::testing::MaxRelDiff;
 using flexmb::testing::ParseCcxFrequencies;
+using flexmb::testing::ParseCcxMatrix;
+using flexmb::testing::PrintFrequencies;
 using flexmb::testing::RunCcx;
-
-std::string ReadText(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// A matrix ccx writes with SOLVER=MATRIXSTORAGE (job.sti, job.mas): one
-// "row column value" line per entry of the upper triangle, 1-based.
-Eigen::MatrixXd ParseCcxMatrix(const std::filesystem::path& file, int n) {
-  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
-  std::ifstream in(file);
-  int i = 0, j = 0;
-  double v = 0.0;
-  while (in >> i >> j >> v) {
-    a(i - 1, j - 1) = v;
-    a(j - 1, i - 1) = v;
-  }
-  return a;
-}
-
-// The deck of `mesh` with `type_from` element types renamed to `type_to`
-// (empty: none) and a *FREQUENCY step for `count` modes (or the matrix
-// storage step if count == 0).
-std::string Deck(const Mesh& mesh, const std::filesystem::path& dir, int count, const std::string& type_from = "",
-                 const std::string& type_to = "") {
-  io::WriteAbaqus(mesh, (dir / "model.inp").string());
-  std::string deck = ReadText(dir / "model.inp");
-  if (!type_from.empty()) {
-    const std::string from = "TYPE=" + type_from + ",", to = "TYPE=" + type_to + ",";
-    for (size_t p = deck.find(from); p != std::string::npos; p = deck.find(from, p + to.size()))
-      deck.replace(p, from.size(), to);
-  }
-  if (count > 0)
-    deck += "*STEP\n*FREQUENCY\n" + std::to_string(count) + "\n*END STEP\n";
-  else
-    deck += "*STEP\n*FREQUENCY, SOLVER=MATRIXSTORAGE\n*END STEP\n";
-  return deck;
-}
 
 int AddNode(Mesh& m, const Vec3& x) {
   Node n;
@@ -96,19 +63,6 @@ void AddElement(Mesh& m, ElementType type, std::vector<int> nodes) {
   m.elements.push_back(std::move(e));
 }
 
-Mesh SteelMesh() {
-  Mesh m;
-  Material mat;
-  mat.id = 1;
-  mat.name = "STEEL";
-  mat.E = kE;
-  mat.nu = kNu;
-  mat.G = kE / (2.0 * (1.0 + kNu));
-  mat.rho = kRho;
-  m.materials.push_back(mat);
-  return m;
-}
-
 // Clamps (components `mask`) every node with x = 0.
 void ClampRoot(Mesh& m, int mask) {
   for (size_t n = 0; n < m.nodes.size(); ++n) {
@@ -124,7 +78,7 @@ void ClampRoot(Mesh& m, int mask) {
 
 // Cantilever block 1 x 0.2 x 0.2 m (steel) of nx x ny x nz 8-node hexahedra.
 Mesh HexCantilever(int nx, int ny, int nz) {
-  Mesh m = SteelMesh();
+  Mesh m = CcxSteelMesh();
   m.solid_sections.push_back({1, 0, {}});
   auto id = [&](int i, int j, int k) { return (k * (ny + 1) + j) * (nx + 1) + i; };
   for (int k = 0; k <= nz; ++k)
@@ -143,7 +97,7 @@ Mesh HexCantilever(int nx, int ny, int nz) {
 // The same block of 10-node tetrahedra: every hexahedral cell split into
 // six (Kuhn) along its diagonal, mid-edge nodes on the straight edges.
 Mesh TetCantilever(int nx, int ny, int nz) {
-  Mesh m = SteelMesh();
+  Mesh m = CcxSteelMesh();
   m.solid_sections.push_back({1, 0, {}});
   const Vec3 h(1.0 / nx, 0.2 / ny, 0.2 / nz);
   std::map<std::array<long, 3>, int> index;
@@ -181,7 +135,7 @@ Mesh TetCantilever(int nx, int ny, int nz) {
 // Square steel plate a = 1 m, t = 10 mm, n x n elements (quads, or each
 // quad split into two triangles), clamped along x = 0, free elsewhere.
 Mesh CantileverPlate(int n, bool triangles) {
-  Mesh m = SteelMesh();
+  Mesh m = CcxSteelMesh();
   ShellSection s;
   s.id = 1;
   s.material = 0;
@@ -204,13 +158,6 @@ Mesh CantileverPlate(int n, bool triangles) {
   return m;
 }
 
-std::vector<double> FlexmbModes(const AssembledModel& model, int count) {
-  ModalOptions o;
-  o.count = count;
-  const ModalResult r = SolveModes(model, o);
-  return std::vector<double>(r.frequencies_hz.data(), r.frequencies_hz.data() + r.frequencies_hz.size());
-}
-
 // Replaces K (which = 0) or M (which = 1) of `model` by the sum of the
 // element matrices `element(e, x)` of the mesh's solid elements.
 void ReplaceMatrix(const Mesh& mesh, AssembledModel& model, int which,
@@ -231,19 +178,6 @@ void ReplaceMatrix(const Mesh& mesh, AssembledModel& model, int which,
   target.setFromTriplets(t.begin(), t.end());
 }
 
-double MaxRelDiff(const std::vector<double>& a, const std::vector<double>& b) {
-  EXPECT_EQ(a.size(), b.size());
-  double d = 0.0;
-  for (size_t k = 0; k < std::min(a.size(), b.size()); ++k) d = std::max(d, std::abs(a[k] - b[k]) / std::abs(b[k]));
-  return d;
-}
-
-void Print(const char* what, const std::vector<double>& f) {
-  std::printf("  %-36s", what);
-  for (double v : f) std::printf(" %13.8g", v);
-  std::printf("\n");
-}
-
 ElementInput Input(const Element& e, const Vec3* x, const Material& mat) {
   ElementInput in;
   in.element = &e;
@@ -261,7 +195,7 @@ TEST(FeCalculix, Hex8FullIntegrationMatchesC3D8) {
   if (!HaveCcx()) GTEST_SKIP() << "ccx (CalculiX) is not installed";
   const Mesh mesh = HexCantilever(8, 2, 2);
   CcxScratchDir dir("hex_c3d8");
-  ASSERT_TRUE(RunCcx(dir.path, "job", Deck(mesh, dir.path, 6, "C3D8I", "C3D8")));
+  ASSERT_TRUE(RunCcx(dir.path, "job", CcxDeck(mesh, dir.path, 6, "C3D8I", "C3D8")));
   const std::vector<double> ccx = ParseCcxFrequencies(dir.path / "job.dat");
   AssembledModel model = Assemble(mesh);
   ReplaceMatrix(mesh, model, 0, [&](const Element& e, const Vec3* x) {
@@ -269,9 +203,9 @@ TEST(FeCalculix, Hex8FullIntegrationMatchesC3D8) {
     SolidHex8Matrices(Input(e, x, mesh.materials[0]), k, m, Hex8Formulation::kFullIntegration);
     return k;
   });
-  const std::vector<double> ours = FlexmbModes(model, 6);
-  Print("ccx C3D8 8x2x2 [Hz]", ccx);
-  Print("flexmb hex8 full integration", ours);
+  const std::vector<double> ours = FlexmbFrequencies(model, 6);
+  PrintFrequencies("ccx C3D8 8x2x2 [Hz]", ccx);
+  PrintFrequencies("flexmb hex8 full integration", ours);
   ASSERT_EQ(ccx.size(), 6u);
   std::printf("  max rel diff %.2e\n", MaxRelDiff(ours, ccx));
   EXPECT_LT(MaxRelDiff(ours, ccx), 1e-6);
@@ -287,7 +221,7 @@ TEST(FeCalculix, Hex8IncompatibleModesVsC3D8I) {
   if (!HaveCcx()) GTEST_SKIP() << "ccx (CalculiX) is not installed";
   {
     // one sheared (parallelepiped) element through matrix storage
-    Mesh one = SteelMesh();
+    Mesh one = CcxSteelMesh();
     one.solid_sections.push_back({1, 0, {}});
     Eigen::Matrix3d a;
     a << 0.5, 0.1, 0.05, 0.02, 0.3, 0.08, -0.03, 0.04, 0.2;
@@ -296,7 +230,7 @@ TEST(FeCalculix, Hex8IncompatibleModesVsC3D8I) {
     AddElement(one, ElementType::kHex8, {0, 1, 2, 3, 4, 5, 6, 7});
     one.IndexNodes();
     CcxScratchDir dir("hex_c3d8i_matrix");
-    ASSERT_TRUE(RunCcx(dir.path, "job", Deck(one, dir.path, 0)));
+    ASSERT_TRUE(RunCcx(dir.path, "job", CcxDeck(one, dir.path, 0)));
     const Eigen::MatrixXd s33 = ParseCcxMatrix(dir.path / "job.sti", 33);
     const Eigen::MatrixXd kc = s33.topLeftCorner(24, 24) -
                                s33.topRightCorner(24, 9) * s33.bottomRightCorner(9, 9).ldlt().solve(s33.bottomLeftCorner(9, 24));
@@ -315,11 +249,11 @@ TEST(FeCalculix, Hex8IncompatibleModesVsC3D8I) {
     const int r = 1 << level;
     const Mesh mesh = HexCantilever(8 * r, 2 * r, 2 * r);
     CcxScratchDir dir("hex_c3d8i_" + std::to_string(level));
-    ASSERT_TRUE(RunCcx(dir.path, "job", Deck(mesh, dir.path, 6)));
+    ASSERT_TRUE(RunCcx(dir.path, "job", CcxDeck(mesh, dir.path, 6)));
     const std::vector<double> ccx = ParseCcxFrequencies(dir.path / "job.dat");
-    const std::vector<double> ours = FlexmbModes(Assemble(mesh), 6);
-    Print(level == 0 ? "ccx C3D8I 8x2x2 [Hz]" : "ccx C3D8I 16x4x4 [Hz]", ccx);
-    Print("flexmb hex8 (incompatible modes)", ours);
+    const std::vector<double> ours = FlexmbFrequencies(Assemble(mesh), 6);
+    PrintFrequencies(level == 0 ? "ccx C3D8I 8x2x2 [Hz]" : "ccx C3D8I 16x4x4 [Hz]", ccx);
+    PrintFrequencies("flexmb hex8 (incompatible modes)", ours);
     ASSERT_EQ(ccx.size(), 6u);
     diff[level] = MaxRelDiff(ours, ccx);
   }
@@ -357,7 +291,7 @@ MatX Tet10FourPointMass(const Vec3* x, double rho) {
 TEST(FeCalculix, Tet10MatchesC3D10) {
   if (!HaveCcx()) GTEST_SKIP() << "ccx (CalculiX) is not installed";
   {
-    Mesh one = SteelMesh();
+    Mesh one = CcxSteelMesh();
     one.solid_sections.push_back({1, 0, {}});
     const Vec3 c[4] = {{0.0, 0.0, 0.0}, {0.4, 0.05, 0.02}, {0.1, 0.3, -0.03}, {0.05, 0.08, 0.25}};
     for (const Vec3& p : c) AddNode(one, p);
@@ -366,7 +300,7 @@ TEST(FeCalculix, Tet10MatchesC3D10) {
     AddElement(one, ElementType::kTet10, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9});
     one.IndexNodes();
     CcxScratchDir dir("tet10_matrix");
-    ASSERT_TRUE(RunCcx(dir.path, "job", Deck(one, dir.path, 0)));
+    ASSERT_TRUE(RunCcx(dir.path, "job", CcxDeck(one, dir.path, 0)));
     std::vector<Vec3> x;
     for (const Node& n : one.nodes) x.push_back(n.x);
     MatX k, m;
@@ -384,15 +318,15 @@ TEST(FeCalculix, Tet10MatchesC3D10) {
   }
   const Mesh mesh = TetCantilever(8, 2, 2);
   CcxScratchDir dir("tet10");
-  ASSERT_TRUE(RunCcx(dir.path, "job", Deck(mesh, dir.path, 6)));
+  ASSERT_TRUE(RunCcx(dir.path, "job", CcxDeck(mesh, dir.path, 6)));
   const std::vector<double> ccx = ParseCcxFrequencies(dir.path / "job.dat");
   AssembledModel model = Assemble(mesh);
-  const std::vector<double> exact = FlexmbModes(model, 6);
+  const std::vector<double> exact = FlexmbFrequencies(model, 6);
   ReplaceMatrix(mesh, model, 1, [&](const Element&, const Vec3* x) { return Tet10FourPointMass(x, kRho); });
-  const std::vector<double> four = FlexmbModes(model, 6);
-  Print("ccx C3D10 8x2x2x6 [Hz]", ccx);
-  Print("flexmb tet10, 4-point mass", four);
-  Print("flexmb tet10, exact mass", exact);
+  const std::vector<double> four = FlexmbFrequencies(model, 6);
+  PrintFrequencies("ccx C3D10 8x2x2x6 [Hz]", ccx);
+  PrintFrequencies("flexmb tet10, 4-point mass", four);
+  PrintFrequencies("flexmb tet10, exact mass", exact);
   ASSERT_EQ(ccx.size(), 6u);
   std::printf("  max rel diff: 4-point mass %.2e, exact mass %.2e\n", MaxRelDiff(four, ccx), MaxRelDiff(exact, ccx));
   EXPECT_LT(MaxRelDiff(four, ccx), 1e-6);
@@ -415,20 +349,20 @@ TEST(FeCalculix, ShellPlateVsS4AndLeissa) {
   const double D = kE * 1e-6 / (12.0 * (1.0 - kNu * kNu));
   std::vector<double> leissa;
   for (double l : lambda) leissa.push_back(l / (2.0 * kPi) * std::sqrt(D / (kRho * 0.01)));
-  Print("Leissa (1969) [Hz]", leissa);
+  PrintFrequencies("Leissa (1969) [Hz]", leissa);
   double diff[2] = {0.0, 0.0};
   std::vector<double> ccx_fine;
   for (int level = 0; level < 2; ++level) {
     const int n = 16 << level;
     const Mesh mesh = CantileverPlate(n, false);
     CcxScratchDir dir("plate_" + std::to_string(n));
-    ASSERT_TRUE(RunCcx(dir.path, "job", Deck(mesh, dir.path, 5)));
+    ASSERT_TRUE(RunCcx(dir.path, "job", CcxDeck(mesh, dir.path, 5)));
     const std::vector<double> ccx = ParseCcxFrequencies(dir.path / "job.dat");
-    const std::vector<double> ours = FlexmbModes(Assemble(mesh), 5);
+    const std::vector<double> ours = FlexmbFrequencies(Assemble(mesh), 5);
     // the deck that ccx solved, read back, gives flexmb the same model
-    const std::vector<double> reread = FlexmbModes(Assemble(io::ReadAbaqus((dir.path / "model.inp").string())), 5);
-    Print(n == 16 ? "ccx S4 16x16 [Hz]" : "ccx S4 32x32 [Hz]", ccx);
-    Print(n == 16 ? "flexmb quad4 16x16" : "flexmb quad4 32x32", ours);
+    const std::vector<double> reread = FlexmbFrequencies(Assemble(io::ReadAbaqus((dir.path / "model.inp").string())), 5);
+    PrintFrequencies(n == 16 ? "ccx S4 16x16 [Hz]" : "ccx S4 32x32 [Hz]", ccx);
+    PrintFrequencies(n == 16 ? "flexmb quad4 16x16" : "flexmb quad4 32x32", ours);
     ASSERT_EQ(ccx.size(), 5u);
     EXPECT_LT(MaxRelDiff(reread, ours), 1e-12);
     diff[level] = MaxRelDiff(ours, ccx);
@@ -442,8 +376,8 @@ TEST(FeCalculix, ShellPlateVsS4AndLeissa) {
   EXPECT_LT(diff[0], 0.015);
   EXPECT_LT(diff[1], 0.003);
   EXPECT_LT(diff[1], diff[0] / 2.0);
-  const std::vector<double> tria = FlexmbModes(Assemble(CantileverPlate(32, true)), 5);
-  Print("flexmb tria3 32x32x2", tria);
+  const std::vector<double> tria = FlexmbFrequencies(Assemble(CantileverPlate(32, true)), 5);
+  PrintFrequencies("flexmb tria3 32x32x2", tria);
   EXPECT_LT(MaxRelDiff(tria, ccx_fine), 0.005);
   EXPECT_LT(MaxRelDiff(tria, leissa), 0.01);
 }

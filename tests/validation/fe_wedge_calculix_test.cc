@@ -16,93 +16,40 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <functional>
-#include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "ccx_compare.h"
 #include "ccx_runner.h"
 #include "flexmb/fe/assembly.h"
 #include "flexmb/fe/elements/solid_wedge15.h"
 #include "flexmb/fe/elements/solid_wedge6.h"
-#include "flexmb/fe/modal.h"
-#include "flexmb/fe_io/abaqus/abaqus_writer.h"
 
 namespace flexmb::fe {
 namespace fe_wedge_calculix_test {
 
-constexpr double kE = 2.1e11, kNu = 0.3, kRho = 7850.0;
-
+using flexmb::testing::CcxDeck;
 using flexmb::testing::CcxScratchDir;
+using flexmb::testing::CcxSteelMesh;
+using flexmb::testing::FlexmbFrequencies;
 using flexmb::testing::HaveCcx;
+using flexmb::testing::MatrixRelDiff;
+using flexmb::testing::MaxRelDiff;
+using flexmb::testing::MeshNodeIndexer;
 using flexmb::testing::ParseCcxFrequencies;
+using flexmb::testing::ParseCcxMatrix;
+using flexmb::testing::PrintFrequencies;
 using flexmb::testing::RunCcx;
 
-std::string ReadText(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// a matrix of ccx's matrix storage: "row column value" per upper-triangle entry, 1-based
-Eigen::MatrixXd ParseCcxMatrix(const std::filesystem::path& file, int n) {
-  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
-  std::ifstream in(file);
-  int i = 0, j = 0;
-  double v = 0.0;
-  while (in >> i >> j >> v) {
-    a(i - 1, j - 1) = v;
-    a(j - 1, i - 1) = v;
-  }
-  return a;
-}
-
-// the deck of `mesh` and a *FREQUENCY step for `count` modes (0: matrix storage)
-std::string Deck(const Mesh& mesh, const std::filesystem::path& dir, int count) {
-  io::WriteAbaqus(mesh, (dir / "model.inp").string());
-  std::string deck = ReadText(dir / "model.inp");
-  if (count > 0)
-    deck += "*STEP\n*FREQUENCY\n" + std::to_string(count) + "\n*END STEP\n";
-  else
-    deck += "*STEP\n*FREQUENCY, SOLVER=MATRIXSTORAGE\n*END STEP\n";
-  return deck;
-}
-
-Mesh SteelMesh() {
-  Mesh m;
-  Material mat;
-  mat.id = 1;
-  mat.name = "STEEL";
-  mat.E = kE;
-  mat.nu = kNu;
-  mat.G = kE / (2.0 * (1.0 + kNu));
-  mat.rho = kRho;
-  m.materials.push_back(mat);
+// steel with one solid section
+Mesh WedgeSteelMesh() {
+  Mesh m = CcxSteelMesh();
   m.solid_sections.push_back({1, 0, {}});
   return m;
 }
 
-// a node at x, merged with an existing one at the same place
-struct NodeIndexer {
-  Mesh& m;
-  std::map<std::array<long, 3>, int> index;
-  int operator()(const Vec3& x) {
-    const std::array<long, 3> key = {std::lround(x.x() * 1e9), std::lround(x.y() * 1e9), std::lround(x.z() * 1e9)};
-    auto it = index.find(key);
-    if (it != index.end()) return it->second;
-    Node n;
-    n.id = static_cast<int>(m.nodes.size()) + 1;
-    n.x = x;
-    m.nodes.push_back(n);
-    index.emplace(key, static_cast<int>(m.nodes.size()) - 1);
-    return static_cast<int>(m.nodes.size()) - 1;
-  }
-};
-
-void AddWedge(Mesh& m, NodeIndexer& node, const std::array<Vec3, 6>& c, bool quadratic) {
+void AddWedge(Mesh& m, MeshNodeIndexer& node, const std::array<Vec3, 6>& c, bool quadratic) {
   Element e;
   e.id = static_cast<int>(m.elements.size()) + 1;
   e.type = quadratic ? kWedge15 : kWedge6;
@@ -117,8 +64,8 @@ void AddWedge(Mesh& m, NodeIndexer& node, const std::array<Vec3, 6>& c, bool qua
 // two wedges along z (split along the diagonal of its x-y face), clamped
 // (translations) at x = 0
 Mesh WedgeCantilever(int nx, int ny, int nz, bool quadratic) {
-  Mesh m = SteelMesh();
-  NodeIndexer node{m, {}};
+  Mesh m = WedgeSteelMesh();
+  MeshNodeIndexer node{m, {}};
   const Vec3 h(1.0 / nx, 0.2 / ny, 0.2 / nz);
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
@@ -135,8 +82,8 @@ Mesh WedgeCantilever(int nx, int ny, int nz, bool quadratic) {
 
 // one distorted wedge with straight edges
 Mesh OneWedge(bool quadratic) {
-  Mesh m = SteelMesh();
-  NodeIndexer node{m, {}};
+  Mesh m = WedgeSteelMesh();
+  MeshNodeIndexer node{m, {}};
   AddWedge(m, node,
            {Vec3(0.0, 0.0, 0.0), Vec3(0.4, 0.05, 0.02), Vec3(0.1, 0.3, -0.03), Vec3(0.02, -0.01, 0.25),
             Vec3(0.45, 0.03, 0.3), Vec3(0.12, 0.33, 0.22)},
@@ -153,13 +100,6 @@ ElementInput Input(const Mesh& m, const Element& e, std::vector<Vec3>& x) {
   in.x = x.data();
   in.material = &m.materials[0];
   return in;
-}
-
-std::vector<double> FlexmbModes(const AssembledModel& model, int count) {
-  ModalOptions o;
-  o.count = count;
-  const ModalResult r = SolveModes(model, o);
-  return std::vector<double>(r.frequencies_hz.data(), r.frequencies_hz.data() + r.frequencies_hz.size());
 }
 
 // replaces K and M of `model` by the sums of `element(e, in, K, M)` over the mesh
@@ -184,21 +124,6 @@ void ReplaceMatrices(const Mesh& mesh, AssembledModel& model,
   model.M.setFromTriplets(tm.begin(), tm.end());
 }
 
-double MaxRelDiff(const std::vector<double>& a, const std::vector<double>& b) {
-  EXPECT_EQ(a.size(), b.size());
-  double d = 0.0;
-  for (size_t k = 0; k < std::min(a.size(), b.size()); ++k) d = std::max(d, std::abs(a[k] - b[k]) / std::abs(b[k]));
-  return d;
-}
-
-void Print(const char* what, const std::vector<double>& f) {
-  std::printf("  %-36s", what);
-  for (double v : f) std::printf(" %13.8g", v);
-  std::printf("\n");
-}
-
-double RelDiff(const MatX& a, const MatX& b) { return (a - b).cwiseAbs().maxCoeff() / b.cwiseAbs().maxCoeff(); }
-
 // ---------------------------------------------------------------------------
 
 // C3D6 is flexmb's wedge6 with the two-point rule (stiffness and mass); on
@@ -210,7 +135,7 @@ TEST(FeWedgeCalculix, Wedge6VsC3D6) {
   {
     const Mesh one = OneWedge(false);
     CcxScratchDir dir("wedge6_matrix");
-    ASSERT_TRUE(RunCcx(dir.path, "job", Deck(one, dir.path, 0)));
+    ASSERT_TRUE(RunCcx(dir.path, "job", CcxDeck(one, dir.path, 0)));
     std::vector<Vec3> x;
     MatX k, m, k6, m6;
     SolidWedge6Matrices(Input(one, one.elements[0], x), k, m, Wedge6Integration::kTwoPoint);
@@ -218,29 +143,29 @@ TEST(FeWedgeCalculix, Wedge6VsC3D6) {
     const Eigen::MatrixXd kc = ParseCcxMatrix(dir.path / "job.sti", 18);
     const Eigen::MatrixXd mc = ParseCcxMatrix(dir.path / "job.mas", 18);
     std::printf("  C3D6 vs flexmb wedge6 two-point: stiffness %.2e, mass %.2e; six-point: %.2e, %.2e\n",
-                RelDiff(k, kc), RelDiff(m, mc), RelDiff(k6, kc), RelDiff(m6, mc));
-    EXPECT_LT(RelDiff(k, kc), 1e-10);
-    EXPECT_LT(RelDiff(m, mc), 1e-10);
+                MatrixRelDiff(k, kc), MatrixRelDiff(m, mc), MatrixRelDiff(k6, kc), MatrixRelDiff(m6, mc));
+    EXPECT_LT(MatrixRelDiff(k, kc), 1e-10);
+    EXPECT_LT(MatrixRelDiff(m, mc), 1e-10);
   }
   double diff[2] = {0.0, 0.0};
   for (int level = 0; level < 2; ++level) {
     const int r = 1 << level;
     const Mesh mesh = WedgeCantilever(8 * r, 2 * r, 2 * r, false);
     CcxScratchDir dir("wedge6_" + std::to_string(level));
-    ASSERT_TRUE(RunCcx(dir.path, "job", Deck(mesh, dir.path, 6)));
+    ASSERT_TRUE(RunCcx(dir.path, "job", CcxDeck(mesh, dir.path, 6)));
     const std::vector<double> ccx = ParseCcxFrequencies(dir.path / "job.dat");
     AssembledModel model = Assemble(mesh);
-    const std::vector<double> ours = FlexmbModes(model, 6);
-    Print(level == 0 ? "ccx C3D6 8x2x2x2 [Hz]" : "ccx C3D6 16x4x4x2 [Hz]", ccx);
-    Print("flexmb wedge6 (six-point)", ours);
+    const std::vector<double> ours = FlexmbFrequencies(model, 6);
+    PrintFrequencies(level == 0 ? "ccx C3D6 8x2x2x2 [Hz]" : "ccx C3D6 16x4x4x2 [Hz]", ccx);
+    PrintFrequencies("flexmb wedge6 (six-point)", ours);
     ASSERT_EQ(ccx.size(), 6u);
     diff[level] = MaxRelDiff(ours, ccx);
     if (level == 0) {
       ReplaceMatrices(mesh, model, [](const ElementInput& in, MatX& k, MatX& m) {
         SolidWedge6Matrices(in, k, m, Wedge6Integration::kTwoPoint);
       });
-      const std::vector<double> two = FlexmbModes(model, 6);
-      Print("flexmb wedge6 (two-point)", two);
+      const std::vector<double> two = FlexmbFrequencies(model, 6);
+      PrintFrequencies("flexmb wedge6 (two-point)", two);
       std::printf("  two-point vs ccx: max rel diff %.2e\n", MaxRelDiff(two, ccx));
       EXPECT_LT(MaxRelDiff(two, ccx), 1e-6);
     }
@@ -258,32 +183,32 @@ TEST(FeWedgeCalculix, Wedge15VsC3D15) {
   {
     const Mesh one = OneWedge(true);
     CcxScratchDir dir("wedge15_matrix");
-    ASSERT_TRUE(RunCcx(dir.path, "job", Deck(one, dir.path, 0)));
+    ASSERT_TRUE(RunCcx(dir.path, "job", CcxDeck(one, dir.path, 0)));
     std::vector<Vec3> x;
     MatX k, m, k9, m9;
     SolidWedge15Matrices(Input(one, one.elements[0], x), k, m);
     SolidWedge15Matrices(Input(one, one.elements[0], x), k9, m9, Wedge15Mass::kNinePoint);
     const Eigen::MatrixXd kc = ParseCcxMatrix(dir.path / "job.sti", 45);
     const Eigen::MatrixXd mc = ParseCcxMatrix(dir.path / "job.mas", 45);
-    std::printf("  C3D15 vs flexmb wedge15: stiffness %.2e, mass %.2e (nine-point mass %.2e)\n", RelDiff(k, kc),
-                RelDiff(m, mc), RelDiff(m9, mc));
-    EXPECT_LT(RelDiff(k, kc), 1e-10);
-    EXPECT_LT(RelDiff(m9, mc), 1e-10);
-    EXPECT_GT(RelDiff(m, mc), 1e-3);
+    std::printf("  C3D15 vs flexmb wedge15: stiffness %.2e, mass %.2e (nine-point mass %.2e)\n", MatrixRelDiff(k, kc),
+                MatrixRelDiff(m, mc), MatrixRelDiff(m9, mc));
+    EXPECT_LT(MatrixRelDiff(k, kc), 1e-10);
+    EXPECT_LT(MatrixRelDiff(m9, mc), 1e-10);
+    EXPECT_GT(MatrixRelDiff(m, mc), 1e-3);
   }
   const Mesh mesh = WedgeCantilever(8, 2, 2, true);
   CcxScratchDir dir("wedge15");
-  ASSERT_TRUE(RunCcx(dir.path, "job", Deck(mesh, dir.path, 6)));
+  ASSERT_TRUE(RunCcx(dir.path, "job", CcxDeck(mesh, dir.path, 6)));
   const std::vector<double> ccx = ParseCcxFrequencies(dir.path / "job.dat");
   AssembledModel model = Assemble(mesh);
-  const std::vector<double> exact = FlexmbModes(model, 6);
+  const std::vector<double> exact = FlexmbFrequencies(model, 6);
   ReplaceMatrices(mesh, model, [](const ElementInput& in, MatX& k, MatX& m) {
     SolidWedge15Matrices(in, k, m, Wedge15Mass::kNinePoint);
   });
-  const std::vector<double> nine = FlexmbModes(model, 6);
-  Print("ccx C3D15 8x2x2x2 [Hz]", ccx);
-  Print("flexmb wedge15, nine-point mass", nine);
-  Print("flexmb wedge15, exact mass", exact);
+  const std::vector<double> nine = FlexmbFrequencies(model, 6);
+  PrintFrequencies("ccx C3D15 8x2x2x2 [Hz]", ccx);
+  PrintFrequencies("flexmb wedge15, nine-point mass", nine);
+  PrintFrequencies("flexmb wedge15, exact mass", exact);
   ASSERT_EQ(ccx.size(), 6u);
   std::printf("  max rel diff: nine-point mass %.2e, exact mass %.2e\n", MaxRelDiff(nine, ccx), MaxRelDiff(exact, ccx));
   EXPECT_LT(MaxRelDiff(nine, ccx), 1e-6);
