@@ -186,8 +186,11 @@ void WriteAbaqus(const fe::Mesh& mesh, const std::string& path) {
       run_start = &e;
       run_key = key;
     }
+    // at most 16 entries per data line (Abaqus and CalculiX); a line ending
+    // in a comma continues on the next (C3D20: 21 entries)
     std::fprintf(f, "%d", e.id);
-    for (int n : e.nodes) std::fprintf(f, ", %d", mesh.nodes[n].id);
+    for (size_t k = 0; k < e.nodes.size(); ++k)
+      std::fprintf(f, (k + 1) % 16 == 0 ? ",\n%d" : ", %d", mesh.nodes[e.nodes[k]].id);
     std::fprintf(f, "\n");
   }
   // point masses as MASS and ROTARYI elements: the mass keeps its id if no
