@@ -6,6 +6,7 @@
 #include "flexmb/fe/elements/beam2.h"
 #include "flexmb/fe/elements/shell_quad4.h"
 #include "flexmb/fe/elements/shell_tria3.h"
+#include "flexmb/fe/elements/solid_hex20.h"
 #include "flexmb/fe/elements/solid_hex8.h"
 #include "flexmb/fe/elements/solid_tet10.h"
 #include "flexmb/fe/elements/solid_tet4.h"
@@ -40,6 +41,12 @@ void TraitsBeam2Geometric(const ElementInput& in, const Eigen::VectorXd& u, MatX
 void TraitsHex8Matrices(const ElementInput& in, MatX& K, MatX& M) { SolidHex8Matrices(in, K, M); }
 void TraitsWedge6Matrices(const ElementInput& in, MatX& K, MatX& M) { SolidWedge6Matrices(in, K, M); }
 void TraitsWedge15Matrices(const ElementInput& in, MatX& K, MatX& M) { SolidWedge15Matrices(in, K, M); }
+void TraitsHex20Matrices(const ElementInput& in, MatX& K, MatX& M) {
+  SolidHex20Matrices(in, K, M, Hex20Integration::kFull);
+}
+void TraitsHex20RMatrices(const ElementInput& in, MatX& K, MatX& M) {
+  SolidHex20Matrices(in, K, M, Hex20Integration::kReduced);
+}
 
 // Nastran cards
 constexpr const char* kTraitsCquad4[] = {"CQUAD4"};
@@ -66,6 +73,8 @@ constexpr AbaqusName kTraitsC3D8[] = {{"C3D8I"},
                                       {"C3D8R", AbaqusVariant::kOther, kTraitsOtherHexNote}};
 constexpr AbaqusName kTraitsC3D6[] = {{"C3D6"}};
 constexpr AbaqusName kTraitsC3D15[] = {{"C3D15"}};
+constexpr AbaqusName kTraitsC3D20[] = {{"C3D20"}};
+constexpr AbaqusName kTraitsC3D20R[] = {{"C3D20R"}};
 
 // Abaqus faces (element-based surfaces); a shell's both sides are all its nodes
 constexpr AbaqusFace kTraitsQuadFaces[] = {
@@ -92,6 +101,16 @@ constexpr AbaqusFace kTraitsWedge15Faces[] = {{"S1", 6, {1, 2, 3, 7, 8, 9}},
                                               {"S4", 8, {2, 5, 6, 3, 14, 11, 15, 8}},
                                               {"S5", 8, {3, 6, 4, 1, 15, 12, 13, 9}}};
 
+constexpr AbaqusFace kTraitsHex20Faces[] = {{"S1", 8, {1, 2, 3, 4, 9, 10, 11, 12}},
+                                            {"S2", 8, {5, 8, 7, 6, 16, 15, 14, 13}},
+                                            {"S3", 8, {1, 5, 6, 2, 17, 13, 18, 9}},
+                                            {"S4", 8, {2, 6, 7, 3, 18, 14, 19, 10}},
+                                            {"S5", 8, {3, 7, 8, 4, 19, 15, 20, 11}},
+                                            {"S6", 8, {4, 8, 5, 1, 20, 16, 17, 12}}};
+// Nastran CHEXA: vertical edges (G13-G16) before the top ones (G17-G20)
+constexpr int kTraitsNastranHex20[] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 16, 17, 18, 19, 12, 13, 14, 15};
+// gmsh hexahedron 20: edges 0-1, 0-3, 0-4, 1-2, 1-5, 2-3, 2-6, 3-7, 4-5, 4-7, 5-6, 6-7
+constexpr int kTraitsGmshHex20[] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 11, 13, 9, 16, 18, 19, 17, 10, 12, 14, 15};
 // Nastran CPENTA: vertical edges (G10-G12) before the top ones (G13-G15)
 constexpr int kTraitsNastranWedge15[] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 12, 13, 14, 9, 10, 11};
 
@@ -234,6 +253,37 @@ constexpr ElementTraits kTraitsRows[] = {
      .matrices = TraitsWedge15Matrices,
      .stress = TraitsSolidStress<SolidWedge15Stress>,
      .geometric_stiffness = TraitsGeometric<SolidWedge15GeometricStiffness>},
+    {.type = kHex20,
+     .name = "hex20",
+     .description = "20-node hexahedron",
+     .nodes = 20,
+     .corners = 8,
+     .family = ElementFamily::kSolid,
+     .nastran_cards = kTraitsChexa,
+     .nastran_card_grids = 20,
+     .nastran_order = kTraitsNastranHex20,
+     .abaqus = kTraitsC3D20,
+     .abaqus_faces = kTraitsHex20Faces,
+     .gmsh_code = 17,
+     .gmsh_order = kTraitsGmshHex20,
+     .vtk_code = 25,
+     .body_file_code = 8,
+     .matrices = TraitsHex20Matrices,
+     .stress = TraitsSolidStress<SolidHex20Stress>,
+     .geometric_stiffness = TraitsGeometric<SolidHex20GeometricStiffness>},
+    {.type = kHex20R,
+     .name = "hex20r",
+     .description = "20-node hexahedron, reduced integration",
+     .nodes = 20,
+     .corners = 8,
+     .family = ElementFamily::kSolid,
+     .abaqus = kTraitsC3D20R,
+     .abaqus_faces = kTraitsHex20Faces,
+     .vtk_code = 25,
+     .body_file_code = 9,
+     .matrices = TraitsHex20RMatrices,
+     .stress = TraitsSolidStress<SolidHex20Stress>,
+     .geometric_stiffness = TraitsGeometric<SolidHex20GeometricStiffness>},
 };
 
 constexpr bool TraitsRowsInIdOrder() {

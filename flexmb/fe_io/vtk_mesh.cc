@@ -22,7 +22,8 @@ using fe::ElementType;
 // VTK cell type of a vertex (skipped on reading)
 constexpr int kVertex = 1;
 
-// the row of fe/element_traits.h of a VTK cell type, or null for an unsupported one
+// the row of fe/element_traits.h of a VTK cell type (the first row with the
+// code: hex20, not hex20r), or null for an unsupported one
 const fe::ElementTraits* FromVtk(int code) {
   for (const fe::ElementTraits& t : fe::AllElementTraits())
     if (t.vtk_code == code) return &t;
@@ -33,7 +34,7 @@ const fe::ElementTraits* FromVtk(int code) {
 std::string VtkSupported() {
   std::string s = "1 vertex (ignored)";
   for (const fe::ElementTraits& t : fe::AllElementTraits())
-    if (t.vtk_code > 0) s += ", " + std::to_string(t.vtk_code) + " (" + t.description + ")";
+    if (t.vtk_code > 0 && FromVtk(t.vtk_code) == &t) s += ", " + std::to_string(t.vtk_code) + " (" + t.description + ")";
   return s;
 }
 

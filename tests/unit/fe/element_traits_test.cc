@@ -41,8 +41,21 @@ TEST(ElementTraits, RowsAreComplete) {
     EXPECT_EQ(DofsPerNode(t.type), t.DofsPerNode());
     EXPECT_STREQ(TypeName(t.type), t.description);
     EXPECT_TRUE(t.matrices && t.stress && t.geometric_stiffness) << what;
-    EXPECT_FALSE(t.nastran_cards.empty()) << what;
-    if (t.family == ElementFamily::kSolid) EXPECT_GE(t.nastran_card_grids, t.nodes) << what;
+    // a row without a Nastran card is another integration of an earlier
+    // row's shape (hex20r of hex20): Abaqus names it, VTK writes it as that
+    // row (and reads it back as that row), gmsh has no code for it
+    const ElementTraits* shape_row = nullptr;
+    for (const ElementTraits& u : AllElementTraits()) {
+      if (&u == &t) break;
+      if (u.vtk_code == t.vtk_code && u.nodes == t.nodes && u.family == t.family) shape_row = &u;
+    }
+    const bool variant = t.nastran_cards.empty();
+    EXPECT_EQ(variant, shape_row != nullptr) << what;
+    if (variant) {
+      EXPECT_EQ(t.gmsh_code, 0) << what;
+    } else if (t.family == ElementFamily::kSolid) {
+      EXPECT_GE(t.nastran_card_grids, t.nodes) << what;
+    }
     ASSERT_FALSE(t.abaqus.empty()) << what;
     for (const AbaqusName& a : t.abaqus) EXPECT_TRUE(abaqus.insert(a.name).second) << a.name;
     for (const AbaqusFace& f : t.abaqus_faces)
@@ -52,8 +65,10 @@ TEST(ElementTraits, RowsAreComplete) {
     ExpectPermutation(t.vtk_order, t.nodes, what + " vtk");
     EXPECT_TRUE(body_codes.insert(t.body_file_code).second) << what;
     EXPECT_GE(t.body_file_code, 0) << what;
-    EXPECT_TRUE(gmsh_codes.insert(t.gmsh_code).second) << what;
-    EXPECT_TRUE(vtk_codes.insert(t.vtk_code).second) << what;
+    if (!variant) {
+      EXPECT_TRUE(gmsh_codes.insert(t.gmsh_code).second) << what;
+      EXPECT_TRUE(vtk_codes.insert(t.vtk_code).second) << what;
+    }
   }
   // the first rows are the named enumerators, in their order
   EXPECT_EQ(Traits(ElementType::kHex8).nodes, 8);

@@ -397,8 +397,8 @@ TEST(AbaqusReader, BadInputNamesFileLineAndEntity) {
   const std::string ok = nodes + shell + mat + section;
   testing::ExpectBadFiles(
       {
-          {"unknown_type.inp", nodes + "*ELEMENT, TYPE=C3D20R, ELSET=P\n1, 1, 2, 3, 4\n", ":6:",
-           {"*ELEMENT: ", "unknown or unsupported element type C3D20R"}},
+          {"unknown_type.inp", nodes + "*ELEMENT, TYPE=C3D27, ELSET=P\n1, 1, 2, 3, 4\n", ":6:",
+           {"*ELEMENT: ", "unknown or unsupported element type C3D27"}},
           {"missing_material.inp", nodes + shell + "*SHELL SECTION, ELSET=P, MATERIAL=ALU\n0.01\n", ":8:",
            {"*SHELL SECTION (ELSET=P): ", "material 'ALU' is not defined"}},
           {"dangling_node.inp", nodes + "*ELEMENT, TYPE=S4, ELSET=P\n1, 1, 2, 3, 99\n", ":7:",
