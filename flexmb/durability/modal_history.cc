@@ -110,7 +110,8 @@ void ModalHistoryWriter::Write(double t, const double* w, int size) {
   ++records_;
 }
 
-ModelModalHistory::ModelModalHistory(const std::string& dir, const Model& model) {
+ModelModalHistory::ModelModalHistory(const std::string& dir, const Model& model,
+                                     const std::map<std::string, std::string>& written) {
   std::vector<ModalHistoryBody> bodies;
   for (const auto& body : model.bodies) {
     const auto* flex = dynamic_cast<const FlexibleBody*>(body.get());
@@ -123,6 +124,8 @@ ModelModalHistory::ModelModalHistory(const std::string& dir, const Model& model)
       std::error_code ec;
       const std::filesystem::path abs = std::filesystem::absolute(r.mesh.elements[0].origin.file, ec);
       h.body_file = ec ? r.mesh.elements[0].origin.file : abs.string();
+    } else if (const auto it = written.find(h.name); it != written.end()) {
+      h.body_file = it->second;
     } else {
       // a body built in code: its reduced body goes into the run folder
       const std::filesystem::path rel = std::filesystem::path("bodies") / (h.name + ".h5");

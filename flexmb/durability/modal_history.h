@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -73,8 +74,13 @@ class ModalHistoryWriter {
 class ModelModalHistory {
  public:
   /// Writes DIR/modal_coordinates.bin if the model has flexible bodies;
-  /// otherwise does nothing. Throws InputError as ModalHistoryWriter.
-  ModelModalHistory(const std::string& dir, const Model& model);
+  /// otherwise does nothing. `written` names bodies built in code whose
+  /// reduced body the caller has already written (body name -> file path,
+  /// relative to DIR or absolute): they are referred to there instead of
+  /// being written again to DIR/bodies/. Throws InputError as
+  /// ModalHistoryWriter.
+  ModelModalHistory(const std::string& dir, const Model& model,
+                    const std::map<std::string, std::string>& written = {});
   ~ModelModalHistory();
   /// Appends the modal coordinates of `state` (nothing without flexible bodies).
   void Write(const State& state);

@@ -143,7 +143,7 @@ TEST(DurabilityFrameStress, MountLoadsRecoveredFromStaticModesMatchFullFe) {
 // the elastic truck's lane change keeps the frame's modal coordinates; the
 // stresses recovered from them afterwards give the run's own frame maximum
 // (FrameResponse of lane_change_test.cc, evaluated during the run): same
-// value, element and time
+// value, element and time; the history refers to the run's DIR/frame.h5
 TEST(DurabilityFrameStress, LaneChangeModalCoordinatesGiveTheRunsFrameMaximum) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "flexmb_durability_lane_change";
   std::filesystem::remove_all(dir);
@@ -158,6 +158,9 @@ TEST(DurabilityFrameStress, LaneChangeModalCoordinatesGiveTheRunsFrameMaximum) {
   ASSERT_TRUE(r.completed) << r.message;
   const durability::ModalHistory h = durability::ReadRunModalHistory(dir.string());
   const int b = h.Body("frame");
+  // the history refers to the frame's body file the run wrote (DIR/frame.h5), not to a second copy
+  EXPECT_EQ(h.bodies[static_cast<size_t>(b)].body_file, (dir / "frame.h5").string());
+  EXPECT_FALSE(std::filesystem::exists(dir / "bodies"));
   const reduction::ReducedBody body = io::ReadBody(h.bodies[static_cast<size_t>(b)].body_file);
   durability::StressRecovery rec(body.stress.shell, h.coordinates[static_cast<size_t>(b)]);
   const durability::ElementResults e = durability::AnalyzeElements(rec, durability::FatigueOptions{});

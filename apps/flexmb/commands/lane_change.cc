@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <numbers>
 #include <stdexcept>
@@ -463,7 +464,13 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
   const Marker& frame_ref = model.markers[static_cast<size_t>(h.frame_ref)];
   // elastic frame: its modal coordinates at every row, for "flexmb post"
   std::unique_ptr<durability::ModelModalHistory> modal;
-  if (!opt.out_dir.empty() && h.elastic) modal = std::make_unique<durability::ModelModalHistory>(opt.out_dir, model);
+  // the generated frame's body file is DIR/frame.h5 (written above), a
+  // caller's frame is written to DIR/bodies/frame.h5
+  if (!opt.out_dir.empty() && h.elastic) {
+    std::map<std::string, std::string> written;
+    if (!opt.frame_body) written.emplace("frame", "frame.h5");
+    modal = std::make_unique<durability::ModelModalHistory>(opt.out_dir, model, written);
+  }
   FrameResponse frame_response(h.elastic ? static_cast<const FlexibleBody*>(frame_body) : nullptr, csv);
   char line[FrameResponse::kRowChars];
   r.frame_modal_coordinates = h.elastic ? f.truck.elastic_frame->invariants.n : 0;
