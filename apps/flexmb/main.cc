@@ -137,9 +137,10 @@ int main(int argc, char** argv) {
       ->delimiter(',')
       ->required();
   lin->add_option("--outputs", lin_opt.outputs, "sensors as outputs (default: all)")->delimiter(',');
-  lin->add_option("--at", lin_opt.at, "state: statics (default) or initial")
-      ->check(CLI::IsMember({"statics", "initial"}));
-  lin->add_option("--time", lin_opt.time, "time of the loads and drivers [s] (default 0)");
+  lin->add_option("--at", lin_opt.at, "state: statics (default), initial or time (simulated to --time)")
+      ->check(CLI::IsMember({"statics", "initial", "time"}));
+  lin->add_option("--time", lin_opt.time,
+                  "with --at time: simulate to this time [s]; otherwise: time of the loads and drivers (default 0)");
   bool lin_quiet = false;
   lin->add_flag("--quiet,-q", lin_quiet, "no summary line");
 
