@@ -133,7 +133,7 @@ int main(int argc, char** argv) {
   CLI::App* lin = app.add_subcommand("linearize", "state-space model (A, B, C, D) of a model file about a state");
   lin->add_option("model", lin_opt.model_path, "model file (YAML)")->required();
   lin->add_option("--out,-o", lin_opt.out_dir, "output directory")->required();
-  lin->add_option("--inputs", lin_opt.inputs, "force elements as inputs (point_force, point_torque, spring_damper)")
+  lin->add_option("--inputs", lin_opt.inputs, "force elements as inputs (point_force, point_torque, spring_damper, joint_motor)")
       ->delimiter(',')
       ->required();
   lin->add_option("--outputs", lin_opt.outputs, "sensors as outputs (default: all)")->delimiter(',');

@@ -163,7 +163,8 @@ def linearize(model, inputs, outputs=(), at="statics", time=0.0, out_dir=None):
     """`flexmb linearize`: the state-space model of `model` (path or dict)
     about the state `at` ("statics", "initial" or "time", as in modes());
     inputs: force element names (point_force: 3 world force components [N],
-    point_torque: 3 moments [N m], spring_damper: its extra tension [N]);
+    point_torque: 3 moments [N m], spring_damper: its extra tension [N],
+    joint_motor: its torque [N m] or force [N]);
     outputs: sensor names (empty: all sensors). out_dir: also write A.mtx,
     B.mtx, C.mtx, D.mtx, statespace.json and summary.json there."""
     if isinstance(inputs, str):

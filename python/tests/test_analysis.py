@@ -156,6 +156,20 @@ def test_linearize_equal_cli_mtx(cli, tmp_path):
     np.testing.assert_allclose(ev, expected, rtol=1e-8)
 
 
+def test_linearize_motor_input_static_gain():
+    # a joint motor as input: its torque [N m] on the pendulum's pin. The
+    # static gain from torque to angle, D - C A^-1 B, is the compliance of
+    # the hanging pendulum, 1 / (m g d) (moment balance m g d sin(th) = tau
+    # at th = 0); C is a central difference (step 1e-6), hence 1e-7
+    m, ic, d = 2.0, 0.05, 0.6
+    model = compound_pendulum(m, ic, d)
+    model["forces"] = [{"name": "motor", "type": "joint_motor", "joint": "pin", "function": 0.0}]
+    ss = flexmb.linearize(model, inputs=["motor"], outputs=["angle"])
+    assert ss.inputs == ["motor.torque"] and ss.outputs == ["angle.value"]
+    gain = ss.D - ss.C @ np.linalg.solve(ss.A, ss.B)
+    assert gain[0, 0] == pytest.approx(1.0 / (m * G * d), rel=1e-7)
+
+
 def test_linearize_at_time_equal_cli(cli, tmp_path):
     # --at time: the state after a dynamic run to 0.05 s (the quarter car
     # settles from its unloaded springs), the same through both

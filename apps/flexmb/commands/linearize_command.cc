@@ -8,6 +8,7 @@
 
 #include "apps/flexmb/commands/analysis_support.h"
 #include "flexmb/common/json_text.h"
+#include "flexmb/forces/joint_motor.h"
 #include "flexmb/solver/assembler.h"
 #include "flexmb/solver/linearization.h"
 #include "flexmb/solver/statics.h"
@@ -53,9 +54,25 @@ MatX LinearizeInputs(const Model& m, const Workspace& ws, const std::vector<std:
       w.head<3>() = u;
       w.segment<3>(6) = -u;
       add(*f, w, name + ".tension");
+    } else if (const auto* motor = dynamic_cast<const JointMotor*>(f)) {
+      // one unit of the motor's torque [N m] or force [N] on its axis, as
+      // JointMotor::Evaluate applies it
+      const MarkerState& mi = ws.markers[f->marker_i];
+      const Vec3 a = motor->joint()->CoordinateAxis(motor->coordinate(), mi);
+      const bool angle = motor->joint()->CoordinateIsAngle(motor->coordinate());
+      Vec12 w = Vec12::Zero();
+      if (angle) {
+        w.segment<3>(3) = -a;
+        w.segment<3>(9) = a;
+      } else {
+        w.head<3>() = -a;
+        w.segment<3>(3) = a.cross(ws.markers[f->marker_j].p_WM - mi.p_WM);
+        w.segment<3>(6) = a;
+      }
+      add(*f, w, name + (angle ? ".torque" : ".force"));
     } else {
       throw InputError("--inputs: force element '" + name + "' of type " + type +
-                       " cannot be an input (point_force, point_torque or spring_damper)");
+                       " cannot be an input (point_force, point_torque, spring_damper or joint_motor)");
     }
   }
   MatX Q(m.nv, static_cast<int>(cols.size()));

@@ -10,8 +10,9 @@
 /// increments about body axes) and their rates. Inputs u are extra loads of
 /// force elements: a point_force gives 3 inputs (world force components
 /// [N]), a point_torque 3 (world moment components [N m]), a spring_damper
-/// 1 (extra tension [N]). Outputs y are the sensors' components, as
-/// deviations from their values at the state. Writes DIR/A.mtx, B.mtx,
+/// 1 (extra tension [N]), a joint_motor 1 (its torque [N m] or force [N]).
+/// Outputs y are the sensors' components, as deviations from their values
+/// at the state. Writes DIR/A.mtx, B.mtx,
 /// C.mtx, D.mtx (Matrix Market, dense "array" format), DIR/statespace.json
 /// (the names of states, inputs and outputs, and the operating point) and
 /// DIR/summary.json.
