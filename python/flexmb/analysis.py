@@ -55,7 +55,7 @@ class StaticsResult:
         self.columns = list(r["columns"])
         self.rows = r["rows"]
         self.table = {c: self.rows[:, k] for k, c in enumerate(self.columns)}
-        self.sensors = {c: float(self.rows[-1, k]) for k, c in enumerate(self.columns) if k >= 3}
+        self.sensors = {c: float(self.rows[-1, k]) for k, c in enumerate(self.columns) if k >= 3 and len(self.rows)}
         self.summary = json.loads(r["summary_json"])
         self.warnings = list(r["warnings"])
 

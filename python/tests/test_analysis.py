@@ -165,9 +165,10 @@ def test_linearize_motor_input_static_gain():
     model = compound_pendulum(m, ic, d)
     model["forces"] = [{"name": "motor", "type": "joint_motor", "joint": "pin", "function": 0.0}]
     ss = flexmb.linearize(model, inputs=["motor"], outputs=["angle"])
-    assert ss.inputs == ["motor.torque"] and ss.outputs == ["angle.value"]
+    assert ss.inputs == ["motor.torque"] and ss.outputs == ["angle.value", "angle.rate"]
     gain = ss.D - ss.C @ np.linalg.solve(ss.A, ss.B)
     assert gain[0, 0] == pytest.approx(1.0 / (m * G * d), rel=1e-7)
+    assert gain[1, 0] == pytest.approx(0.0, abs=1e-9)  # no rate at rest
 
 
 def test_linearize_at_time_equal_cli(cli, tmp_path):
@@ -217,5 +218,5 @@ def test_bad_inputs_raise_with_the_message(tmp_path):
     # a free body under gravity has no equilibrium: the body is named
     free = hanging_mass()
     free["forces"] = []
-    with pytest.raises(flexmb.NumericalError, match="mass"):
+    with pytest.raises(flexmb.NumericalError, match="body 'mass'"):
         flexmb.statics(free)
