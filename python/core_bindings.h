@@ -11,5 +11,7 @@ namespace flexmb::python {
 void BindSimulation(pybind11::module_& m);
 /// read_body (core_bodies.cc).
 void BindBodies(pybind11::module_& m);
+/// statics, modes, linearize (core_analysis.cc).
+void BindAnalysis(pybind11::module_& m);
 
 }  // namespace flexmb::python

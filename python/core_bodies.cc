@@ -15,6 +15,7 @@
 #include "flexmb/body_file/body_file.h"
 #include "apps/flexmb/commands/command_support.h"
 #include "flexmb/fe_io/fe_model_file.h"
+#include "flexmb/kinematics/marker.h"
 #include "flexmb/reduction/reduced_body.h"
 #include "python/core_bindings.h"
 

@@ -202,4 +202,5 @@ PYBIND11_MODULE(_core, m) {
 
   flexmb::python::BindSimulation(m);
   flexmb::python::BindBodies(m);
+  flexmb::python::BindAnalysis(m);
 }

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "flexmb/common/error.h"
 #include "flexmb/results/results_writer.h"
 #include "flexmb/math/input_function.h"
 #include "flexmb/model/model.h"

@@ -133,13 +133,14 @@ int main(int argc, char** argv) {
   CLI::App* lin = app.add_subcommand("linearize", "state-space model (A, B, C, D) of a model file about a state");
   lin->add_option("model", lin_opt.model_path, "model file (YAML)")->required();
   lin->add_option("--out,-o", lin_opt.out_dir, "output directory")->required();
-  lin->add_option("--inputs", lin_opt.inputs, "force elements as inputs (point_force, point_torque, spring_damper)")
+  lin->add_option("--inputs", lin_opt.inputs, "force elements as inputs (point_force, point_torque, spring_damper, joint_motor)")
       ->delimiter(',')
       ->required();
   lin->add_option("--outputs", lin_opt.outputs, "sensors as outputs (default: all)")->delimiter(',');
-  lin->add_option("--at", lin_opt.at, "state: statics (default) or initial")
-      ->check(CLI::IsMember({"statics", "initial"}));
-  lin->add_option("--time", lin_opt.time, "time of the loads and drivers [s] (default 0)");
+  lin->add_option("--at", lin_opt.at, "state: statics (default), initial or time (simulated to --time)")
+      ->check(CLI::IsMember({"statics", "initial", "time"}));
+  lin->add_option("--time", lin_opt.time,
+                  "with --at time: simulate to this time [s]; otherwise: time of the loads and drivers (default 0)");
   bool lin_quiet = false;
   lin->add_flag("--quiet,-q", lin_quiet, "no summary line");
 

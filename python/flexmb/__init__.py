@@ -2,7 +2,8 @@
 
 The compiled core (flexmb._core) holds the engine; this package adds the
 pure-Python helpers: models from dicts, results as numpy arrays, FE and body
-files, the truck lane change, parameter studies and plots. See docs/python.md.
+files, the truck lane change, parameter studies, static equilibrium, linearized
+modes and state-space models, and plots. See docs/python.md.
 """
 
 from ._core import Error, InputError, NumericalError, Input, Simulation
@@ -12,6 +13,7 @@ from .commands import run_file, fe_modes, fe_mode_shapes, fe_info, fe_export, re
 from .bodies import Body, read_body
 from .vehicle import LaneChangeResult, lane_change, max_pass_speed
 from .study import run_study
+from .analysis import StaticsResult, ModesResult, StateSpace, statics, modes, linearize, read_mtx
 
 __all__ = [
     "Error", "InputError", "NumericalError", "Input", "Simulation",
@@ -21,4 +23,5 @@ __all__ = [
     "Body", "read_body",
     "LaneChangeResult", "lane_change", "max_pass_speed",
     "run_study",
+    "StaticsResult", "ModesResult", "StateSpace", "statics", "modes", "linearize", "read_mtx",
 ]

@@ -6,6 +6,9 @@
 
 #include "flexmb/common/json_text.h"
 #include "flexmb/model_file/model_file.h"
+#include "flexmb/solver/linearization.h"
+#include "flexmb/solver/simulator.h"
+#include "flexmb/solver/statics.h"
 
 namespace flexmb::cli {
 
@@ -14,8 +17,62 @@ AnalysisWarnings::AnalysisWarnings(std::vector<std::string>& into)
 
 AnalysisWarnings::~AnalysisWarnings() { SetWarningSink(std::move(old_)); }
 
-void LoadAnalysisModel(const std::string& path, double t, AnalysisModel& out, std::vector<std::string>& warnings) {
-  out.model = LoadModelFile(path);
+namespace {
+
+// a warning when the state `what` moves (accelerations a or velocities)
+void AnalysisWarnIfMoving(const AnalysisModel& am, const VecX& a, const std::string& what,
+                          std::vector<std::string>& warnings) {
+  Eigen::Index k = 0;
+  const double amax = a.size() ? a.cwiseAbs().maxCoeff(&k) : 0.0;
+  const double vmax = am.state.v.size() ? am.state.v.cwiseAbs().maxCoeff() : 0.0;
+  if (amax > 1e-6 || vmax > 1e-9)
+    warnings.push_back(what + " is not an equilibrium (largest acceleration " + std::to_string(amax) + " at " +
+                       VelocityCoordinateName(*am.model, static_cast<int>(k)) + ", largest velocity " +
+                       std::to_string(vmax) + "): the modes are those of the tangent system at that state");
+}
+
+}  // namespace
+
+std::unique_ptr<Model> LoadAnalysisModelFile(const std::string& path, const std::string& text) {
+  return text.empty() ? LoadModelFile(path) : LoadModelString(text, path);
+}
+
+void AnalysisLinearizationState(const std::string& path, const std::string& text, const std::string& at,
+                                double time, AnalysisModel& am, VecX& a, std::vector<std::string>& warnings) {
+  if (at == "time") {
+    if (!(time >= 0.0) || !std::isfinite(time)) throw InputError("--time must be a number of seconds >= 0");
+    am.model = LoadAnalysisModelFile(path, text);
+    Simulator sim(*am.model);
+    {
+      AnalysisWarnings collect(warnings);
+      sim.Initialize();
+    }
+    if (time > sim.state().t) sim.Run(time, 0.0, nullptr);
+    am.state = sim.state();
+    am.ws = sim.workspace();
+    am.report = sim.constraints();
+    a = am.ws.vdot;
+    AnalysisWarnIfMoving(am, a, "the state at --time", warnings);
+    return;
+  }
+  if (at != "statics" && at != "initial") throw InputError("--at must be statics, initial or time, got '" + at + "'");
+  LoadAnalysisModel(path, time, am, warnings, text);
+  if (at == "initial") {
+    a = am.ws.vdot;
+    AnalysisWarnIfMoving(am, a, "the initial state", warnings);
+    return;
+  }
+  try {
+    SolveStatics(*am.model, am.state, am.ws);
+  } catch (const NumericalError& e) {
+    throw NumericalError("--at statics: no static equilibrium to linearize about: " + e.message(), e.context());
+  }
+  a = VecX::Zero(am.model->nv);
+}
+
+void LoadAnalysisModel(const std::string& path, double t, AnalysisModel& out, std::vector<std::string>& warnings,
+                       const std::string& text) {
+  out.model = LoadAnalysisModelFile(path, text);
   out.state = out.model->InitialState();
   out.state.t = t;
   AnalysisWarnings collect(warnings);
@@ -61,6 +118,7 @@ void WriteAnalysisFile(const std::string& path, const std::string& text) {
 }
 
 bool CreateAnalysisDir(const std::string& dir, std::FILE* err) {
+  if (dir.empty()) return true;
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (!ec) return true;
@@ -70,9 +128,12 @@ bool CreateAnalysisDir(const std::string& dir, std::FILE* err) {
 
 int FinishAnalysisSummary(JsonObjectText& sum, const std::string& dir,
                           std::chrono::steady_clock::time_point start,
-                          const std::vector<std::string>& warnings, std::FILE* err, int code) {
+                          const std::vector<std::string>& warnings, std::FILE* err, int code,
+                          std::string* text) {
   sum.Number("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   sum.Texts("warnings", warnings);
+  if (text) *text = sum.str();
+  if (dir.empty()) return code;
   try {
     WriteAnalysisFile((std::filesystem::path(dir) / "summary.json").string(), sum.str());
   } catch (const InputError& e) {

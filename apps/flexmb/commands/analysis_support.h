@@ -41,8 +41,24 @@ struct AnalysisModel {
 };
 
 /// Loads the model file and makes its initial state, at time `t` [s],
-/// consistent (MakeConsistent); the warnings go to `warnings`.
-void LoadAnalysisModel(const std::string& path, double t, AnalysisModel& out, std::vector<std::string>& warnings);
+/// consistent (MakeConsistent); the warnings go to `warnings`. A non-empty
+/// `text` is the model-file text itself, `path` then names it in messages.
+void LoadAnalysisModel(const std::string& path, double t, AnalysisModel& out, std::vector<std::string>& warnings,
+                       const std::string& text = "");
+
+/// The model file at `path`, or the model-file text `text` if non-empty
+/// (`path` then names it in messages).
+std::unique_ptr<Model> LoadAnalysisModelFile(const std::string& path, const std::string& text);
+
+/// The state to linearize about (`flexmb modes` and `flexmb linearize`),
+/// into `am`, with its accelerations into `a` (nv): `at` "statics" (the
+/// static equilibrium under the loads at time `time` [s]; a = 0),
+/// "initial" (the consistent initial state at `time`) or "time" (the state
+/// of a dynamic run to `time`). A state that moves adds a warning. Throws
+/// InputError for a bad `at` or `time`, NumericalError when there is no
+/// static equilibrium.
+void AnalysisLinearizationState(const std::string& path, const std::string& text, const std::string& at,
+                                double time, AnalysisModel& am, VecX& a, std::vector<std::string>& warnings);
 
 /// The message of `e`, naming `model_path` if the error names no file.
 std::string AnalysisErrorText(const Error& e, const std::string& model_path);
@@ -68,15 +84,27 @@ class JsonObjectText {
 /// Writes `text` to `path` through a temporary file and a rename.
 void WriteAnalysisFile(const std::string& path, const std::string& text);
 
-/// Creates the output folder `dir`; false (after printing the error on
-/// `err`, if given) when it cannot be created.
+/// Creates the output folder `dir` (nothing for an empty `dir`: no files
+/// wanted); false (after printing the error on `err`, if given) when it
+/// cannot be created.
 bool CreateAnalysisDir(const std::string& dir, std::FILE* err);
 
 /// Adds `wall_time_s` (since `start`) and `warnings` to `sum`, writes it as
-/// DIR/summary.json and returns `code`, or 2 if the file cannot be written
-/// and `code` was 0 (the error printed on `err`).
+/// DIR/summary.json (not for an empty `dir`) and returns `code`, or 2 if the
+/// file cannot be written and `code` was 0 (the error printed on `err`);
+/// `text`, if given, receives the JSON text.
 int FinishAnalysisSummary(JsonObjectText& sum, const std::string& dir,
                           std::chrono::steady_clock::time_point start,
-                          const std::vector<std::string>& warnings, std::FILE* err, int code);
+                          const std::vector<std::string>& warnings, std::FILE* err, int code,
+                          std::string* text = nullptr);
+
+/// How an analysis command ended, for its callers (CLI and Python).
+struct AnalysisOutcome {
+  int code = 0;                       ///< exit code: 0 ok, 2 input error, 1 numerical or other error
+  std::string error_kind;             ///< "InputError", "NumericalError" or "Error" (empty when ok)
+  std::string message;                ///< the error message (empty when ok)
+  std::string summary_json;           ///< the summary.json text
+  std::vector<std::string> warnings;  ///< warnings of the analysis
+};
 
 }  // namespace flexmb::cli

@@ -8,6 +8,7 @@
 
 #include "apps/flexmb/commands/analysis_support.h"
 #include "flexmb/common/json_text.h"
+#include "flexmb/forces/joint_motor.h"
 #include "flexmb/solver/assembler.h"
 #include "flexmb/solver/linearization.h"
 #include "flexmb/solver/statics.h"
@@ -53,9 +54,25 @@ MatX LinearizeInputs(const Model& m, const Workspace& ws, const std::vector<std:
       w.head<3>() = u;
       w.segment<3>(6) = -u;
       add(*f, w, name + ".tension");
+    } else if (const auto* motor = dynamic_cast<const JointMotor*>(f)) {
+      // one unit of the motor's torque [N m] or force [N] on its axis, as
+      // JointMotor::Evaluate applies it
+      const MarkerState& mi = ws.markers[f->marker_i];
+      const Vec3 a = motor->joint()->CoordinateAxis(motor->coordinate(), mi);
+      const bool angle = motor->joint()->CoordinateIsAngle(motor->coordinate());
+      Vec12 w = Vec12::Zero();
+      if (angle) {
+        w.segment<3>(3) = -a;
+        w.segment<3>(9) = a;
+      } else {
+        w.head<3>() = -a;
+        w.segment<3>(3) = a.cross(ws.markers[f->marker_j].p_WM - mi.p_WM);
+        w.segment<3>(6) = a;
+      }
+      add(*f, w, name + (angle ? ".torque" : ".force"));
     } else {
       throw InputError("--inputs: force element '" + name + "' of type " + type +
-                       " cannot be an input (point_force, point_torque or spring_damper)");
+                       " cannot be an input (point_force, point_torque, spring_damper or joint_motor)");
     }
   }
   MatX Q(m.nv, static_cast<int>(cols.size()));
@@ -100,28 +117,25 @@ std::string LinearizeNames(const std::vector<std::string>& v) {
 
 }  // namespace
 
-int LinearizeCommand(const LinearizeCommandOptions& opt) {
+int LinearizeCommand(const LinearizeCommandOptions& opt) { return LinearizeAnalysis(opt).code; }
+
+LinearizeResult LinearizeAnalysis(const LinearizeCommandOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
-  std::vector<std::string> warnings;
+  LinearizeResult out;
+  std::vector<std::string>& warnings = out.warnings;
   std::string status = "ok", message;
   int code = 0, n_states = 0, n_inputs = 0, n_outputs = 0;
   AnalysisModel am;
-  if (!CreateAnalysisDir(opt.out_dir, opt.err)) return 2;
+  if (!CreateAnalysisDir(opt.out_dir, opt.err)) {
+    out.code = 2, out.error_kind = "InputError", out.message = opt.out_dir + ": cannot create the output directory";
+    return out;
+  }
   const std::filesystem::path dir(opt.out_dir);
   try {
-    if (opt.at != "statics" && opt.at != "initial") throw InputError("--at must be statics or initial, got '" + opt.at + "'");
     if (opt.inputs.empty()) throw InputError("--inputs: name at least one force element");
-    LoadAnalysisModel(opt.model_path, opt.time, am, warnings);
+    VecX a0;
+    AnalysisLinearizationState(opt.model_path, opt.model_text, opt.at, opt.time, am, a0, warnings);
     const Model& m = *am.model;
-    VecX a0 = am.ws.vdot;
-    if (opt.at == "statics") {
-      try {
-        SolveStatics(m, am.state, am.ws);
-      } catch (const NumericalError& e) {
-        throw NumericalError("--at statics: no static equilibrium to linearize about: " + e.message(), e.context());
-      }
-      a0.setZero();
-    }
     if (opt.err)
       for (const std::string& w : warnings) std::fprintf(opt.err, "warning: %s\n", w.c_str());
     LinearizedSystem L = Linearize(m, am.state, a0, am.ws);
@@ -178,10 +192,6 @@ int LinearizeCommand(const LinearizeCommandOptions& opt) {
     }
     if (!A.allFinite() || !B.allFinite() || !C.allFinite() || !D.allFinite())
       throw NumericalError("linearize: the state-space matrices are not finite");
-    LinearizeWriteMatrix(dir / "A.mtx", A);
-    LinearizeWriteMatrix(dir / "B.mtx", B);
-    LinearizeWriteMatrix(dir / "C.mtx", C);
-    LinearizeWriteMatrix(dir / "D.mtx", D);
     std::vector<std::string> state_names;
     for (int k = 0; k < n; ++k) state_names.push_back("dx " + VelocityCoordinateName(m, indep[k]));
     for (int k = 0; k < n; ++k) state_names.push_back("v " + VelocityCoordinateName(m, indep[k]));
@@ -191,17 +201,26 @@ int LinearizeCommand(const LinearizeCommandOptions& opt) {
                      ",\n  \"inputs\": " + LinearizeNames(input_names) + ",\n  \"outputs\": " +
                      LinearizeNames(output_names) + ",\n  \"output_values\": " + io::JsonArray(y0) +
                      ",\n  \"files\": {\"A\": \"A.mtx\", \"B\": \"B.mtx\", \"C\": \"C.mtx\", \"D\": \"D.mtx\"}\n}\n";
-    WriteAnalysisFile((dir / "statespace.json").string(), js);
+    if (!opt.out_dir.empty()) {
+      LinearizeWriteMatrix(dir / "A.mtx", A);
+      LinearizeWriteMatrix(dir / "B.mtx", B);
+      LinearizeWriteMatrix(dir / "C.mtx", C);
+      LinearizeWriteMatrix(dir / "D.mtx", D);
+      WriteAnalysisFile((dir / "statespace.json").string(), js);
+    }
+    out.A = A, out.B = B, out.C = C, out.D = D;
+    out.states = state_names, out.inputs = input_names, out.outputs = output_names;
+    out.output_values = y0, out.time = s0.t;
     n_states = 2 * n, n_inputs = nu, n_outputs = p;
     if (opt.info)
       std::fprintf(opt.info, "state-space model of '%s': %d states, %d inputs, %d outputs; results in %s\n",
                    m.name.c_str(), n_states, n_inputs, n_outputs, opt.out_dir.c_str());
   } catch (const InputError& e) {
-    status = "failed", message = AnalysisErrorText(e, opt.model_path), code = 2;
+    status = "failed", message = AnalysisErrorText(e, opt.model_path), code = 2, out.error_kind = "InputError";
   } catch (const NumericalError& e) {
-    status = "failed", message = AnalysisErrorText(e, opt.model_path), code = 1;
+    status = "failed", message = AnalysisErrorText(e, opt.model_path), code = 1, out.error_kind = "NumericalError";
   } catch (const std::exception& e) {
-    status = "failed", message = e.what(), code = 1;
+    status = "failed", message = e.what(), code = 1, out.error_kind = "Error";
   }
   if (code != 0 && opt.err) std::fprintf(opt.err, "error: %s\n", message.c_str());
   JsonObjectText sum;
@@ -210,11 +229,15 @@ int LinearizeCommand(const LinearizeCommandOptions& opt) {
   sum.Text("analysis", "linearize");
   sum.Text("model", opt.model_path);
   sum.Text("at", opt.at);
+  sum.Number("time", am.state.t);
   sum.Raw("states", std::to_string(n_states));
   sum.Raw("inputs", std::to_string(n_inputs));
   sum.Raw("outputs", std::to_string(n_outputs));
   sum.Raw("redundant_constraints", std::to_string(am.report.redundant.size()));
-  return FinishAnalysisSummary(sum, opt.out_dir, start, warnings, opt.err, code);
+  out.code = FinishAnalysisSummary(sum, opt.out_dir, start, warnings, opt.err, code, &out.summary_json);
+  out.message = message;
+  if (out.code != 0 && out.error_kind.empty()) out.error_kind = "InputError", out.message = "cannot write summary.json";
+  return out;
 }
 
 }  // namespace flexmb::cli

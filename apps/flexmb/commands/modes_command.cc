@@ -17,52 +17,6 @@
 namespace flexmb::cli {
 namespace {
 
-// a warning when the state `what` moves (accelerations a or velocities)
-void ModesWarnIfMoving(const AnalysisModel& am, const VecX& a, const std::string& what,
-                       std::vector<std::string>& warnings) {
-  Eigen::Index k = 0;
-  const double amax = a.size() ? a.cwiseAbs().maxCoeff(&k) : 0.0;
-  const double vmax = am.state.v.size() ? am.state.v.cwiseAbs().maxCoeff() : 0.0;
-  if (amax > 1e-6 || vmax > 1e-9)
-    warnings.push_back(what + " is not an equilibrium (largest acceleration " + std::to_string(amax) + " at " +
-                       VelocityCoordinateName(*am.model, static_cast<int>(k)) + ", largest velocity " +
-                       std::to_string(vmax) + "): the modes are those of the tangent system at that state");
-}
-
-// the state to linearize about, in am; its accelerations into a
-void ModesState(const ModesCommandOptions& opt, AnalysisModel& am, VecX& a, std::vector<std::string>& warnings) {
-  if (opt.at == "time") {
-    if (!(opt.time >= 0.0) || !std::isfinite(opt.time)) throw InputError("--time must be a number of seconds >= 0");
-    am.model = LoadModelFile(opt.model_path);
-    Simulator sim(*am.model);
-    {
-      AnalysisWarnings collect(warnings);
-      sim.Initialize();
-    }
-    if (opt.time > sim.state().t) sim.Run(opt.time, 0.0, nullptr);
-    am.state = sim.state();
-    am.ws = sim.workspace();
-    am.report = sim.constraints();
-    a = am.ws.vdot;
-    ModesWarnIfMoving(am, a, "the state at --time", warnings);
-    return;
-  }
-  if (opt.at != "statics" && opt.at != "initial")
-    throw InputError("--at must be statics, initial or time, got '" + opt.at + "'");
-  LoadAnalysisModel(opt.model_path, opt.time, am, warnings);
-  if (opt.at == "initial") {
-    a = am.ws.vdot;
-    ModesWarnIfMoving(am, a, "the initial state", warnings);
-    return;
-  }
-  try {
-    SolveStatics(*am.model, am.state, am.ws);
-  } catch (const NumericalError& e) {
-    throw NumericalError("--at statics: no static equilibrium to linearize about: " + e.message(), e.context());
-  }
-  a = VecX::Zero(am.model->nv);
-}
-
 std::string ModesArray(const VecX& v) {
   std::string s = "[";
   for (Eigen::Index i = 0; i < v.size(); ++i) s += (i ? ", " : "") + io::JsonNumber(v(i));
@@ -92,21 +46,27 @@ void ModesAnimation(const Model& m, const State& s0, const SystemMode& mode, con
 
 }  // namespace
 
-int ModesCommand(const ModesCommandOptions& opt) {
+int ModesCommand(const ModesCommandOptions& opt) { return ModesAnalysis(opt).code; }
+
+ModesResult ModesAnalysis(const ModesCommandOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
+  ModesResult out;
   JsonObjectText sum;
-  std::vector<std::string> warnings;
+  std::vector<std::string>& warnings = out.warnings;
   std::string status = "ok", message;
   int code = 0, dof = 0, rigid = 0, reported = 0;
   AnalysisModel am;
-  if (!CreateAnalysisDir(opt.out_dir, opt.err)) return 2;
+  if (!CreateAnalysisDir(opt.out_dir, opt.err)) {
+    out.code = 2, out.error_kind = "InputError", out.message = opt.out_dir + ": cannot create the output directory";
+    return out;
+  }
   const std::filesystem::path dir(opt.out_dir);
   try {
     if (opt.count < 1) throw InputError("--count must be at least 1");
     if (opt.frames < 2) throw InputError("--frames must be at least 2");
     if (!(opt.amplitude > 0.0) || !std::isfinite(opt.amplitude)) throw InputError("--amplitude must be positive");
     VecX a;
-    ModesState(opt, am, a, warnings);
+    AnalysisLinearizationState(opt.model_path, opt.model_text, opt.at, opt.time, am, a, warnings);
     if (opt.err)
       for (const std::string& w : warnings) std::fprintf(opt.err, "warning: %s\n", w.c_str());
     const Model& m = *am.model;
@@ -151,19 +111,24 @@ int ModesCommand(const ModesCommandOptions& opt) {
             ", \"shape_imag\": " + ModesArray(md.shape_imag) + "}";
     }
     js += "\n  ]\n}\n";
-    WriteAnalysisFile((dir / "modes.csv").string(), csv);
-    WriteAnalysisFile((dir / "modes.json").string(), js);
-    if (opt.animation)
-      for (size_t k = 0; k < modes.size(); ++k)
-        if (modes[k]->kind != ModeKind::kRigid)
-          ModesAnimation(m, am.state, *modes[k], opt, dir / ("mode_" + std::to_string(k + 1)));
+    out.model_name = m.name, out.time = am.state.t, out.dof = dof, out.rigid = rigid;
+    for (int c = 0; c < m.nv; ++c) out.coordinates.push_back(VelocityCoordinateName(m, c));
+    for (const SystemMode* md : modes) out.modes.push_back(*md);
+    if (!opt.out_dir.empty()) {
+      WriteAnalysisFile((dir / "modes.csv").string(), csv);
+      WriteAnalysisFile((dir / "modes.json").string(), js);
+      if (opt.animation)
+        for (size_t k = 0; k < modes.size(); ++k)
+          if (modes[k]->kind != ModeKind::kRigid)
+            ModesAnimation(m, am.state, *modes[k], opt, dir / ("mode_" + std::to_string(k + 1)));
+    }
     if (opt.info) std::fprintf(opt.info, "results in %s\n", opt.out_dir.c_str());
   } catch (const InputError& e) {
-    status = "failed", message = AnalysisErrorText(e, opt.model_path), code = 2;
+    status = "failed", message = AnalysisErrorText(e, opt.model_path), code = 2, out.error_kind = "InputError";
   } catch (const NumericalError& e) {
-    status = "failed", message = AnalysisErrorText(e, opt.model_path), code = 1;
+    status = "failed", message = AnalysisErrorText(e, opt.model_path), code = 1, out.error_kind = "NumericalError";
   } catch (const std::exception& e) {
-    status = "failed", message = e.what(), code = 1;
+    status = "failed", message = e.what(), code = 1, out.error_kind = "Error";
   }
   if (code != 0 && opt.err) std::fprintf(opt.err, "error: %s\n", message.c_str());
   sum.Text("status", status);
@@ -179,7 +144,10 @@ int ModesCommand(const ModesCommandOptions& opt) {
   sum.Raw("constraint_equations", std::to_string(am.report.equations));
   sum.Raw("redundant_constraints", std::to_string(am.report.redundant.size()));
   sum.Texts("redundant", am.report.messages);
-  return FinishAnalysisSummary(sum, opt.out_dir, start, warnings, opt.err, code);
+  out.code = FinishAnalysisSummary(sum, opt.out_dir, start, warnings, opt.err, code, &out.summary_json);
+  out.message = message;
+  if (out.code != 0 && out.error_kind.empty()) out.error_kind = "InputError", out.message = "cannot write summary.json";
+  return out;
 }
 
 }  // namespace flexmb::cli

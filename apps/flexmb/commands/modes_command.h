@@ -11,13 +11,18 @@
 
 #include <cstdio>
 #include <string>
+#include <vector>
+
+#include "apps/flexmb/commands/analysis_support.h"
+#include "flexmb/solver/system_modes.h"
 
 namespace flexmb::cli {
 
 /// What the modes command should do.
 struct ModesCommandOptions {
-  std::string model_path;       ///< YAML model file
-  std::string out_dir;          ///< output directory (created if missing)
+  std::string model_path;       ///< YAML model file (with model_text: its name in messages)
+  std::string model_text;       ///< the model-file text itself (empty: read model_path)
+  std::string out_dir;          ///< output directory (created if missing; empty: no files)
   std::string at = "statics";   ///< state: "statics", "initial" or "time"
   double time = 0.0;            ///< with at == "statics"/"initial": time of the loads; "time": time simulated to [s]
   int count = 10;               ///< vibration (non-rigid) modes reported, lowest first; rigid modes always
@@ -27,6 +32,21 @@ struct ModesCommandOptions {
   std::FILE* info = nullptr;    ///< the frequency table (nullptr: silent)
   std::FILE* err = nullptr;     ///< warnings and errors (nullptr: silent)
 };
+
+/// The modes of ModesAnalysis, as written to modes.json.
+struct ModesResult : AnalysisOutcome {
+  std::string model_name;                ///< the model's name
+  double time = 0.0;                     ///< time of the state [s]
+  int dof = 0;                           ///< degrees of freedom of the linearized system
+  int rigid = 0;                         ///< rigid-body (zero) modes among them
+  std::vector<std::string> coordinates;  ///< names of the velocity coordinates (rows of the shapes)
+  std::vector<SystemMode> modes;         ///< the reported modes: rigid ones, then `count` vibration modes
+};
+
+/// The modal analysis of `flexmb modes`: the result, and the files of the
+/// command in options.out_dir unless it is empty. Faults of the model end
+/// up in the result's code and message, never as exceptions.
+ModesResult ModesAnalysis(const ModesCommandOptions& options);
 
 /// Runs the modal analysis; returns the exit code (0 ok, 2 input error, 1
 /// numerical or other error); summary.json is written in every case in

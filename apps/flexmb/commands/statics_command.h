@@ -11,18 +11,44 @@
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "apps/flexmb/commands/analysis_support.h"
+#include "flexmb/solver/statics.h"
 
 namespace flexmb::cli {
 
 /// What the statics command should do.
 struct StaticsCommandOptions {
-  std::string model_path;          ///< YAML model file
-  std::string out_dir;             ///< output directory (created if missing)
+  std::string model_path;          ///< YAML model file (with model_text: its name in messages)
+  std::string model_text;          ///< the model-file text itself (empty: read model_path)
+  std::string out_dir;             ///< output directory (created if missing; empty: no files)
   double time = 0.0;               ///< time at which drivers and loads are evaluated [s]
   bool animation = false;          ///< write anim.pvd (as output.animation)
   std::FILE* info = nullptr;       ///< result lines (nullptr: silent)
   std::FILE* err = nullptr;        ///< warnings and errors (nullptr: silent)
 };
+
+/// The equilibrium of StaticsAnalysis, as written to the files.
+struct StaticsOutcome : AnalysisOutcome {
+  std::string model_name;                ///< the model's name
+  double load_factor = 0.0;              ///< load factor reached (1: the full load)
+  StaticsResult solve;                   ///< Newton iterations, residual [N, N m], load steps, cuts
+  std::vector<std::string> columns;      ///< the columns of results.csv
+  std::vector<std::vector<double>> rows; ///< its rows, one per converged load step
+  VecX q;                                ///< position coordinates at the equilibrium (the last one reached)
+  VecX lambda;                           ///< constraint multipliers there
+  std::vector<std::string> bodies;       ///< body names
+  std::vector<int> body_q_offset;        ///< each body's first entry in q
+  std::vector<int> body_nq;              ///< each body's number of position coordinates
+  int dof = 0;                           ///< degrees of freedom of the model
+  int constraint_equations = 0;          ///< constraint equations
+};
+
+/// The static solve of `flexmb statics`: the result, and the files of the
+/// command in options.out_dir unless it is empty. Faults of the model end
+/// up in the result's code and message, never as exceptions.
+StaticsOutcome StaticsAnalysis(const StaticsCommandOptions& options);
 
 /// Runs the static solve; returns the exit code (0 ok, 2 input error, 1
 /// no equilibrium or other error). Never throws for faults of the model:
