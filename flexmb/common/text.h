@@ -16,6 +16,9 @@ inline std::string AsciiLower(std::string_view s) {
   return out;
 }
 
+/// `s` in single quotes, for naming a value in a message ("'frame'").
+inline std::string Quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
+
 /// Extension of the file name in `path` with its dot, in lower case
 /// (".bdf"; empty if there is none).
 inline std::string LowerExtension(const std::string& path) {

@@ -36,8 +36,6 @@ bool ReadMeshFile(const std::string& path, fe::Mesh& mesh) {
   return true;
 }
 
-std::string Quote(const std::string& s) { return "'" + s + "'"; }
-
 // names of a map's keys for messages, at most 12
 template <class Map>
 std::string KeyList(const Map& map) {
@@ -97,10 +95,10 @@ class FeModelFileParser {
 
   std::string ExistingFile(const YAML::Node& node, const char* key) {
     const std::string value = ctx_.String(node, key);
-    if (value.empty()) ctx_.Fail(node[key], Quote(key) + " must not be empty");
+    if (value.empty()) ctx_.Fail(node[key], Quoted(key) + " must not be empty");
     const std::string path = Resolve(value);
     std::error_code ec;
-    if (!fs::exists(path, ec)) ctx_.Fail(node[key], "file " + Quote(value) + " does not exist (looked for " + path + ")");
+    if (!fs::exists(path, ec)) ctx_.Fail(node[key], "file " + Quoted(value) + " does not exist (looked for " + path + ")");
     return path;
   }
 
@@ -129,7 +127,7 @@ class FeModelFileParser {
     if (fs::is_directory(path, ec)) ctx_.Fail(v, "'mesh' must be a mesh file, got the directory " + path);
     const bool known = ctx_.Guard(v, [&] { return ReadMeshFile(path, *mesh_); });
     if (!known)
-      ctx_.Fail(v, "'mesh' file " + Quote(v.Scalar()) + " has an unknown extension (known: " + MeshFormatList() + ")");
+      ctx_.Fail(v, "'mesh' file " + Quoted(v.Scalar()) + " has an unknown extension (known: " + MeshFormatList() + ")");
     mesh_name_ = fs::path(path).filename().string();
   }
 
@@ -151,7 +149,7 @@ class FeModelFileParser {
     if (!v.IsScalar()) ctx_.Fail(v, "expected the name of an element set");
     const auto it = mesh_->element_sets.find(v.Scalar());
     if (it == mesh_->element_sets.end())
-      ctx_.Fail(v, "there is no element set named " + Quote(v.Scalar()) + " in " + mesh_name_ +
+      ctx_.Fail(v, "there is no element set named " + Quoted(v.Scalar()) + " in " + mesh_name_ +
                        " (element sets: " + KeyList(mesh_->element_sets) + ")");
     return it->second;
   }
@@ -186,7 +184,7 @@ class FeModelFileParser {
     for (auto it = node.begin(); it != node.end(); ++it) {
       if (!it->first.IsScalar()) ctx_.Fail(it->first, "a material name must be a plain name");
       const std::string name = it->first.Scalar();
-      ctx_.SetEntity("material " + Quote(name));
+      ctx_.SetEntity("material " + Quoted(name));
       const YAML::Node m = it->second;
       ctx_.CheckKeys(m, {"E", "nu", "rho", "G"});
       fe::Material mat;
@@ -200,7 +198,7 @@ class FeModelFileParser {
       mat.G = m["G"] ? ctx_.Positive(m, "G") : mat.E / (2.0 * (1.0 + mat.nu));
       mat.origin = {path_, YamlContext::Line(m)};
       if (!materials_.emplace(name, static_cast<int>(mesh_->materials.size())).second)
-        ctx_.Fail(it->first, "material " + Quote(name) + " is defined twice");
+        ctx_.Fail(it->first, "material " + Quoted(name) + " is defined twice");
       mesh_->materials.push_back(mat);
     }
   }
@@ -259,7 +257,7 @@ class FeModelFileParser {
         property = static_cast<int>(mesh_->solid_sections.size());
         mesh_->solid_sections.push_back(sec);
       } else {
-        ctx_.Fail(s["type"], "unknown section type " + Quote(type) + " (allowed: shell, beam, solid)");
+        ctx_.Fail(s["type"], "unknown section type " + Quoted(type) + " (allowed: shell, beam, solid)");
       }
       Assign(s, family, property);
     }
@@ -280,7 +278,7 @@ class FeModelFileParser {
 
   double NonNegative(const YAML::Node& s, const char* key) {
     const double x = ctx_.Double(s, key, 0.0);
-    if (x < 0.0) ctx_.Fail(s[key], Quote(key) + " must not be negative");
+    if (x < 0.0) ctx_.Fail(s[key], Quoted(key) + " must not be negative");
     return x;
   }
 
@@ -288,7 +286,7 @@ class FeModelFileParser {
     const std::string name = ctx_.String(s, "material");
     const auto it = materials_.find(name);
     if (it == materials_.end())
-      ctx_.Fail(s["material"], "there is no material named " + Quote(name) + " in 'materials' (materials: " +
+      ctx_.Fail(s["material"], "there is no material named " + Quoted(name) + " in 'materials' (materials: " +
                                    KeyList(materials_) + ")");
     return it->second;
   }
@@ -310,7 +308,7 @@ class FeModelFileParser {
       for (int index : set) {
         fe::Element& e = mesh_->elements[index];
         if (FamilyOf(e.type) != family)
-          ctx_.Fail(v, std::string("element set ") + Quote(v.Scalar()) + " holds " + ElementName(e) +
+          ctx_.Fail(v, std::string("element set ") + Quoted(v.Scalar()) + " holds " + ElementName(e) +
                            (e.origin.line > 0 ? " (" + e.origin.file + ":" + std::to_string(e.origin.line) + ")" : "") +
                            ", which cannot take a " + FamilyName(family) + " section");
         Give(e, family, property);
@@ -333,7 +331,7 @@ class FeModelFileParser {
       std::string sets;
       for (const auto& [name, list] : mesh_->element_sets)
         if (std::find(list.begin(), list.end(), static_cast<int>(k)) != list.end())
-          sets += (sets.empty() ? "" : ", ") + Quote(name);
+          sets += (sets.empty() ? "" : ", ") + Quoted(name);
       throw InputError("has no section: no entry of 'sections' in " + fs::path(path_).filename().string() +
                            " covers it (element sets: " + (sets.empty() ? "none" : sets) +
                            "); assign one, or remove boundary elements with 'drop_elements'",
@@ -358,7 +356,7 @@ class FeModelFileParser {
       }
       if (number) {
         if (x != std::floor(x) || x < 1 || x > 2147483647.0)
-          ctx_.Fail(v, "a node id must be a positive whole number, got " + Quote(v.Scalar()));
+          ctx_.Fail(v, "a node id must be a positive whole number, got " + Quoted(v.Scalar()));
         const int n = mesh_->NodeIndex(static_cast<int>(x));
         if (n < 0) ctx_.Fail(v, "node " + v.Scalar() + " does not exist in " + MeshName());
         out.push_back(n);
@@ -366,9 +364,9 @@ class FeModelFileParser {
       }
       const auto it = mesh_->node_sets.find(v.Scalar());
       if (it == mesh_->node_sets.end())
-        ctx_.Fail(v, "there is no node set named " + Quote(v.Scalar()) + " in " + MeshName() + " (node sets: " +
+        ctx_.Fail(v, "there is no node set named " + Quoted(v.Scalar()) + " in " + MeshName() + " (node sets: " +
                          KeyList(mesh_->node_sets) + ")");
-      if (it->second.empty()) ctx_.Fail(v, "node set " + Quote(v.Scalar()) + " is empty");
+      if (it->second.empty()) ctx_.Fail(v, "node set " + Quoted(v.Scalar()) + " is empty");
       out.insert(out.end(), it->second.begin(), it->second.end());
     }
     return out;
@@ -385,7 +383,7 @@ class FeModelFileParser {
     std::sort(nodes.begin(), nodes.end());
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
     if (nodes.size() != 1)
-      ctx_.Fail(s[key], Quote(key) + " must name exactly one node, got " + std::to_string(nodes.size()));
+      ctx_.Fail(s[key], Quoted(key) + " must name exactly one node, got " + std::to_string(nodes.size()));
     return nodes[0];
   }
 
@@ -393,15 +391,15 @@ class FeModelFileParser {
   int Dofs(const YAML::Node& s, const char* key) {
     const YAML::Node v = s[key];
     if (!v) return 0b111111;
-    if (!v.IsScalar()) ctx_.Fail(v, Quote(key) + " must be digits 1 to 6, e.g. 123 or 123456");
+    if (!v.IsScalar()) ctx_.Fail(v, Quoted(key) + " must be digits 1 to 6, e.g. 123 or 123456");
     int mask = 0;
     for (char c : v.Scalar()) {
       if (c < '1' || c > '6' || (mask & (1 << (c - '1'))))
-        ctx_.Fail(v, Quote(key) + " must be distinct digits 1 to 6 (1-3 translations, 4-6 rotations), got " +
-                         Quote(v.Scalar()));
+        ctx_.Fail(v, Quoted(key) + " must be distinct digits 1 to 6 (1-3 translations, 4-6 rotations), got " +
+                         Quoted(v.Scalar()));
       mask |= 1 << (c - '1');
     }
-    if (mask == 0) ctx_.Fail(v, Quote(key) + " must not be empty");
+    if (mask == 0) ctx_.Fail(v, Quoted(key) + " must not be empty");
     return mask;
   }
 
@@ -538,7 +536,7 @@ fe::FeModel LoadFeModel(const std::string& path) {
   if (ext == ".yaml" || ext == ".yml") return LoadFeModelFile(path);
   fe::FeModel model;
   if (!ReadMeshFile(path, model.mesh))
-    throw InputError("unknown FE model file type " + Quote(ext.empty() ? fs::path(path).filename().string() : ext) +
+    throw InputError("unknown FE model file type " + Quoted(ext.empty() ? fs::path(path).filename().string() : ext) +
                          " (known: " + MeshFormatList() + ", .yaml/.yml (FE model file), or an exchange-set directory)",
                      {path, 0, ""});
   return model;
@@ -548,16 +546,16 @@ std::vector<int> ResolveNodeList(const fe::Mesh& mesh, const std::string& ids_or
   const std::string& file = mesh.source;
   const auto set = mesh.node_sets.find(ids_or_set);
   if (set != mesh.node_sets.end()) {
-    if (set->second.empty()) throw InputError("node set is empty", {file, 0, "node set " + Quote(ids_or_set)});
+    if (set->second.empty()) throw InputError("node set is empty", {file, 0, "node set " + Quoted(ids_or_set)});
     return set->second;
   }
   const bool list = !ids_or_set.empty() &&
                     ids_or_set.find_first_not_of("0123456789, ") == std::string::npos &&
                     ids_or_set.find_first_of("0123456789") != std::string::npos;
   if (!list)
-    throw InputError("there is no node set named " + Quote(ids_or_set) + " (node sets: " + KeyList(mesh.node_sets) +
+    throw InputError("there is no node set named " + Quoted(ids_or_set) + " (node sets: " + KeyList(mesh.node_sets) +
                          "), and it is not a comma-separated list of node ids",
-                     {file, 0, "node set " + Quote(ids_or_set)});
+                     {file, 0, "node set " + Quoted(ids_or_set)});
   std::vector<int> out;
   std::set<int> seen;
   std::stringstream items(ids_or_set);
@@ -565,17 +563,17 @@ std::vector<int> ResolveNodeList(const fe::Mesh& mesh, const std::string& ids_or
   while (std::getline(items, item, ',')) {
     const size_t a = item.find_first_not_of(' '), b = item.find_last_not_of(' ');
     if (a == std::string::npos)
-      throw InputError("empty entry in the node list " + Quote(ids_or_set), {file, 0, ""});
+      throw InputError("empty entry in the node list " + Quoted(ids_or_set), {file, 0, ""});
     const std::string digits = item.substr(a, b - a + 1);
     if (digits.find(' ') != std::string::npos || digits.size() > 10 || std::stoll(digits) > 2147483647LL ||
         std::stoll(digits) < 1)
-      throw InputError("bad node id " + Quote(digits) + " in " + Quote(ids_or_set), {file, 0, "node " + digits});
+      throw InputError("bad node id " + Quoted(digits) + " in " + Quoted(ids_or_set), {file, 0, "node " + digits});
     const int id = static_cast<int>(std::stoll(digits));
     const int n = mesh.NodeIndex(id);
     if (n < 0) throw InputError("does not exist in the mesh", {file, 0, "node " + std::to_string(id)});
     if (seen.insert(n).second) out.push_back(n);
   }
-  if (ids_or_set.back() == ',') throw InputError("empty entry in the node list " + Quote(ids_or_set), {file, 0, ""});
+  if (ids_or_set.back() == ',') throw InputError("empty entry in the node list " + Quoted(ids_or_set), {file, 0, ""});
   return out;
 }
 

@@ -15,19 +15,18 @@
 #include "flexmb/ancf/ancf_beam3d_body.h"
 #include "flexmb/ancf/ancf_cable3d_body.h"
 #include "flexmb/common/error.h"
+#include "flexmb/common/text.h"
 #include "flexmb/model/model.h"
 
 namespace flexmb {
 namespace {
-
-std::string Quote(const std::string& s) { return "'" + s + "'"; }
 
 // body name: non-empty, no '.', not ground
 std::string BodyName(const YAML::Node& node, ParseContext& ctx) {
   const std::string name = ctx.String(node, "name");
   if (name.empty()) ctx.Fail(node["name"], "a body name must not be empty");
   if (name.find('.') != std::string::npos || name == "ground")
-    ctx.Fail(node["name"], "invalid body name " + Quote(name));
+    ctx.Fail(node["name"], "invalid body name " + Quoted(name));
   return name;
 }
 
@@ -76,7 +75,7 @@ void ParseNodeMarkers(const YAML::Node& node, int body, int nodes, ParseContext&
       else if (end == "end")
         k = nodes - 1;
       else
-        ctx.Fail(m["end"], "unknown 'end' " + Quote(end) + " (allowed: start, end)");
+        ctx.Fail(m["end"], "unknown 'end' " + Quoted(end) + " (allowed: start, end)");
     } else {
       ctx.Fail(m, "an ANCF marker needs 'node: k' or 'end: start|end'");
     }

@@ -15,14 +15,13 @@
 #include "flexmb/bodies/flexible_body.h"
 #include "flexmb/common/error.h"
 #include "flexmb/common/log.h"
+#include "flexmb/common/text.h"
 #include "flexmb/body_file/body_file.h"
 #include "flexmb/body_file/unit_system.h"
 #include "flexmb/model/model.h"
 
 namespace flexmb {
 namespace {
-
-std::string Quote(const std::string& s) { return "'" + s + "'"; }
 
 // a list of exactly n numbers at node[key], or empty if absent
 VecX NumberList(const YAML::Node& node, const char* key, int n, const ParseContext& ctx) {
@@ -72,7 +71,7 @@ void ParseFlexibleBody(const YAML::Node& node, ParseContext& ctx, std::map<std::
   const std::string name = ctx.String(node, "name");
   if (name.empty()) ctx.Fail(node["name"], "a body name must not be empty");
   if (name.find('.') != std::string::npos || name == "ground")
-    ctx.Fail(node["name"], "invalid body name " + Quote(name));
+    ctx.Fail(node["name"], "invalid body name " + Quoted(name));
   const std::string entity = "body '" + name + "'";
   ctx.SetEntity(entity);
 
@@ -84,7 +83,7 @@ void ParseFlexibleBody(const YAML::Node& node, ParseContext& ctx, std::map<std::
   try {
     *reduced = io::ReadBody(path.string());
   } catch (const InputError& e) {
-    ctx.Fail(node["file"], "cannot use body file " + Quote(path.string()) + ": " + e.what());
+    ctx.Fail(node["file"], "cannot use body file " + Quoted(path.string()) + ": " + e.what());
   }
   // units: another system is an error, an unknown or implausible one a warning
   std::vector<std::string> unit_warnings;
@@ -108,7 +107,7 @@ void ParseFlexibleBody(const YAML::Node& node, ParseContext& ctx, std::map<std::
   if (node["geometric_stiffening"]) {
     const bool on = ctx.Bool(node, "geometric_stiffening", false);
     if (on && reduced->geometric_stiffness.empty())
-      ctx.Fail(node["geometric_stiffening"], "body file " + Quote(path.string()) +
+      ctx.Fail(node["geometric_stiffening"], "body file " + Quoted(path.string()) +
                                                  " has no geometric stiffness: reduce it with --geometric-stiffening");
     d.geometric_stiffening = on ? GeometricStiffening::kOn : GeometricStiffening::kOff;
   }
@@ -126,7 +125,7 @@ void ParseFlexibleBody(const YAML::Node& node, ParseContext& ctx, std::map<std::
     const int k = reduced->mesh.NodeIndex(id);
     if (k < 0)
       ctx.Fail(m["node"], "node " + std::to_string(id) + " does not exist in body file " +
-                              Quote(path.string()) + " of body " + Quote(name));
+                              Quoted(path.string()) + " of body " + Quoted(name));
     if (!flex->IsInterfaceNode(k))
       LogWarning(ctx.file() + ":" + std::to_string(ParseContext::Line(m["node"])) + ": " + ctx.entity() +
                  ": node " + std::to_string(id) + " is not an interface node of the reduction; its motion "
