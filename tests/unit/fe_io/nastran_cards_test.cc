@@ -1,11 +1,12 @@
 // Nastran cards beyond elements with a section: CONM1 (general nodal mass
 // matrix), CELAS1 / PELAS and CELAS2 (scalar springs), each checked against
-// a hand-computed reference.
+// a hand-computed reference; INCLUDE resolution as Nastran searches.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include "flexmb/fe/assembly.h"
@@ -211,6 +212,50 @@ TEST(NastranCards, AbaqusWriterRefusesSprings) {
   testing::ExpectContains(
       testing::InputErrorOf([&] { WriteAbaqus(mesh, testing::ScratchPath("celas_to_abaqus.inp")); }),
       {path + ":4", "scalar spring 7", "cannot be written to an Abaqus deck"}, "abaqus");
+}
+
+// ---- INCLUDE ------------------------------------------------------------------------
+
+// a relative INCLUDE is searched in the including file's folder, then the
+// main deck's folder, then the current directory
+TEST(NastranInclude, SearchesIncludingFolderThenMainDeckFolderThenCurrentDirectory) {
+  namespace fs = std::filesystem;
+  const std::string main = testing::WriteScratch("include_search/main.bdf",
+                                                 "GRID,1,,0.,0.,0.\n"
+                                                 "INCLUDE 'sub/a.bdf'\n");
+  // sub/a.bdf includes b.bdf (in sub/ and in the main folder: sub/ wins),
+  // c.bdf (only in the main folder) and d.bdf (only in the current directory)
+  testing::WriteScratch("include_search/sub/a.bdf", "INCLUDE 'b.bdf'\nINCLUDE 'c.bdf'\nINCLUDE 'd.bdf'\n");
+  testing::WriteScratch("include_search/sub/b.bdf", "GRID,2,,2.,0.,0.\n");
+  testing::WriteScratch("include_search/b.bdf", "GRID,2,,-2.,0.,0.\n");
+  testing::WriteScratch("include_search/c.bdf", "GRID,3,,3.,0.,0.\n");
+  testing::WriteScratch("include_search_cwd/d.bdf", "GRID,4,,4.,0.,0.\n");
+  const fs::path before = fs::current_path();
+  fs::current_path(testing::ScratchPath("include_search_cwd"));
+  fe::Mesh mesh;
+  std::string missing;
+  try {
+    mesh = ReadNastran(main);
+    testing::WriteScratch("include_search/sub/e.bdf", "INCLUDE 'nowhere.bdf'\n");
+    const std::string e_main = testing::WriteScratch("include_search/e_main.bdf", "INCLUDE 'sub/e.bdf'\n");
+    missing = testing::InputErrorOf([&] { ReadNastran(e_main); });
+  } catch (...) {
+    fs::current_path(before);
+    throw;
+  }
+  fs::current_path(before);
+  ASSERT_EQ(mesh.nodes.size(), 4u);
+  for (int id = 1; id <= 4; ++id) {
+    const int n = mesh.NodeIndex(id);
+    ASSERT_GE(n, 0) << id;
+    EXPECT_EQ(mesh.nodes[n].x, Vec3((id == 1 ? 0.0 : id), 0.0, 0.0)) << id;
+  }
+  // the error names the including file's line and every folder tried
+  const std::string root = testing::ScratchPath("include_search");
+  testing::ExpectContains(missing,
+                          {"sub/e.bdf:1: INCLUDE: cannot open 'nowhere.bdf'", "'" + root + "/sub' (including file)",
+                           "'" + root + "' (main deck)", testing::ScratchPath("include_search_cwd") + "' (current directory)"},
+                          "missing include");
 }
 
 }  // namespace
