@@ -1,5 +1,6 @@
 #include "flexmb/body_file/body_file_mesh.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <set>
@@ -155,6 +156,37 @@ void WriteExtras(hdf5::Writer& w, const fe::Mesh& mesh) {
     w.Doubles("/mesh/point_masses/mass", mass);
     w.Doubles("/mesh/point_masses/offsets", {np, 3}, offsets.data());
     w.Doubles("/mesh/point_masses/inertia", {np, 3, 3}, hdf5::Blocks(inertia).data());
+    // general 6 x 6 nodal mass matrices (CONM1), only if there are any
+    std::vector<int> general;
+    std::vector<double> matrices;
+    for (const fe::PointMass& p : mesh.point_masses) {
+      general.push_back(p.general ? 1 : 0);
+      for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 6; ++j) matrices.push_back(p.matrix(i, j));
+    }
+    if (std::count(general.begin(), general.end(), 1) > 0) {
+      w.Ints("/mesh/point_masses/general", general);
+      w.Doubles("/mesh/point_masses/matrices", {np, 6, 6}, matrices.data());
+    }
+  }
+
+  // scalar springs (CELAS1, CELAS2), only if there are any: [S, 2] nodes
+  // and components, node -1 for a grounded end
+  if (!mesh.springs.empty()) {
+    w.Group("/mesh/springs");
+    std::vector<int> ids, nodes, components;
+    std::vector<double> k;
+    for (const fe::ScalarSpring& s : mesh.springs) {
+      ids.push_back(s.id);
+      nodes.insert(nodes.end(), {s.node_a, s.node_b});
+      components.insert(components.end(), {s.component_a, s.node_b >= 0 ? s.component_b : 0});
+      k.push_back(s.k);
+    }
+    const hsize_t ns = Size(mesh.springs.size());
+    w.Ints("/mesh/springs/ids", ids);
+    w.Data("/mesh/springs/nodes", H5T_STD_I32LE, H5T_NATIVE_INT, {ns, 2}, nodes.data());
+    w.Data("/mesh/springs/components", H5T_STD_I32LE, H5T_NATIVE_INT, {ns, 2}, components.data());
+    w.Doubles("/mesh/springs/stiffness", k);
   }
 
   w.Group("/mesh/rigid_links");
@@ -267,6 +299,12 @@ void ReadExtras(const hdf5::Reader& r, int nn, int ne, const fe::Origin& origin,
     const std::vector<double> mass = r.Doubles(g + "mass", {Size(n)});
     const std::vector<double> off = r.Doubles(g + "offsets", {Size(n), 3});
     const std::vector<fe::Mat3> inertia = r.Blocks(g + "inertia", {Size(n), 3, 3});
+    // optional (files without general mass matrices have none)
+    const bool has_general = r.Exists(g + "general");
+    const std::vector<int> general = has_general ? r.Ints(g + "general", n) : std::vector<int>(n, 0);
+    if (has_general) r.InRange(g + "general", general, 0, 2, "flag");
+    const std::vector<double> matrices =
+        has_general ? r.Doubles(g + "matrices", {Size(n), 6, 6}) : std::vector<double>();
     for (size_t k = 0; k < n; ++k) {
       fe::PointMass p;
       p.id = ids[k];
@@ -274,8 +312,38 @@ void ReadExtras(const hdf5::Reader& r, int nn, int ne, const fe::Origin& origin,
       p.mass = mass[k];
       p.offset = fe::Vec3(off[3 * k], off[3 * k + 1], off[3 * k + 2]);
       p.inertia = inertia[k];
+      p.general = general[k] != 0;
+      if (p.general) p.matrix = Eigen::Map<const fe::Mat6>(matrices.data() + 36 * k).transpose();
       p.origin = origin;
       mesh.point_masses.push_back(p);
+    }
+  }
+  if (r.Exists("/mesh/springs/ids")) {
+    // optional: files of meshes without scalar springs have none
+    const std::string g = "/mesh/springs/";
+    const size_t n = r.Length(g + "ids");
+    const std::vector<int> ids = r.Ints(g + "ids", n);
+    auto pairs = [&](const std::string& name) {
+      std::vector<int> v(2 * n);
+      r.Read(g + name, r.Checked(g + name, H5T_INTEGER, {Size(n), 2}), H5T_NATIVE_INT, v.data());
+      return v;
+    };
+    const std::vector<int> nodes = pairs("nodes");
+    r.InRange(g + "nodes", nodes, -1, nn, "node");
+    const std::vector<int> components = pairs("components");
+    r.InRange(g + "components", components, 0, 6, "component");
+    const std::vector<double> k = r.Doubles(g + "stiffness", {Size(n)});
+    for (size_t s = 0; s < n; ++s) {
+      fe::ScalarSpring sp;
+      sp.id = ids[s];
+      sp.node_a = nodes[2 * s];
+      sp.node_b = nodes[2 * s + 1];
+      sp.component_a = components[2 * s];
+      sp.component_b = components[2 * s + 1];
+      sp.k = k[s];
+      sp.origin = origin;
+      if (sp.node_a < 0) r.Fail("dataset " + g + "nodes", "spring " + std::to_string(sp.id) + " has no first node");
+      mesh.springs.push_back(sp);
     }
   }
   {

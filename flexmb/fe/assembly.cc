@@ -203,6 +203,16 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
     }
     mass6[k] = PointMassMatrix(pm);
   }
+  for (const ScalarSpring& sp : mesh.springs) {
+    const std::string name = "scalar spring " + std::to_string(sp.id);
+    if (sp.node_a < 0 || sp.node_a >= nn || sp.node_b < -1 || sp.node_b >= nn)
+      Fail(sp.origin, name, "refers to a node that does not exist");
+    if (sp.component_a < 0 || sp.component_a > 5 || (sp.node_b >= 0 && (sp.component_b < 0 || sp.component_b > 5)))
+      Fail(sp.origin, name, "component must be 0 to 5 (ux uy uz rx ry rz)");
+    if (sp.node_a == sp.node_b && sp.component_a == sp.component_b)
+      Fail(sp.origin, name, "connects a DOF to itself");
+    if (!std::isfinite(sp.k) || sp.k < 0.0) Fail(sp.origin, name, "stiffness must be finite and >= 0");
+  }
   for (const RigidLink& link : mesh.rigid_links) {
     const std::string name = "rigid link " + std::to_string(link.id);
     if (link.independent < 0 || link.independent >= nn) {
@@ -235,6 +245,10 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
     for (int c = 0; c < 6; ++c) {
       if (mass6[k].row(c).cwiseAbs().maxCoeff() > 0.0) active[mesh.point_masses[k].node] |= 1 << c;
     }
+  }
+  for (const ScalarSpring& sp : mesh.springs) {
+    active[sp.node_a] |= 1 << sp.component_a;
+    if (sp.node_b >= 0) active[sp.node_b] |= 1 << sp.component_b;
   }
 
   // dependent slots: each at most once, never an independent node
@@ -370,8 +384,9 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
     out.T.setFromTriplets(t.begin(), t.end());
   }
 
-  // local -> full DOF of each block (elements first, then point masses)
-  const int nb = ne + static_cast<int>(mesh.point_masses.size());
+  // local -> full DOF of each block (elements first, then point masses, then springs)
+  const int np = static_cast<int>(mesh.point_masses.size());
+  const int nb = ne + np + static_cast<int>(mesh.springs.size());
   std::vector<int> block_ptr(nb + 1, 0), block_full;
   for (int e = 0; e < ne; ++e) {
     const Element& el = mesh.elements[e];
@@ -384,6 +399,12 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
   for (size_t k = 0; k < mesh.point_masses.size(); ++k) {
     for (int c = 0; c < 6; ++c) block_full.push_back(dm.full[mesh.point_masses[k].node][c]);
     block_ptr[ne + k + 1] = static_cast<int>(block_full.size());
+  }
+  for (size_t k = 0; k < mesh.springs.size(); ++k) {
+    const ScalarSpring& sp = mesh.springs[k];
+    block_full.push_back(dm.full[sp.node_a][sp.component_a]);
+    if (sp.node_b >= 0) block_full.push_back(dm.full[sp.node_b][sp.component_b]);
+    block_ptr[ne + np + k + 1] = static_cast<int>(block_full.size());
   }
 
   // sparsity pattern: count, fill, sort and unique per column
@@ -453,9 +474,15 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
       in.beam = resolved[b].beam;
       in.mass_form = options.mass_form;
       ElementMatrices(in, ke, me);
-    } else {
+    } else if (b < ne + np) {
       ke.setZero(6, 6);
       me = mass6[b - ne];
+    } else {
+      // k (u_a - u_b)^2 / 2, or k u_a^2 / 2 to ground
+      const double k = mesh.springs[b - ne - np].k;
+      ke.setConstant(n, n, -k);
+      ke.diagonal().setConstant(k);
+      me.setZero(n, n);
     }
     if (full_mass) full_mass->Add(full, n, me);
     bm.Build(full, n, x);

@@ -15,7 +15,7 @@ namespace flexmb::fe {
 using SparseMat = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 /// Global numbering: every node has 6 DOF slots (ux uy uz rx ry rz). A slot
-/// is active if some element, mass or link gives it stiffness or mass
+/// is active if some element, mass, spring or link gives it stiffness or mass
 /// (rotations of nodes used only by solids are inactive). Active slots that
 /// are neither constrained nor dependent (rigid links) are the free DOF.
 struct DofMap {
@@ -50,7 +50,8 @@ struct AssemblyOptions {
   std::vector<int> extra_fixed_nodes;  ///< node indices fixed in all 6 DOF (e.g. --fix)
 };
 
-/// Numbers the DOF, computes every element's matrices and assembles K and M,
+/// Numbers the DOF, computes every element's matrices and assembles K and M
+/// (with the point masses and the scalar springs),
 /// then eliminates rigid links (K_free = T^T K T) and constraints. Throws
 /// InputError naming the element or link at fault.
 AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options = {});

@@ -25,6 +25,8 @@ inline constexpr int kTet10EdgeCorners[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, 
 
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
+/// 6 x 6 matrix in a node's DOF order (ux uy uz rx ry rz).
+using Mat6 = Eigen::Matrix<double, 6, 6>;
 
 /// Where an entity was defined, for messages ("frame.bdf:1234").
 struct Origin {
@@ -112,13 +114,33 @@ struct Element {
 };
 
 /// Concentrated mass with inertia (CONM2): mass at an offset from its node;
-/// inertia about the mass's own centre, basic axes.
+/// inertia about the mass's own centre, basic axes. Or, if `general`, a
+/// general symmetric 6 x 6 nodal mass matrix (CONM1) in `matrix`, basic
+/// axes, DOF order ux uy uz rx ry rz [kg, kg m, kg m^2]; mass, offset and
+/// inertia are then unused (zero).
 struct PointMass {
   int id = 0;
   int node = -1;                  ///< node index
   double mass = 0.0;              ///< [kg]
   Vec3 offset = Vec3::Zero();     ///< from the node, basic frame [m]
   Mat3 inertia = Mat3::Zero();    ///< about the mass centre [kg m^2]
+  bool general = false;           ///< the mass is `matrix` (CONM1)
+  Mat6 matrix = Mat6::Zero();     ///< general nodal mass matrix, basic axes
+  Origin origin;
+};
+
+/// Scalar spring (CELAS1, CELAS2): stiffness k between component
+/// `component_a` of node `node_a` and component `component_b` of node
+/// `node_b`, or to ground if node_b < 0. Components 0..5 are ux uy uz rx ry
+/// rz in the basic frame. It adds k to K at (a, a) and (b, b) and -k at
+/// (a, b) and (b, a); it has no mass and no mesh cell.
+struct ScalarSpring {
+  int id = 0;
+  int node_a = -1;                ///< node index
+  int component_a = 0;            ///< 0..5
+  int node_b = -1;                ///< node index, -1: grounded
+  int component_b = 0;            ///< 0..5 (unused if grounded)
+  double k = 0.0;                 ///< [N/m] for translations, [N m/rad] for rotations
   Origin origin;
 };
 
@@ -149,6 +171,7 @@ struct Mesh {
   std::vector<BeamSection> beam_sections;
   std::vector<SolidSection> solid_sections;
   std::vector<PointMass> point_masses;
+  std::vector<ScalarSpring> springs;        ///< assembled into K with the elements
   std::vector<RigidLink> rigid_links;
   std::vector<Constraint> constraints;
   std::map<std::string, std::vector<int>> node_sets;     ///< name -> node indices

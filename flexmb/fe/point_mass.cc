@@ -18,6 +18,18 @@ namespace {
 }  // namespace
 
 Mat6 PointMassMatrix(const PointMass& pm) {
+  if (pm.general) {
+    if (!pm.matrix.allFinite()) Fail(pm, "mass matrix is not finite");
+    const double scale = pm.matrix.cwiseAbs().maxCoeff();
+    if ((pm.matrix - pm.matrix.transpose()).cwiseAbs().maxCoeff() > 1e-12 * scale)
+      Fail(pm, "mass matrix is not symmetric");
+    if (scale > 0.0) {
+      const double min_eig =
+          Eigen::SelfAdjointEigenSolver<Mat6>(pm.matrix, Eigen::EigenvaluesOnly).eigenvalues().minCoeff();
+      if (min_eig < -1e-12 * scale) Fail(pm, "mass matrix is not positive semi-definite");
+    }
+    return 0.5 * (pm.matrix + pm.matrix.transpose());
+  }
   if (!std::isfinite(pm.mass) || pm.mass < 0.0) Fail(pm, "mass must be finite and >= 0");
   if (!pm.offset.allFinite()) Fail(pm, "offset is not finite");
   if (!pm.inertia.allFinite()) Fail(pm, "inertia is not finite");

@@ -1,6 +1,7 @@
 #pragma once
 /// \file point_mass.h
-/// The 6 x 6 nodal mass matrix of a concentrated mass with inertia (CONM2).
+/// The 6 x 6 nodal mass matrix of a concentrated mass with inertia (CONM2)
+/// or of a general nodal mass matrix (CONM1).
 
 #include <Eigen/Core>
 
@@ -8,10 +9,9 @@
 
 namespace flexmb::fe {
 
-/// 6 x 6 matrix in the node's DOF order (ux uy uz rx ry rz).
-using Mat6 = Eigen::Matrix<double, 6, 6>;
-
-/// Mass matrix at the node of a mass `pm.mass` [kg] whose centre sits at
+/// Mass matrix at the node of a general point mass (pm.general): pm.matrix,
+/// checked to be finite, symmetric and positive semi-definite. Otherwise the
+/// mass matrix at the node of a mass `pm.mass` [kg] whose centre sits at
 /// `pm.offset` [m] from the node, with inertia `pm.inertia` [kg m^2] about
 /// that centre (basic axes): with d = offset,
 ///   M = [[m I, -m skew(d)], [m skew(d), I_c - m skew(d)^2]],

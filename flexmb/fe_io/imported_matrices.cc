@@ -152,6 +152,7 @@ fe::FeModel ReadImportedMatrices(const ImportedMatricesSpec& spec) {
   model.mesh.constraints.clear();
   model.mesh.rigid_links.clear();
   model.mesh.point_masses.clear();
+  model.mesh.springs.clear();
 
   fe::AssembledModel a;
   std::array<int, 6> none;

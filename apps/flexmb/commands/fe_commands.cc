@@ -189,6 +189,7 @@ int FeInfo(const FeInfoOptions& opt, std::ostream& out) {
     }
     s << "  \"rigid_links\": " << mesh.rigid_links.size() << ",\n";
     s << "  \"point_masses\": " << mesh.point_masses.size() << ",\n";
+    s << "  \"springs\": " << mesh.springs.size() << ",\n";
     s << "  \"constraints\": " << mesh.constraints.size() << ",\n";
     if (mesh.nodes.empty())
       s << "  \"bounding_box_m\": null,\n";
@@ -224,6 +225,7 @@ int FeInfo(const FeInfoOptions& opt, std::ostream& out) {
       s << "  " << name << ": " << Count(members.size(), "element") << "\n";
     s << "rigid links: " << mesh.rigid_links.size() << " (" << Count(dependent, "dependent node") << ")\n";
     s << "point masses: " << mesh.point_masses.size() << "\n";
+    s << "scalar springs: " << mesh.springs.size() << "\n";
     s << "constraints: " << mesh.constraints.size() << " (on " << Count(constrained_nodes.size(), "node") << ")\n";
     if (model.imported) {
       const fe::AssembledModel& m = *model.imported;

@@ -10,7 +10,6 @@
 namespace flexmb::fe {
 namespace {
 
-using Mat6 = Eigen::Matrix<double, 6, 6>;
 using Mat12 = Eigen::Matrix<double, 12, 12>;
 using Mat6x12 = Eigen::Matrix<double, 6, 12>;
 

@@ -125,6 +125,14 @@ std::vector<std::string> CheckWritable(const fe::Mesh& mesh) {
     if (pm.node < 0 || pm.node >= nn) throw InputError("refers to a node that does not exist", {pm.origin.file, pm.origin.line, entity});
     if (!pm.offset.isZero(0.0))
       throw InputError("an offset point mass cannot be written to an Abaqus deck", {pm.origin.file, pm.origin.line, entity});
+    if (pm.general)
+      throw InputError("a general 6 x 6 nodal mass matrix (CONM1) cannot be written to an Abaqus deck",
+                       {pm.origin.file, pm.origin.line, entity});
+  }
+  if (!mesh.springs.empty()) {
+    const fe::ScalarSpring& sp = mesh.springs.front();
+    throw InputError("scalar springs (CELAS1, CELAS2) cannot be written to an Abaqus deck yet",
+                     {sp.origin.file, sp.origin.line, "scalar spring " + std::to_string(sp.id)});
   }
   for (const fe::RigidLink& l : mesh.rigid_links) {
     const std::string entity = "rigid link " + std::to_string(l.id);

@@ -5,7 +5,8 @@
 /// defined by topic: nastran_reader.cc (card phases, checks and lookups),
 /// nastran_geometry.cc (defaults, coordinate systems, materials, grids),
 /// nastran_properties.cc (PSHELL, PSOLID, PBAR, PBARL, PBEAM, PBEAML),
-/// nastran_elements.cc (shells, solids, beams, CONM2) and
+/// nastran_elements.cc (shells, solids, beams, CONM2, CONM1),
+/// nastran_springs.cc (PELAS, CELAS1, CELAS2) and
 /// nastran_constraints.cc (RBE2, SPC, ASET / BSET, SET1).
 
 #include <initializer_list>
@@ -76,7 +77,8 @@ class Builder {
   std::map<int, fe::Origin> material_origin_;
   std::map<int, PropertyRef> properties_;
   std::map<int, fe::Origin> property_origin_;
-  std::map<int, fe::Origin> element_ids_;       // elements, RBE2 and CONM2 share the id space
+  std::vector<double> pelas_k_;                 // PELAS stiffness by property index
+  std::map<int, fe::Origin> element_ids_;       // elements, RBE2, masses and springs share the id space
   std::map<std::string, std::set<int>> set_members_;
   std::set<std::string> warned_;
   const Card* grdset_ = nullptr;
@@ -124,6 +126,11 @@ class Builder {
   fe::Vec3 Offset(const Entry& e, char how, const fe::Vec3& w, int node, const fe::Vec3& xa, const fe::Vec3& xb,
                   const fe::Vec3& v, int field);
   void AddConm2(const Entry& e);
+  void AddConm1(const Entry& e);
+
+  // nastran_springs.cc
+  void AddPelas(const Entry& e);
+  void AddCelas(const Entry& e);
 
   // nastran_constraints.cc
   void AddRbe2(const Entry& e);

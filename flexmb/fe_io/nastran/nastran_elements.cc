@@ -209,4 +209,39 @@ void Builder::AddConm2(const Entry& e) {
   mesh_.point_masses.push_back(pm);
 }
 
+// the lower triangle of the 6 x 6 matrix row by row from field 4 (M11, M21,
+// M22, M31, ...), in the system CID at the grid, turned to basic axes
+void Builder::AddConm1(const Entry& e) {
+  fe::PointMass pm;
+  pm.id = e.Id(1, "EID");
+  CheckNewId(element_ids_, e, pm.id, "element");
+  pm.node = NodeIndex(e, 2, "G");
+  const int cid = e.Int(3, "CID", 0);
+  if (cid < 0) e.Fail(3, "CID must be 0 or a coordinate system id");
+  if (e.Size() > 24) e.Fail(25, "unexpected field");
+  fe::Mat6 m = fe::Mat6::Zero();
+  int field = 4;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j <= i; ++j, ++field) {
+      const std::string what = "M" + std::to_string(i + 1) + std::to_string(j + 1);
+      m(i, j) = m(j, i) = e.Real(field, what.c_str(), 0.0);
+    }
+  for (int i = 0; i < 6; ++i) {
+    const std::string what = "M" + std::to_string(i + 1) + std::to_string(i + 1);
+    NonNegative(e, 4 + i * (i + 3) / 2, what.c_str(), m(i, i));
+  }
+  if (cid > 0) {
+    const Mat3 b = BasisAt(Coord(e, 3, cid), mesh_.nodes[pm.node].x);
+    fe::Mat6 t = fe::Mat6::Zero();
+    t.topLeftCorner<3, 3>() = b;
+    t.bottomRightCorner<3, 3>() = b;
+    m = t * m * t.transpose();
+  }
+  if (!m.allFinite()) e.Fail(4, "mass matrix is not finite");
+  pm.general = true;
+  pm.matrix = m;
+  pm.origin = OriginOf(e);
+  mesh_.point_masses.push_back(pm);
+}
+
 }  // namespace flexmb::io::nastran

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 #include <system_error>
+#include <utility>
+#include <vector>
 
 namespace flexmb::io::nastran {
 
@@ -290,6 +292,39 @@ class DeckReader {
     Append(fields, large ? 4 : 8, line_no);
   }
 
+  // the file an INCLUDE names: as given if absolute, else the first regular
+  // file among the including file's folder, the main deck's folder and the
+  // current directory (Nastran's search); the error names every folder tried
+  fs::path Locate(const std::string& name, int file, int line_no) {
+    const fs::path given(name);
+    if (!given.is_relative()) return given;
+    std::error_code ec;
+    const fs::path cwd = fs::current_path(ec);
+    // (folder, roles) in search order, each folder once
+    std::vector<std::pair<fs::path, std::string>> folders;
+    const std::pair<fs::path, const char*> roles[] = {{fs::path(deck.files[file]).parent_path(), "including file"},
+                                                      {fs::path(deck.files[0]).parent_path(), "main deck"},
+                                                      {fs::path(), "current directory"}};
+    for (const auto& role : roles) {
+      fs::path normal = role.first.lexically_normal();
+      if (normal == ".") normal.clear();
+      bool seen = false;
+      for (auto& f : folders)
+        if (f.first == normal) {
+          f.second += std::string(", ") + role.second;
+          seen = true;
+        }
+      if (!seen) folders.emplace_back(normal, role.second);
+    }
+    for (const auto& f : folders)
+      if (fs::is_regular_file(f.first / given, ec)) return f.first / given;
+    std::string tried;
+    for (const auto& f : folders)
+      tried += (tried.empty() ? "" : "; ") + std::string("'") + (f.first.empty() ? cwd : f.first).string() + "' (" +
+               f.second + ")";
+    Fail(file, line_no, "INCLUDE: cannot open '" + name + "': no such regular file in any folder tried: " + tried);
+  }
+
   // handles the INCLUDE at lines[k]; returns the index of its last line
   size_t Include(const std::vector<std::string_view>& lines, size_t k, int file, int depth) {
     const int line_no = static_cast<int>(k) + 1;
@@ -318,8 +353,7 @@ class DeckReader {
     if (Trim(name).empty()) Fail(file, line_no, "INCLUDE without a file name");
     if (depth + 1 > kMaxIncludeDepth)
       Fail(file, line_no, "INCLUDE nested deeper than " + std::to_string(kMaxIncludeDepth) + " levels");
-    fs::path target(name);
-    if (target.is_relative()) target = fs::path(deck.files[file]).parent_path() / target;
+    const fs::path target = Locate(name, file, line_no);
     const std::string display = target.lexically_normal().string();
     std::error_code ec;
     const fs::path canonical = fs::weakly_canonical(target, ec);

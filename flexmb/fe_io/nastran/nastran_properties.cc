@@ -10,6 +10,7 @@
 namespace flexmb::io::nastran {
 
 void Builder::AddProperty(const Entry& e) {
+  if (e.name() == "PELAS") return AddPelas(e);
   const int pid = e.Id(1, "PID");
   CheckNewId(property_origin_, e, pid, "property");
   const std::string& n = e.name();

@@ -29,8 +29,8 @@ const std::map<std::string, Phase>& Phases() {
         {Phase::kCoords, {"CORD2R", "CORD2C", "CORD2S", "CORD1R", "CORD1C", "CORD1S", "CORD3G", "CORD3R"}},
         {Phase::kMaterials, {"MAT1", "MAT2", "MAT3", "MAT8", "MAT9", "MAT10", "MAT11"}},
         {Phase::kGrids, {"GRID"}},
-        {Phase::kProperties, {"PSHELL", "PBAR", "PBARL", "PBEAM", "PBEAML", "PSOLID"}},
-        {Phase::kLinks, {"RBE2", "CONM2"}},
+        {Phase::kProperties, {"PSHELL", "PBAR", "PBARL", "PBEAM", "PBEAML", "PSOLID", "PELAS"}},
+        {Phase::kLinks, {"RBE2", "CONM2", "CONM1", "CELAS1", "CELAS2"}},
         {Phase::kSets, {"SPC1", "SPC", "ASET", "ASET1", "BSET", "BSET1", "SET1"}}};
     std::map<std::string, Phase> m;
     for (const auto& [phase, names] : groups)
@@ -49,13 +49,13 @@ const std::set<std::string> kSilent = {"PARAM", "EIGRL", "EIGR", "SPCADD"};
 // cards that would change stiffness or mass: reading on without them would
 // give a wrong model (the element cards of fe/element_traits.h come first)
 const std::set<std::string> kUnsupported = {
-    "CROD",   "CONROD", "CTUBE",   "CBUSH",   "CBUSH1D", "CBUSH2D", "CELAS1", "CELAS2",
+    "CROD",   "CONROD", "CTUBE",   "CBUSH",   "CBUSH1D", "CBUSH2D",
     "CELAS3", "CELAS4", "CGAP",    "CQUAD",   "CQUAD8",  "CQUADR",  "CTRIA6", "CTRIAR",
     "CPENTA", "CPYRAM", "CSHEAR",  "CBEND",   "CBEAM3",  "CWELD",   "CFAST",  "CSEAM",
-    "CTRIAX", "CTRIAX6", "CQUADX", "CMASS1",  "CMASS2",  "CMASS3",  "CMASS4", "CONM1",
+    "CTRIAX", "CTRIAX6", "CQUADX", "CMASS1",  "CMASS2",  "CMASS3",  "CMASS4",
     "GENEL",  "CRAC2D", "CRAC3D",  "RBE1",    "RBE3",    "RBAR",    "RBAR1",  "RROD",
     "RTRPLT", "RTRPLT1", "RSPLINE", "RJOINT", "RSSCON",  "MPC",     "PROD",   "PTUBE",
-    "PBUSH",  "PBUSH1D", "PBUSH2D", "PELAS",  "PGAP",    "PCOMP",   "PCOMPG", "PCOMPLS",
+    "PBUSH",  "PBUSH1D", "PBUSH2D", "PGAP",    "PCOMP",   "PCOMPG", "PCOMPLS",
     "PSHEAR", "PBCOMP", "PBEND",   "PBEAM3",  "PMASS",   "PWELD",   "PFAST",  "PSEAM",
     "PLPLANE", "PLSOLID", "PSHLN1", "PSHLN2", "PSLDN1",  "PBRSECT", "PBMSECT", "PCONEAX"};
 
@@ -124,6 +124,8 @@ void Builder::Dispatch(const Entry& e) {
       }
   if (n == "RBE2") return AddRbe2(e);
   if (n == "CONM2") return AddConm2(e);
+  if (n == "CONM1") return AddConm1(e);
+  if (n == "CELAS1" || n == "CELAS2") return AddCelas(e);
   if (n == "SPC1" || n == "SPC") return AddSpc(e);
   if (n == "ASET" || n == "ASET1" || n == "BSET" || n == "BSET1") return AddBoundarySet(e);
   if (n == "SET1") return AddSet1(e);

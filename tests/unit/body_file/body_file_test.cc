@@ -129,6 +129,18 @@ void ExpectBitIdenticalMesh(const fe::Mesh& a, const fe::Mesh& b) {
     ExpectSame(x.mass, y.mass, "point mass");
     EXPECT_TRUE(SameBits(x.offset.data(), y.offset.data(), 3));
     ExpectSame(x.inertia, y.inertia, "point mass inertia");
+    EXPECT_EQ(x.general, y.general);
+    EXPECT_TRUE(SameBits(x.matrix.data(), y.matrix.data(), 36));
+  }
+  ASSERT_EQ(a.springs.size(), b.springs.size());
+  for (size_t k = 0; k < a.springs.size(); ++k) {
+    const fe::ScalarSpring &x = a.springs[k], &y = b.springs[k];
+    EXPECT_EQ(x.id, y.id);
+    EXPECT_EQ(x.node_a, y.node_a);
+    EXPECT_EQ(x.component_a, y.component_a);
+    EXPECT_EQ(x.node_b, y.node_b);
+    EXPECT_EQ(x.component_b, y.component_b);
+    ExpectSame(x.k, y.k, "spring stiffness");
   }
   ASSERT_EQ(a.rigid_links.size(), b.rigid_links.size());
   for (size_t k = 0; k < a.rigid_links.size(); ++k) {
@@ -278,6 +290,18 @@ ReducedBody EveryField() {
   element(7, fe::ElementType::kQuad4, -1, {10, 11, 12, 13});
   m.point_masses.push_back({3, 4, val(), val.V3(), val.M3(), {}});
   m.point_masses.push_back({4, 13, val(), val.V3(), val.M3(), {}});
+  {
+    // a general 6 x 6 nodal mass matrix (CONM1)
+    fe::PointMass general;
+    general.id = 5;
+    general.node = 2;
+    general.general = true;
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j) general.matrix(i, j) = val();
+    m.point_masses.push_back(general);
+  }
+  m.springs.push_back({21, 3, 2, 7, 4, val(), {}});
+  m.springs.push_back({22, 5, 5, -1, 0, val(), {}});
   m.rigid_links.push_back({11, 0, {12, 13}, 0b111111, {}});
   m.rigid_links.push_back({12, 5, {}, 0b000111, {}});
   m.rigid_links.push_back({13, 6, {9}, 0b101000, {}});
