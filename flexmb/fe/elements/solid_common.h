@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/LU>
+#include <cmath>
 #include <string>
 
 #include "flexmb/common/error.h"
@@ -48,6 +49,23 @@ inline constexpr QuadPoint kTetFourPoint[4] = {{kTetRuleB, kTetRuleB, kTetRuleB,
                                                {kTetRuleA, kTetRuleB, kTetRuleB, 1.0 / 24.0},
                                                {kTetRuleB, kTetRuleA, kTetRuleB, 1.0 / 24.0},
                                                {kTetRuleB, kTetRuleB, kTetRuleA, 1.0 / 24.0}};
+
+/// Tensor-product Gauss rule on the cube [-1, 1]^3 with `order` points per
+/// direction (2 or 3: exact for polynomials of degree 3 or 5 in each
+/// variable); fills pts (8 or 27 entries) and returns the count.
+inline int HexGaussRule(int order, QuadPoint* pts) {
+  const double g2[2] = {-1.0 / std::sqrt(3.0), 1.0 / std::sqrt(3.0)};
+  const double w2[2] = {1.0, 1.0};
+  const double g3[3] = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)};
+  const double w3[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+  const double* g = order == 2 ? g2 : g3;
+  const double* w = order == 2 ? w2 : w3;
+  int k = 0;
+  for (int i = 0; i < order; ++i)
+    for (int j = 0; j < order; ++j)
+      for (int l = 0; l < order; ++l) pts[k++] = {g[i], g[j], g[l], w[i] * w[j] * w[l]};
+  return k;
+}
 
 /// Jacobian J = dX/dxi (rows: d/dxi, d/deta, d/dzeta of x y z) from the
 /// natural derivatives `dn` (3 x N) and node coordinates; returns det J and

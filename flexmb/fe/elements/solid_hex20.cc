@@ -68,21 +68,6 @@ void Hex20Shape(const solid::QuadPoint& p, Eigen::Matrix<double, 20, 1>& n, Eige
   }
 }
 
-// tensor-product Gauss rule with `order` points per direction (2 or 3)
-int Hex20GaussRule(int order, solid::QuadPoint* pts) {
-  const double g2[2] = {-1.0 / std::sqrt(3.0), 1.0 / std::sqrt(3.0)};
-  const double w2[2] = {1.0, 1.0};
-  const double g3[3] = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)};
-  const double w3[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
-  const double* g = order == 2 ? g2 : g3;
-  const double* w = order == 2 ? w2 : w3;
-  int k = 0;
-  for (int i = 0; i < order; ++i)
-    for (int j = 0; j < order; ++j)
-      for (int l = 0; l < order; ++l) pts[k++] = {g[i], g[j], g[l], w[i] * w[j] * w[l]};
-  return k;
-}
-
 // the Jacobian must be positive at the corners (a badly placed mid-edge
 // node folds the element there first)
 void Hex20CheckCorners(const ElementInput& in, const solid::SolidData& s) {
@@ -101,8 +86,8 @@ void SolidHex20Matrices(const ElementInput& in, MatX& K, MatX& M, Hex20Integrati
   const Element& e = *in.element;
   Hex20CheckCorners(in, s);
   solid::QuadPoint g2[8], g3[27];
-  Hex20GaussRule(2, g2);
-  Hex20GaussRule(3, g3);
+  solid::HexGaussRule(2, g2);
+  solid::HexGaussRule(3, g3);
   Mat60 k = Mat60::Zero();
   Mat60 m = Mat60::Zero();
   if (integration == Hex20Integration::kFull)
@@ -123,7 +108,7 @@ void SolidHex20GeometricStiffness(const ElementInput& in, const Eigen::VectorXd&
   const Eigen::Matrix<double, 6, 6> d = solid::ElasticityMatrix(s);
   const Eigen::Matrix<double, 60, 1> ue = u.head<60>();
   solid::QuadPoint g3[27];
-  Hex20GaussRule(3, g3);
+  solid::HexGaussRule(3, g3);
   Mat60 kg = Mat60::Zero();
   solid::AddGeometricStiffness<20>(
       g3, 27, Hex20Shape, in.x, s, *in.element,

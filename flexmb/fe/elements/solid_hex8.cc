@@ -26,21 +26,6 @@ void Hex8Shape(const solid::QuadPoint& p, Eigen::Matrix<double, 8, 1>& n,
   }
 }
 
-// tensor-product Gauss rule with `order` points per direction (2 or 3)
-int GaussRule(int order, solid::QuadPoint* pts) {
-  const double g2[2] = {-1.0 / std::sqrt(3.0), 1.0 / std::sqrt(3.0)};
-  const double w2[2] = {1.0, 1.0};
-  const double g3[3] = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)};
-  const double w3[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
-  const double* g = order == 2 ? g2 : g3;
-  const double* w = order == 2 ? w2 : w3;
-  int k = 0;
-  for (int i = 0; i < order; ++i)
-    for (int j = 0; j < order; ++j)
-      for (int l = 0; l < order; ++l) pts[k++] = {g[i], g[j], g[l], w[i] * w[j] * w[l]};
-  return k;
-}
-
 }  // namespace
 
 void SolidHex8Matrices(const ElementInput& in, MatX& K, MatX& M, Hex8Formulation formulation) {
@@ -49,8 +34,8 @@ void SolidHex8Matrices(const ElementInput& in, MatX& K, MatX& M, Hex8Formulation
   Eigen::Matrix<double, 8, 1> n;
   Eigen::Matrix<double, 3, 8> dn, dx;
   solid::QuadPoint g2[8], g3[27];
-  GaussRule(2, g2);
-  GaussRule(3, g3);
+  solid::HexGaussRule(2, g2);
+  solid::HexGaussRule(3, g3);
 
   Mat24 k = Mat24::Zero();
   if (formulation == Hex8Formulation::kFullIntegration) {
@@ -97,7 +82,7 @@ void SolidHex8GeometricStiffness(const ElementInput& in, const Eigen::VectorXd& 
   const Eigen::Matrix<double, 6, 1> sigma =
       solid::PointStress<8>({0.0, 0.0, 0.0, 0.0}, Hex8Shape, in.x, s, e) * u.head<24>();
   solid::QuadPoint g2[8];
-  GaussRule(2, g2);
+  solid::HexGaussRule(2, g2);
   Mat24 kg = Mat24::Zero();
   solid::AddGeometricStiffness<8>(
       g2, 8, Hex8Shape, in.x, s, e,
