@@ -18,6 +18,7 @@
 
 #include "flexmb/common/error.h"
 #include "flexmb/common/log.h"
+#include "flexmb/fe/element_matrices.h"
 #include "flexmb/fe/mesh.h"
 
 namespace flexmb::io::testing {
@@ -55,6 +56,26 @@ inline std::string WriteScratch(const std::string& name, const std::string& text
   std::ofstream out(path, std::ios::binary);
   out << text;
   return path.string();
+}
+
+/// Mass [kg] of one element with nodes at x and density rho (the sum of the
+/// x-direction block of its consistent mass, E = 2e11 Pa, nu = 0.3): rho V
+/// for an element read in the right node order.
+inline double ElementTotalMass(const fe::Element& e, const std::vector<fe::Vec3>& x, double rho) {
+  fe::Material mat;
+  mat.E = 2.0e11;
+  mat.nu = 0.3;
+  mat.rho = rho;
+  fe::ElementInput in;
+  in.element = &e;
+  in.x = x.data();
+  in.material = &mat;
+  fe::MatX K, M;
+  fe::ElementMatrices(in, K, M);
+  double total = 0.0;
+  for (int i = 0; i < M.rows(); i += 3)
+    for (int j = 0; j < M.cols(); j += 3) total += M(i, j);
+  return total;
 }
 
 /// The whole content of a file ("" if it cannot be read).
