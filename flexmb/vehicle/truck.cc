@@ -530,9 +530,15 @@ TireData LoadTireFile(const std::string& path) {
   }
   YamlContext ctx(path);
   ctx.SetEntity("tire data");
-  const YAML::Node t = root["tire"];
+  if (!root.IsMap()) ctx.Fail(root, "expected a top-level 'tire' map");
+  const YAML::Node t = ctx.MapChild(root, "tire");
   if (!t) ctx.Fail(root, "expected a top-level 'tire' map");
-  return ReadTireData(t, ctx);
+  try {
+    return ReadTireData(t, ctx);
+  } catch (const YAML::Exception& e) {
+    // a value of the wrong YAML kind that the checks above did not catch
+    throw InputError(std::string("cannot read the tire file: ") + e.what(), {path, YamlContext::Line(t), "tire data"});
+  }
 }
 
 TruckData ParseTruck(const YAML::Node& n, YamlContext& ctx, const std::string& dir) {
