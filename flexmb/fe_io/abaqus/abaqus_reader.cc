@@ -6,6 +6,7 @@
 #include "flexmb/common/log.h"
 #include "flexmb/fe_io/abaqus/abaqus_builder.h"
 #include "flexmb/fe_io/abaqus/abaqus_deck.h"
+#include "flexmb/fe_io/skipped_cards.h"
 
 namespace flexmb::io {
 namespace abaqus {
@@ -68,8 +69,17 @@ std::vector<int> Builder::Filter(std::vector<Card>& cards) {
   static const std::set<std::string> kSilent = {
       "HEADING", "PREPRINT", "NODEFILE", "ELFILE", "NODEPRINT", "ELPRINT", "OUTPUT", "NODEOUTPUT",
       "ELEMENTOUTPUT", "CONTACTOUTPUT", "ENERGYPRINT", "RESTART", "FILEFORMAT", "SECTIONCONTROLS",
-      "HOURGLASSSTIFFNESS", "AMPLITUDE", "INITIALCONDITIONS", "PHYSICALCONSTANTS", "SECTIONPOINTS",
+      "AMPLITUDE", "INITIALCONDITIONS", "PHYSICALCONSTANTS", "SECTIONPOINTS",
       "ENDPART", "ASSEMBLY", "ENDASSEMBLY", "ENDINSTANCE"};
+  // keywords that would change the stiffness or mass: reading on without
+  // them would give a different model (docs/formats.md)
+  static const std::set<std::string> kUnsupported = {
+      "EQUATION", "TIE", "MPC", "SPRING", "DASHPOT", "KINEMATICCOUPLING", "DISTRIBUTINGCOUPLING",
+      "SHELLGENERALSECTION", "MEMBRANESECTION", "CONNECTORSECTION", "CONNECTORBEHAVIOR", "CONNECTORELASTICITY",
+      "GAP", "TRANSFORM", "NONSTRUCTURALMASS", "EMBEDDEDELEMENT", "MATRIXINPUT", "MATRIXASSEMBLE",
+      "SUBSTRUCTUREPROPERTY", "GASKETSECTION", "COHESIVESECTION", "FRAMESECTION", "USERELEMENT", "UELPROPERTY",
+      "SHELLTOSOLIDCOUPLING", "PRETENSIONSECTION", "ELASTICFOUNDATION"};
+  SkippedCards skipped;
   std::vector<int> out;
   int material = -1, section = -1, coupling = -1, parts = 0, instances = 0;
   for (size_t i = 0; i < cards.size(); ++i) {
@@ -129,8 +139,10 @@ std::vector<int> Builder::Filter(std::vector<Card>& cards) {
       continue;
     }
     if (kSilent.count(c.key)) continue;
-    WarnOnce("kw " + c.key, At(c.origin) + ": keyword " + c.name + " is not supported by flexmb and is ignored");
+    if (kUnsupported.count(c.key)) skipped.Unsupported(c.name, c.origin, c.name);
+    else skipped.Ignored(c.name, c.origin);
   }
+  skipped.Report("keyword", cards.empty() ? std::string() : cards.front().origin.file);
   return out;
 }
 

@@ -12,6 +12,7 @@
 #include "flexmb/common/log.h"
 #include "flexmb/fe/element_traits.h"
 #include "flexmb/fe_io/nastran/nastran_builder.h"
+#include "flexmb/fe_io/skipped_cards.h"
 #include "flexmb/fe_io/nastran/nastran_fields.h"
 
 namespace flexmb::io {
@@ -76,17 +77,19 @@ std::string Str(double v) {
 
 fe::Mesh Builder::Run() {
   std::vector<std::vector<const Card*>> phases(static_cast<int>(Phase::kSets) + 1);
+  SkippedCards skipped;
   for (const Card& card : deck_.cards) {
     const auto it = Phases().find(card.name);
+    const fe::Origin at{deck_.files[card.file], card.line};
     if (it != Phases().end()) {
       phases[static_cast<int>(it->second)].push_back(&card);
     } else if (kUnsupported.count(card.name)) {
-      Entry(card, deck_).Fail(card.name + " is not supported: it would change the stiffness or mass "
-                              "of the model (see docs/formats.md, Nastran bulk data)");
+      skipped.Unsupported(card.name, at, Entry(card, deck_).Entity());
     } else if (!kSilent.count(card.name)) {
-      Warn(Entry(card, deck_), card.name + " is not supported and skipped");
+      skipped.Ignored(card.name, at);
     }
   }
+  skipped.Report("card", deck_.files.empty() ? std::string() : deck_.files.front());
   for (int p = 0; p < static_cast<int>(phases.size()); ++p) {
     if (p == static_cast<int>(Phase::kCoords)) {
       for (const Card* c : phases[p]) AddCoord(Entry(*c, deck_));

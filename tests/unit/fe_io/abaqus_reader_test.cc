@@ -90,8 +90,35 @@ TEST(AbaqusReader, SyntaxFeatures) {
   EXPECT_EQ(m.constraints[3].dofs, 0b000111);
   EXPECT_EQ(m.constraints[4].dofs, 0b000100);
   EXPECT_EQ(w.Count("*BOUNDARY inside a *STEP"), 1);
-  EXPECT_EQ(w.Count("*ORIENTATION is not supported"), 1);
+  EXPECT_EQ(w.Count("skipped keywords (they do not change the stiffness or mass): *ORIENTATION (x1, at "), 1);
   EXPECT_EQ(w.messages.size(), 2u);
+}
+
+// keywords that would change K or M (constraints, springs, other sections)
+// are listed in one error naming the first one's file and line; loads are
+// listed in one warning
+TEST(AbaqusReader, UnsupportedKeywordsAreListedInOneError) {
+  const std::string base =
+      "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n"
+      "*ELEMENT, TYPE=S4, ELSET=P\n1,1,2,3,4\n"
+      "*MATERIAL, NAME=M\n*ELASTIC\n2.1e11, 0.3\n*DENSITY\n7850\n*SHELL SECTION, ELSET=P, MATERIAL=M\n0.01\n";
+  const std::string path = WriteScratch("unsupported.inp", base +
+                                                              "*EQUATION\n2\n1,3,1.,2,3,-1.\n"  // line 15
+                                                              "*CLOAD\n3,3,100.\n"
+                                                              "*TIE, NAME=T1\nA, B\n"
+                                                              "*EQUATION\n2\n1,2,1.,2,2,-1.\n");
+  const std::string m = InputErrorOf([&] { ReadAbaqus(path); });
+  testing::ExpectContains(m, {"unsupported.inp:15: *EQUATION: 2 keyword types are not supported and would change the "
+                              "stiffness or mass of the model: *EQUATION (x2, first at ",
+                              "*TIE (x1, at "},
+                          m);
+  EXPECT_EQ(m.find("CLOAD"), std::string::npos) << m;
+  WarningCapture w;
+  const std::string loads = WriteScratch("loads.inp", base + "*CLOAD\n3,3,100.\n*DLOAD\nP,P,1.\n*CLOAD\n4,3,1.\n");
+  ReadAbaqus(loads);
+  EXPECT_EQ(w.Count("skipped keywords (they do not change the stiffness or mass): *CLOAD (x2, first at "), 1);
+  EXPECT_EQ(w.Count("*DLOAD (x1, at "), 1);
+  EXPECT_EQ(w.messages.size(), 1u);
 }
 
 TEST(AbaqusReader, SectionsByMassProperties) {

@@ -407,7 +407,9 @@ TEST(NastranReader, CantileverStripFirstFrequency) {
 
 // ---- warnings ---------------------------------------------------------------------------------
 
-TEST(NastranReader, UnknownCardsWarnOncePerType) {
+// one warning at the end of reading lists the skipped card types with their
+// count and first line; PARAM and EIGRL are skipped silently
+TEST(NastranReader, UnknownCardsAreListedOnceAtTheEnd) {
   const std::string path = WriteScratch("warn.bdf",
                                         "PARAM,POST,-1\n"
                                         "EIGRL,1,,,10\n"
@@ -417,10 +419,36 @@ TEST(NastranReader, UnknownCardsWarnOncePerType) {
                                         "MOMENT,1,1,,1.,1.,0.,0.\n");
   WarningCapture capture;
   ReadNastran(path);
-  ASSERT_EQ(capture.messages.size(), 2u);
-  EXPECT_NE(capture.messages[0].find("warn.bdf:4: FORCE 1: FORCE is not supported and skipped"), std::string::npos)
+  ASSERT_EQ(capture.messages.size(), 1u);
+  EXPECT_NE(capture.messages[0].find("skipped cards (they do not change the stiffness or mass): FORCE (x2, first at "),
+            std::string::npos)
       << capture.messages[0];
-  EXPECT_NE(capture.messages[1].find("warn.bdf:6: MOMENT 1"), std::string::npos) << capture.messages[1];
+  EXPECT_NE(capture.messages[0].find("warn.bdf:4), MOMENT (x1, at "), std::string::npos) << capture.messages[0];
+  EXPECT_EQ(capture.messages[0].find("PARAM"), std::string::npos) << capture.messages[0];
+}
+
+// every card that would change K or M is listed in one error, which names
+// the first one's file, line and entity
+TEST(NastranReader, UnsupportedCardsAreListedInOneError) {
+  const std::string path = WriteScratch("unsupported.bdf",
+                                        "GRID,1,,0.,0.,0.\n"
+                                        "GRID,2,,1.,0.,0.\n"
+                                        "CROD,7,1,1,2\n"
+                                        "FORCE,1,1,,1.,1.,0.,0.\n"
+                                        "RBE3,9,,1,123456,1.,123,2\n"
+                                        "CROD,8,1,1,2\n");
+  try {
+    ReadNastran(path);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("unsupported.bdf:3: CROD 7: 2 card types are not supported and would change the stiffness or mass"),
+              std::string::npos)
+        << m;
+    EXPECT_NE(m.find("CROD (x2, first at "), std::string::npos) << m;
+    EXPECT_NE(m.find("unsupported.bdf:5)"), std::string::npos) << m;  // RBE3
+    EXPECT_EQ(m.find("FORCE"), std::string::npos) << m;
+  }
 }
 
 // ---- bad input ---------------------------------------------------------------------------------
