@@ -15,6 +15,7 @@
 #include "apps/flexmb/commands/modes_command.h"
 #include "apps/flexmb/commands/statics_command.h"
 #include "python/core_bindings.h"
+#include "python/core_simulation.h"
 
 namespace flexmb::python {
 namespace py = pybind11;
@@ -111,6 +112,21 @@ py::dict AnalysisLinearizeDict(const cli::LinearizeResult& r) {
   return d;
 }
 
+// the current state of a Python Simulation (`simulation` not None) as the
+// source of an analysis: initialized first, then its model, state and
+// workspace (borrowed: the Python object outlives the call, which holds a
+// reference to it)
+bool AnalysisSourceOf(const py::object& simulation, cli::AnalysisSource& source) {
+  if (simulation.is_none()) return false;
+  PySimulation& s = simulation.cast<PySimulation&>();
+  s.Initialize();
+  source.model = s.model.get();
+  source.state = &s.sim->state();
+  source.ws = &s.sim->workspace();
+  source.report = s.sim->constraints();
+  return true;
+}
+
 }  // namespace
 
 void BindAnalysis(py::module_& m) {
@@ -133,8 +149,11 @@ void BindAnalysis(py::module_& m) {
         "`flexmb statics`: the static equilibrium as a dict (files in out_dir unless empty); text: the model-file "
         "text (model then names it).");
   m.def("modes", [](const std::string& model, const std::string& text, const std::string& out_dir,
-                    const std::string& at, double time, int count, bool animation, int frames, double amplitude) {
+                    const std::string& at, double time, int count, bool animation, int frames, double amplitude,
+                    const py::object& simulation) {
     cli::ModesCommandOptions o;
+    cli::AnalysisSource source;
+    if (AnalysisSourceOf(simulation, source)) o.source = &source;
     o.model_path = model;
     o.model_text = text;
     o.out_dir = out_dir;
@@ -152,11 +171,15 @@ void BindAnalysis(py::module_& m) {
     return AnalysisModesDict(r);
   }, py::arg("model"), py::arg("text") = "", py::arg("out_dir") = "", py::arg("at") = "statics",
         py::arg("time") = 0.0, py::arg("count") = 10, py::arg("animation") = true, py::arg("frames") = 24,
-        py::arg("amplitude") = 0.1, "`flexmb modes`: the modes as a dict (files in out_dir unless empty).");
+        py::arg("amplitude") = 0.1, py::arg("simulation") = py::none(),
+        "`flexmb modes`: the modes as a dict (files in out_dir unless empty); simulation: a Simulation linearized "
+        "about its current state (at 'current').");
   m.def("linearize", [](const std::string& model, const std::string& text, const std::string& out_dir,
                         const std::vector<std::string>& inputs, const std::vector<std::string>& outputs,
-                        const std::string& at, double time) {
+                        const std::string& at, double time, const py::object& simulation) {
     cli::LinearizeCommandOptions o;
+    cli::AnalysisSource source;
+    if (AnalysisSourceOf(simulation, source)) o.source = &source;
     o.model_path = model;
     o.model_text = text;
     o.out_dir = out_dir;
@@ -172,7 +195,9 @@ void BindAnalysis(py::module_& m) {
     return AnalysisLinearizeDict(r);
   }, py::arg("model"), py::arg("text") = "", py::arg("out_dir") = "", py::arg("inputs") = std::vector<std::string>{},
         py::arg("outputs") = std::vector<std::string>{}, py::arg("at") = "statics", py::arg("time") = 0.0,
-        "`flexmb linearize`: A, B, C, D and their names as a dict (files in out_dir unless empty).");
+        py::arg("simulation") = py::none(),
+        "`flexmb linearize`: A, B, C, D and their names as a dict (files in out_dir unless empty); simulation: a "
+        "Simulation linearized about its current state (at 'current').");
 }
 
 }  // namespace flexmb::python

@@ -20,6 +20,19 @@ def _model_args(model):
     return os.fspath(model), ""
 
 
+def _source_args(model, at):
+    """(path or name, text, at, simulation) of a model given as a path, a
+    dict or a Simulation (linearized about its current state: at None or
+    "current"); at None means "statics" for a path or dict."""
+    if isinstance(model, _core.Simulation):
+        if at not in (None, "current"):
+            raise _core.InputError(f"a Simulation is linearized about its current state (at='current'), "
+                                   f"not at={at!r}: pass the model file or dict for another state")
+        return model.name, "", "current", model
+    name, text = _model_args(model)
+    return name, text, "statics" if at is None else at, None
+
+
 def _out(out_dir):
     return "" if out_dir is None else os.fspath(out_dir)
 
@@ -145,23 +158,26 @@ def statics(model, out_dir=None, time=0.0, animation=False):
     return StaticsResult(r)
 
 
-def modes(model, at="statics", count=10, time=0.0, out_dir=None, animation=True, frames=24, amplitude=0.1):
-    """`flexmb modes`: the modes of `model` (path or dict) linearized about
-    the state `at`: "statics" (the static equilibrium at `time`), "initial"
-    (the consistent initial state at `time`) or "time" (a dynamic run to
-    `time` [s]); all rigid-body modes and the `count` lowest vibration modes.
-    out_dir: also write modes.csv, modes.json, summary.json and (animation)
-    mode_<k>/anim.pvd there as the command does."""
-    name, text = _model_args(model)
+def modes(model, at=None, count=10, time=0.0, out_dir=None, animation=True, frames=24, amplitude=0.1):
+    """`flexmb modes`: the modes of `model` (path, dict or Simulation)
+    linearized about the state `at`: "statics" (the default for a path or
+    dict: the static equilibrium at `time`), "initial" (the consistent
+    initial state at `time`), "time" (a dynamic run to `time` [s]) or, for a
+    Simulation, "current" (its state now, e.g. after run() or step(), with
+    the inputs as set); all rigid-body modes and the `count` lowest
+    vibration modes. out_dir: also write modes.csv, modes.json, summary.json
+    and (animation) mode_<k>/anim.pvd there as the command does."""
+    name, text, at, sim = _source_args(model, at)
     r = _core.modes(name, text, _out(out_dir), at, float(time), int(count), animation, int(frames),
-                    float(amplitude))
+                    float(amplitude), sim)
     _raise_if_failed(r)
     return ModesResult(r)
 
 
-def linearize(model, inputs, outputs=(), at="statics", time=0.0, out_dir=None):
-    """`flexmb linearize`: the state-space model of `model` (path or dict)
-    about the state `at` ("statics", "initial" or "time", as in modes());
+def linearize(model, inputs, outputs=(), at=None, time=0.0, out_dir=None):
+    """`flexmb linearize`: the state-space model of `model` (path, dict or
+    Simulation) about the state `at` ("statics", "initial", "time" or, for a
+    Simulation, "current", as in modes());
     inputs: force element names (point_force: 3 world force components [N],
     point_torque: 3 moments [N m], spring_damper: its extra tension [N],
     joint_motor: its torque [N m] or force [N]);
@@ -171,8 +187,8 @@ def linearize(model, inputs, outputs=(), at="statics", time=0.0, out_dir=None):
         inputs = [inputs]
     if isinstance(outputs, str):
         outputs = [outputs]
-    name, text = _model_args(model)
-    r = _core.linearize(name, text, _out(out_dir), list(inputs), list(outputs), at, float(time))
+    name, text, at, sim = _source_args(model, at)
+    r = _core.linearize(name, text, _out(out_dir), list(inputs), list(outputs), at, float(time), sim)
     _raise_if_failed(r)
     return StateSpace(r)
 

@@ -220,3 +220,36 @@ def test_bad_inputs_raise_with_the_message(tmp_path):
     free["forces"] = []
     with pytest.raises(flexmb.NumericalError, match="body 'mass'"):
         flexmb.statics(free)
+
+
+def test_modes_and_linearize_of_a_simulation_at_its_current_state():
+    # a Simulation as the model: linearized about its state now. The
+    # pendulum released off the vertical, initialized: the same numbers as
+    # at="initial" from its dict (the same consistent state); inverted and at
+    # rest on its motor's input (zero torque), the upright is an unstable
+    # equilibrium: A's eigenvalues +-sqrt(m g d / (I_c + m d^2)) (linearized
+    # m g d sin(th) about th = 0), and the static gain from torque to angle,
+    # D - C A^-1 B, of magnitude 1 / (m g d) (C by central differences: 1e-7)
+    m, ic, d = 2.0, 0.05, 0.6
+    model = compound_pendulum(m, ic, d)
+    sim = flexmb.from_dict(model)
+    sim.initialize()
+    cur = flexmb.modes(sim)
+    ref = flexmb.modes(model, at="initial")
+    np.testing.assert_allclose(cur.frequencies_hz, ref.frequencies_hz, rtol=1e-12)
+    assert any("not an equilibrium" in w for w in cur.warnings)
+
+    up = compound_pendulum(m, ic, d, yaw=0.0)
+    up["gravity"] = [0, G, 0]  # gravity away from the pin: inverted, joint angle 0 (no +-pi wrap)
+    up["forces"] = [{"name": "motor", "type": "joint_motor", "joint": "pin", "function": {"input": "torque"}}]
+    sim = flexmb.from_dict(up)
+    sim.step(1e-3, 5)  # at rest on the upright: it stays there
+    ss = flexmb.linearize(sim, inputs=["motor"], outputs=["angle"])
+    assert ss.time == pytest.approx(5e-3, abs=1e-12)
+    lam = np.sort(np.linalg.eigvals(ss.A).real)
+    rate = math.sqrt(m * G * d / (ic + m * d * d))
+    assert lam[0] == pytest.approx(-rate, rel=1e-7) and lam[-1] == pytest.approx(rate, rel=1e-7)
+    gain = ss.D - ss.C @ np.linalg.solve(ss.A, ss.B)
+    assert abs(gain[0, 0]) == pytest.approx(1.0 / (m * G * d), rel=1e-7)
+    with pytest.raises(flexmb.InputError, match="current state"):
+        flexmb.modes(sim, at="statics")

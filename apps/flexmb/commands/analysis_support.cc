@@ -20,14 +20,14 @@ AnalysisWarnings::~AnalysisWarnings() { SetWarningSink(std::move(old_)); }
 namespace {
 
 // a warning when the state `what` moves (accelerations a or velocities)
-void AnalysisWarnIfMoving(const AnalysisModel& am, const VecX& a, const std::string& what,
+void AnalysisWarnIfMoving(const Model& m, const AnalysisModel& am, const VecX& a, const std::string& what,
                           std::vector<std::string>& warnings) {
   Eigen::Index k = 0;
   const double amax = a.size() ? a.cwiseAbs().maxCoeff(&k) : 0.0;
   const double vmax = am.state.v.size() ? am.state.v.cwiseAbs().maxCoeff() : 0.0;
   if (amax > 1e-6 || vmax > 1e-9)
     warnings.push_back(what + " is not an equilibrium (largest acceleration " + std::to_string(amax) + " at " +
-                       VelocityCoordinateName(*am.model, static_cast<int>(k)) + ", largest velocity " +
+                       VelocityCoordinateName(m, static_cast<int>(k)) + ", largest velocity " +
                        std::to_string(vmax) + "): the modes are those of the tangent system at that state");
 }
 
@@ -52,14 +52,14 @@ void AnalysisLinearizationState(const std::string& path, const std::string& text
     am.ws = sim.workspace();
     am.report = sim.constraints();
     a = am.ws.vdot;
-    AnalysisWarnIfMoving(am, a, "the state at --time", warnings);
+    AnalysisWarnIfMoving(*am.model, am, a, "the state at --time", warnings);
     return;
   }
   if (at != "statics" && at != "initial") throw InputError("--at must be statics, initial or time, got '" + at + "'");
   LoadAnalysisModel(path, time, am, warnings, text);
   if (at == "initial") {
     a = am.ws.vdot;
-    AnalysisWarnIfMoving(am, a, "the initial state", warnings);
+    AnalysisWarnIfMoving(*am.model, am, a, "the initial state", warnings);
     return;
   }
   try {
@@ -68,6 +68,26 @@ void AnalysisLinearizationState(const std::string& path, const std::string& text
     throw NumericalError("--at statics: no static equilibrium to linearize about: " + e.message(), e.context());
   }
   a = VecX::Zero(am.model->nv);
+}
+
+const Model& AnalysisLinearizationModel(const std::string& path, const std::string& text, const std::string& at,
+                                        double time, const AnalysisSource* source, AnalysisModel& am, VecX& a,
+                                        std::vector<std::string>& warnings) {
+  if (!source) {
+    if (at == "current")
+      throw InputError("at 'current' needs a model in simulation (Python: a flexmb.Simulation as the model)");
+    AnalysisLinearizationState(path, text, at, time, am, a, warnings);
+    return *am.model;
+  }
+  if (at != "current")
+    throw InputError("a model in simulation is linearized about its current state: at must be 'current', got '" +
+                     at + "'");
+  am.state = *source->state;
+  am.ws = *source->ws;
+  am.report = source->report;
+  a = am.ws.vdot;
+  AnalysisWarnIfMoving(*source->model, am, a, "the current state", warnings);
+  return *source->model;
 }
 
 void LoadAnalysisModel(const std::string& path, double t, AnalysisModel& out, std::vector<std::string>& warnings,

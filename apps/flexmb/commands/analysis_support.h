@@ -60,6 +60,28 @@ std::unique_ptr<Model> LoadAnalysisModelFile(const std::string& path, const std:
 void AnalysisLinearizationState(const std::string& path, const std::string& text, const std::string& at,
                                 double time, AnalysisModel& am, VecX& a, std::vector<std::string>& warnings);
 
+/// A model in simulation to linearize about its current state (`at`
+/// "current"; Python's flexmb.modes(simulation)): the model, its state and
+/// workspace (accelerations in ws.vdot), not owned; they must outlive the
+/// analysis.
+struct AnalysisSource {
+  const Model* model = nullptr;
+  const State* state = nullptr;
+  const Workspace* ws = nullptr;
+  ConstraintReport report;  ///< the source's constraint report
+};
+
+/// The model and state to linearize about (`flexmb modes`, `flexmb
+/// linearize`, and the same from Python): with `source` (then `at` must be
+/// "current"), the source's state, workspace and accelerations copied into
+/// `am` and `a` (am.model stays empty) and the source's model returned;
+/// without, AnalysisLinearizationState and *am.model. A state that moves
+/// adds a warning. Throws InputError for "current" without a source, or a
+/// source with another `at`.
+const Model& AnalysisLinearizationModel(const std::string& path, const std::string& text, const std::string& at,
+                                        double time, const AnalysisSource* source, AnalysisModel& am, VecX& a,
+                                        std::vector<std::string>& warnings);
+
 /// The message of `e`, naming `model_path` if the error names no file.
 std::string AnalysisErrorText(const Error& e, const std::string& model_path);
 

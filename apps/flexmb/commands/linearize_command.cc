@@ -134,8 +134,8 @@ LinearizeResult LinearizeAnalysis(const LinearizeCommandOptions& opt) {
   try {
     if (opt.inputs.empty()) throw InputError("--inputs: name at least one force element");
     VecX a0;
-    AnalysisLinearizationState(opt.model_path, opt.model_text, opt.at, opt.time, am, a0, warnings);
-    const Model& m = *am.model;
+    const Model& m =
+        AnalysisLinearizationModel(opt.model_path, opt.model_text, opt.at, opt.time, opt.source, am, a0, warnings);
     if (opt.err)
       for (const std::string& w : warnings) std::fprintf(opt.err, "warning: %s\n", w.c_str());
     LinearizedSystem L = Linearize(m, am.state, a0, am.ws);

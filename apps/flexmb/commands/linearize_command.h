@@ -30,10 +30,11 @@ struct LinearizeCommandOptions {
   std::string model_path;            ///< YAML model file (with model_text: its name in messages)
   std::string model_text;            ///< the model-file text itself (empty: read model_path)
   std::string out_dir;               ///< output directory (created if missing; empty: no files)
-  std::string at = "statics";        ///< state: "statics", "initial" or "time"
+  std::string at = "statics";        ///< state: "statics", "initial", "time" or, with `source`, "current"
   double time = 0.0;                 ///< "statics"/"initial": time of the loads and drivers; "time": time simulated to [s]
   std::vector<std::string> inputs;   ///< force element names
   std::vector<std::string> outputs;  ///< sensor names (empty: all sensors)
+  const AnalysisSource* source = nullptr;  ///< a model in simulation (at "current"), else the model file
   std::FILE* info = nullptr;         ///< a summary line (nullptr: silent)
   std::FILE* err = nullptr;          ///< warnings and errors (nullptr: silent)
 };

@@ -56,6 +56,7 @@ ModesResult ModesAnalysis(const ModesCommandOptions& opt) {
   std::string status = "ok", message;
   int code = 0, dof = 0, rigid = 0, reported = 0;
   AnalysisModel am;
+  const Model* used = nullptr;  // the model analysed (am's or the source's)
   if (!CreateAnalysisDir(opt.out_dir, opt.err)) {
     out.code = 2, out.error_kind = "InputError", out.message = opt.out_dir + ": cannot create the output directory";
     return out;
@@ -66,10 +67,11 @@ ModesResult ModesAnalysis(const ModesCommandOptions& opt) {
     if (opt.frames < 2) throw InputError("--frames must be at least 2");
     if (!(opt.amplitude > 0.0) || !std::isfinite(opt.amplitude)) throw InputError("--amplitude must be positive");
     VecX a;
-    AnalysisLinearizationState(opt.model_path, opt.model_text, opt.at, opt.time, am, a, warnings);
+    const Model& m =
+        AnalysisLinearizationModel(opt.model_path, opt.model_text, opt.at, opt.time, opt.source, am, a, warnings);
+    used = &m;
     if (opt.err)
       for (const std::string& w : warnings) std::fprintf(opt.err, "warning: %s\n", w.c_str());
-    const Model& m = *am.model;
     const LinearizedSystem sys = Linearize(m, am.state, a, am.ws);
     dof = static_cast<int>(sys.N.cols());
     const std::vector<SystemMode> all = SolveSystemModes(sys);
@@ -135,7 +137,7 @@ ModesResult ModesAnalysis(const ModesCommandOptions& opt) {
   sum.Text("message", message);
   sum.Text("analysis", "modes");
   sum.Text("model", opt.model_path);
-  sum.Text("model_name", am.model ? am.model->name : "");
+  sum.Text("model_name", used ? used->name : "");
   sum.Text("at", opt.at);
   sum.Number("time", am.state.t);
   sum.Raw("dof", std::to_string(dof));

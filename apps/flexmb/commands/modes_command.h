@@ -23,12 +23,13 @@ struct ModesCommandOptions {
   std::string model_path;       ///< YAML model file (with model_text: its name in messages)
   std::string model_text;       ///< the model-file text itself (empty: read model_path)
   std::string out_dir;          ///< output directory (created if missing; empty: no files)
-  std::string at = "statics";   ///< state: "statics", "initial" or "time"
+  std::string at = "statics";   ///< state: "statics", "initial", "time" or, with `source`, "current"
   double time = 0.0;            ///< with at == "statics"/"initial": time of the loads; "time": time simulated to [s]
   int count = 10;               ///< vibration (non-rigid) modes reported, lowest first; rigid modes always
   bool animation = true;        ///< write the mode animations
   int frames = 24;              ///< animation frames per period
   double amplitude = 0.1;       ///< animation amplitude: largest entry of the shape [m or rad]
+  const AnalysisSource* source = nullptr;  ///< a model in simulation (at "current"), else the model file
   std::FILE* info = nullptr;    ///< the frequency table (nullptr: silent)
   std::FILE* err = nullptr;     ///< warnings and errors (nullptr: silent)
 };
