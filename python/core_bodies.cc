@@ -157,6 +157,8 @@ void BindBodies(py::module_& m) {
     stress["shell"] = BodiesStressTable(b.stress.shell);
     stress["beam"] = BodiesStressTable(b.stress.beam);
     stress["solid"] = BodiesStressTable(b.stress.solid);
+    stress["beam_fibre"] = BodiesStressTable(b.stress.beam_fibre);
+    stress["solid_node"] = BodiesStressTable(b.stress.solid_node);
     d["stress"] = stress;
     d["units"] = b.units;
     d["provenance"] = b.provenance;

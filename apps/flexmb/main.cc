@@ -209,6 +209,9 @@ int main(int argc, char** argv) {
                      "computing them; the interface is the file's");
   reduce->add_flag("--geometric-stiffening", reduce_opt.geometric_stiffening,
                    "also store the centrifugal geometric stiffness (beams, shells, solids)");
+  reduce->add_flag("--solid-corner-stress", reduce_opt.solid_corner_stress,
+                   "also store solid stress modes at the corner nodes (post: stresses at nodes; a larger body "
+                   "file)");
   reduce->add_option("--units", reduce_opt.units,
                      "unit system of the FE model, recorded in the body file: SI (default), mm-t-s, mm-kg-ms, "
                      "mm-kg-s, mm-g-ms, cm-g-s, in-lbf-s; models use SI body files only");

@@ -33,7 +33,11 @@ using reduction::StressTable;
 
 // the stress tables with their groups in the file
 std::vector<std::pair<std::string, const StressTable*>> StressTables(const StressModes& s) {
-  return {{"/stress/shell", &s.shell}, {"/stress/beam", &s.beam}, {"/stress/solid", &s.solid}};
+  return {{"/stress/shell", &s.shell},
+          {"/stress/beam", &s.beam},
+          {"/stress/solid", &s.solid},
+          {"/stress/beam_fibre", &s.beam_fibre},
+          {"/stress/solid_node", &s.solid_node}};
 }
 
 // the body is consistent (shapes, finite values) before anything is written
@@ -79,7 +83,7 @@ void CheckBody(const ReducedBody& b, const std::string& path) {
   shape("invariants.mow0", v.mow0, 3, n);
   for (size_t i = 0; i < un; ++i) shape("invariants.mow1[" + std::to_string(i) + "]", v.mow1[i], 3, n);
   shape("invariants.mww", v.mww, n, n);
-  for (const StressTable* t : {&b.stress.shell, &b.stress.beam, &b.stress.solid}) {
+  for (const auto& [group, t] : StressTables(b.stress)) {
     const std::string field = "stress table '" + t->name + "'";
     const Eigen::Index rows = static_cast<Eigen::Index>(t->elements.size()) * t->Locations() * t->Components();
     // a table never filled (0 x 0) is written as 0 x n
@@ -325,12 +329,21 @@ ReducedBody ReadBody(const std::string& path) {
     }
   }
 
-  const std::pair<std::string, StressTable*> tables[] = {
-      {"/stress/shell", &body.stress.shell},
-      {"/stress/beam", &body.stress.beam},
-      {"/stress/solid", &body.stress.solid}};
+  const std::pair<std::string, StressTable*> tables[] = {{"/stress/shell", &body.stress.shell},
+                                                         {"/stress/beam", &body.stress.beam},
+                                                         {"/stress/solid", &body.stress.solid},
+                                                         {"/stress/beam_fibre", &body.stress.beam_fibre},
+                                                         {"/stress/solid_node", &body.stress.solid_node}};
   for (const auto& [group, table] : tables) {
     StressTable& t = *table;
+    // beam fibre and solid corner stresses came later (format 1 still):
+    // a body file without them has none
+    if ((group == "/stress/beam_fibre" || group == "/stress/solid_node") && !r.Exists(group)) {
+      t = StressTable{};
+      t.name = group.substr(std::string("/stress/").size());
+      t.modes.resize(0, n);
+      continue;
+    }
     t.name = r.AttributeString(group, "name");
     t.components = r.Strings(group + "/components", r.Length(group + "/components"));
     t.locations = r.Strings(group + "/locations", r.Length(group + "/locations"));

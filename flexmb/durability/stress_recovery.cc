@@ -1,6 +1,7 @@
 #include "flexmb/durability/stress_recovery.h"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 
 #include "flexmb/common/error.h"
@@ -77,12 +78,24 @@ PointStress SolidStressMeasures(const double* s) {
   return p;
 }
 
+PointStress UniaxialStressMeasures(double sxx) {
+  PointStress p;
+  p.von_mises = std::abs(sxx);
+  p.signed_von_mises = sxx;
+  p.max_principal = std::max(sxx, 0.0);
+  p.min_principal = std::min(sxx, 0.0);
+  p.max_abs_principal = sxx;
+  return p;
+}
+
 StressRecovery::StressRecovery(const reduction::StressTable& table, const Eigen::MatrixXd& W) : table_(table) {
   const bool plane = table.Components() == 3 && table.components[0] == "sxx";
   const bool solid = table.Components() == 6 && table.components[0] == "sxx";
-  if (!plane && !solid)
-    throw InputError("stress recovery needs shell or solid stress modes (stress components), not the " + table.name +
-                     " table (section forces)", {"", 0, "stress table '" + table.name + "'"});
+  uniaxial_ = table.Components() == 1 && table.components[0] == "sxx";
+  if (!plane && !solid && !uniaxial_)
+    throw InputError("stress recovery needs shell, solid or beam-fibre stress modes (stress components), not the " +
+                         table.name + " table (section forces)",
+                     {"", 0, "stress table '" + table.name + "'"});
   if (plane && table.Locations() != 2)
     throw InputError("shell stress modes without bottom and top surface", {"", 0, "stress table '" + table.name + "'"});
   shell_ = plane;
@@ -93,7 +106,7 @@ StressRecovery::StressRecovery(const reduction::StressTable& table, const Eigen:
 }
 
 const char* StressRecovery::PointName(int p) const {
-  if (!shell_) return "centroid";
+  if (!shell_) return table_.locations[p].c_str();
   return p == 0 ? "bottom" : p == 1 ? "middle" : "top";
 }
 
@@ -120,8 +133,9 @@ PointStress StressRecovery::At(int k, int p, int r) const {
     }
     return PlaneStressMeasures(s[0], s[1], s[2]);
   }
+  if (uniaxial_) return UniaxialStressMeasures(Column(k, p, 0)[r]);
   double s[6];
-  for (int c = 0; c < 6; ++c) s[c] = Column(k, 0, c)[r];
+  for (int c = 0; c < 6; ++c) s[c] = Column(k, p, c)[r];
   return SolidStressMeasures(s);
 }
 
@@ -169,7 +183,7 @@ void StressRecovery::ComponentHistory(int k, int p, int c, double* out) const {
     for (int r = 0; r < n; ++r) out[r] = 0.5 * (a[r] + b[r]);
     return;
   }
-  const double* a = Column(k, shell_ && p == 2 ? 1 : 0, c);
+  const double* a = Column(k, shell_ ? (p == 2 ? 1 : 0) : p, c);
   for (int r = 0; r < n; ++r) out[r] = a[r];
 }
 

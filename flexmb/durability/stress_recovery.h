@@ -7,10 +7,12 @@
 /// W^T (T x n) times the block's rows of the stress modes transposed.
 ///
 /// Recovery points: shells "bottom", "middle", "top" (middle = the mean of
-/// the two surfaces, the membrane stress), solids "centroid" (the points
-/// the stress modes hold). Beams are not covered: their stress modes are
-/// section forces and the body file stores no section shape (extreme fibre
-/// distances), so stresses at the fibres cannot be formed.
+/// the two surfaces, the membrane stress), solids "centroid" or, from the
+/// solid_node table, their corner nodes "n1" ... (the points the stress
+/// modes hold), beams the stress points of their sections at
+/// both ends (the beam_fibre table, "end_a_p1" ...: a uniaxial normal
+/// stress sxx, so von Mises |sxx|, principal stresses sxx and 0). The beam
+/// table of section forces is not a stress table.
 
 #include <Eigen/Core>
 #include <string>
@@ -57,21 +59,28 @@ struct PointHistory {
   const Eigen::ArrayXd& Get(StressMeasure m) const;
 };
 
-/// Batched recovery of one shell or solid table; see the file comment.
+/// Measures of a uniaxial stress sxx (beam fibres).
+PointStress UniaxialStressMeasures(double sxx);
+
+/// Batched recovery of one shell, solid or beam-fibre table; see the file
+/// comment.
 class StressRecovery {
  public:
-  /// `table` (shell or solid, must outlive this) and modal coordinates W
-  /// (n x T, column r at instant r). Throws InputError naming the table for
-  /// a beam table or when W has not table.modes.cols() rows.
+  /// `table` (shell, solid or beam_fibre, must outlive this) and modal
+  /// coordinates W (n x T, column r at instant r). Throws InputError naming
+  /// the table for a beam table (section forces) or when W has not
+  /// table.modes.cols() rows.
   StressRecovery(const reduction::StressTable& table, const Eigen::MatrixXd& W);
 
   /// Elements of the table.
   int Elements() const { return static_cast<int>(table_.elements.size()); }
-  /// Recovery points per element (shells 3, solids 1).
-  int Points() const { return shell_ ? 3 : 1; }
+  /// Recovery points per element (shells 3, solids and beam fibres the
+  /// table's locations).
+  int Points() const { return shell_ ? 3 : table_.Locations(); }
   /// Instants T.
   int Instants() const { return static_cast<int>(wt_.rows()); }
-  /// Name of point p ("bottom", "middle", "top" or "centroid").
+  /// Name of point p ("bottom", "middle", "top", or the table's location
+  /// name: "centroid", "n1" ..., "end_a_p1" ...).
   const char* PointName(int p) const;
   /// True for a shell table.
   bool shell() const { return shell_; }
@@ -96,6 +105,7 @@ class StressRecovery {
 
   const reduction::StressTable& table_;
   bool shell_ = false;
+  bool uniaxial_ = false;
   mutable Eigen::ArrayXd sxx_, syy_, sxy_, c_, r_;  // scratch of Histories
   Eigen::MatrixXd wt_;      // T x n
   Eigen::MatrixXd values_;  // T x (count * locations * components)

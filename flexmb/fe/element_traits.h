@@ -76,6 +76,10 @@ struct ElementTraits {
   /// stress table (reduction/stress_modes.h); `axes` is the frame of the
   /// values (left as the caller set it, identity, for solids).
   void (*stress)(const ElementInput& in, MatX& S, Eigen::Matrix3d& axes) = nullptr;
+  /// Solids: stress recovery at the corner nodes, S (6 per corner) x
+  /// element DOF, corners in node order (the solid_node stress table);
+  /// null for shells and beams.
+  void (*corner_stress)(const ElementInput& in, MatX& S) = nullptr;
   /// Geometric stiffness KG under the element displacements `u`; beams
   /// also return their axial force [N] in *axial_force (if not null).
   void (*geometric_stiffness)(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG,

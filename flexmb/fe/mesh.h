@@ -89,6 +89,12 @@ struct BeamSection {
   double J = 0.0;             ///< torsion constant [m^4]
   double ky = 0.0, kz = 0.0;  ///< shear factors (area ratio); 0 = no shear flexibility
   double nsm = 0.0;           ///< non-structural mass per length [kg/m]
+  /// Stress recovery points of the section, (y, z) in the element frame
+  /// from the centroid [m]: Nastran's C, D, E, F of PBAR/PBEAM, the corners
+  /// of a library shape (PBARL, Abaqus *BEAM SECTION), points on the outer
+  /// circle of round shapes; empty when the source gives none. The normal
+  /// stress of bending is largest at one of them (reduction/stress_modes.h).
+  std::vector<std::array<double, 2>> stress_points;
   Origin origin;
 };
 

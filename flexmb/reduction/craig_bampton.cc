@@ -321,7 +321,7 @@ ReducedBody ReduceBasis(const fe::FeModel& model, const fe::AssembledModel& a, c
   // stress of every element for a unit value of each modal coordinate;
   // imported matrices come without element properties: no stress modes
   const auto t_stress = Clock::now();
-  if (!model.imported) body.stress = ComputeStressModes(mesh, body.modes);
+  if (!model.imported) body.stress = ComputeStressModes(mesh, body.modes, options.solid_corner_stress);
   t.stress_modes = Seconds(t_stress);
   if (options.geometric_stiffening) {
     if (model.imported)

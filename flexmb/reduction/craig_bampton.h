@@ -42,6 +42,10 @@ struct ReductionOptions {
   /// them, at the interface nodes. Every element type (beams, shells,
   /// solids); not for imported matrices (InputError).
   bool geometric_stiffening = false;
+  /// Also store the stress modes of solids at their corner nodes
+  /// (StressModes::solid_node: 6 rows per corner, up to 8 per element, so
+  /// the body file grows by about that factor for the solid part).
+  bool solid_corner_stress = false;
 };
 
 /// Wall time of each step [s]. The static and the normal modes are computed

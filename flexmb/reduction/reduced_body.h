@@ -120,9 +120,26 @@ struct StressModes {
   /// end B; fe/elements/beam2.h), resultants on the cut face with outward
   /// normal +x, N > 0 in tension.
   StressTable beam;
+  /// 2-node beams whose section has stress recovery points
+  /// (fe::BeamSection::stress_points): the normal stress of the axial force
+  /// and the bending moments (reduction/stress_modes.h BeamNormalStress) at
+  /// each point at both ends. Locations "end_a_p1" .. "end_a_pK", then
+  /// "end_b_p1" .. "end_b_pK" (K the most points any section has; a section
+  /// with fewer repeats its last one). Component "sxx" [Pa]. The shear
+  /// stresses of Vy, Vz and T are left out (Euler-Bernoulli fibre stress,
+  /// as Nastran's CBAR/CBEAM stress output). Empty in body files written
+  /// before it existed.
+  StressTable beam_fibre;
   /// Tetrahedra and hexahedra. Location "centroid". Components "sxx",
   /// "syy", "szz", "sxy", "syz", "szx": stresses in the basic frame.
   StressTable solid;
+  /// Solids at their corner nodes, when asked for (reduce
+  /// --solid-corner-stress; else empty): locations "n1" .. "n8" (the
+  /// element's corner nodes in node order; tetrahedra and wedges repeat
+  /// their last corner), components as `solid`. The strain field of the
+  /// element evaluated at the node, not averaged over the elements around
+  /// it.
+  StressTable solid_node;
 };
 
 /// The reduced flexible body.

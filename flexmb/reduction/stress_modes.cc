@@ -35,9 +35,92 @@ StressTable MakeTable(const char* name, std::vector<std::string> components,
   return t;
 }
 
+// the rows of `modes` of element `el`'s DOF (dpn per node) into ue
+void ElementModeRows(const fe::Element& el, const MatX& modes, MatX& ue) {
+  const int dpn = fe::DofsPerNode(el.type);
+  const int nodes = static_cast<int>(el.nodes.size());
+  ue.resize(dpn * nodes, modes.cols());
+  for (int i = 0; i < nodes; ++i)
+    ue.middleRows(dpn * i, dpn) = modes.middleRows(6 * static_cast<Eigen::Index>(el.nodes[i]), dpn);
+}
+
+// the solid_node table (StressModes::solid_node) of the solid elements
+// `solids`: each corner's stress rows, the last corner repeated up to the
+// most corners any of them has
+StressTable SolidNodeTable(const fe::Mesh& mesh, const MatX& modes, const std::vector<int>& solids) {
+  int most = 0;
+  for (int e : solids) most = std::max(most, fe::Traits(mesh.elements[e].type).corners);
+  std::vector<std::string> locations;
+  for (int c = 0; c < most; ++c) locations.push_back("n" + std::to_string(c + 1));
+  StressTable t = MakeTable("solid_node", {"sxx", "syy", "szz", "sxy", "syz", "szx"}, locations);
+  t.elements = solids;
+  t.axes.assign(solids.size(), Mat3::Identity());
+  t.modes.resize(t.Row(static_cast<int>(solids.size()), 0, 0), modes.cols());
+  if (modes.cols() == 0) return t;
+  const int ns = static_cast<int>(solids.size());
+  ParallelRows(ns, ParallelRanges(ns, 512), [&](int, Eigen::Index begin, Eigen::Index end) {
+    std::vector<Vec3> x;
+    MatX S, ue;
+    for (Eigen::Index k = begin; k < end; ++k) {
+      const fe::Element& el = mesh.elements[solids[k]];
+      const fe::ElementInput in = ResolveElementInput(mesh, el, x);
+      fe::Traits(el.type).corner_stress(in, S);
+      ElementModeRows(el, modes, ue);
+      const int corners = static_cast<int>(S.rows() / 6);
+      const int kk = static_cast<int>(k);
+      for (int c = 0; c < corners; ++c)
+        t.modes.middleRows(t.Row(kk, c, 0), 6).noalias() = S.middleRows(6 * c, 6) * ue;
+      for (int c = corners; c < most; ++c)  // a copy: the same bits
+        t.modes.middleRows(t.Row(kk, c, 0), 6) = t.modes.middleRows(t.Row(kk, corners - 1, 0), 6);
+    }
+  });
+  return t;
+}
+
+// the beam_fibre table from the section forces of the beam table (see
+// StressModes::beam_fibre): sigma = N / A + (z Iz - y Iyz) My / det +
+// (z Iyz - y Iy) Mz / det, det = Iy Iz - Iyz^2 (BeamNormalStress)
+StressTable BeamFibreTable(const fe::Mesh& mesh, const StressTable& beam) {
+  size_t most = 0;
+  std::vector<int> with;  // positions in the beam table of beams with points
+  for (size_t k = 0; k < beam.elements.size(); ++k) {
+    const fe::BeamSection& sec = mesh.beam_sections[mesh.elements[beam.elements[k]].property];
+    if (sec.stress_points.empty()) continue;
+    with.push_back(static_cast<int>(k));
+    most = std::max(most, sec.stress_points.size());
+  }
+  std::vector<std::string> locations;
+  for (const char* end : {"end_a", "end_b"})
+    for (size_t p = 0; p < most; ++p) locations.push_back(std::string(end) + "_p" + std::to_string(p + 1));
+  StressTable t = MakeTable("beam_fibre", {"sxx"}, locations);
+  t.modes.resize(static_cast<Eigen::Index>(with.size() * locations.size()), beam.modes.cols());
+  for (size_t i = 0; i < with.size(); ++i) {
+    const int kb = with[i];
+    const int e = beam.elements[kb];
+    const fe::BeamSection& sec = mesh.beam_sections[mesh.elements[e].property];
+    const double det = sec.Iy * sec.Iz - sec.Iyz * sec.Iyz;
+    if (!(sec.A > 0.0) || !(det > 0.0))
+      throw InputError("beam fibre stress: section " + std::to_string(sec.id) + " of element " +
+                       std::to_string(mesh.elements[e].id) + " needs A > 0 and Iy Iz > Iyz^2");
+    t.elements.push_back(e);
+    t.axes.push_back(beam.axes[kb]);
+    if (beam.modes.cols() == 0) continue;
+    for (int end = 0; end < 2; ++end)
+      for (size_t p = 0; p < most; ++p) {
+        const auto& [y, z] = sec.stress_points[std::min(p, sec.stress_points.size() - 1)];
+        const int l = end * static_cast<int>(most) + static_cast<int>(p);
+        t.modes.row(t.Row(static_cast<int>(i), l, 0)) =
+            beam.modes.row(beam.Row(kb, end, 0)) / sec.A +
+            (z * sec.Iz - y * sec.Iyz) / det * beam.modes.row(beam.Row(kb, end, 4)) +
+            (z * sec.Iyz - y * sec.Iy) / det * beam.modes.row(beam.Row(kb, end, 5));
+      }
+  }
+  return t;
+}
+
 }  // namespace
 
-StressModes ComputeStressModes(const fe::Mesh& mesh, const MatX& modes) {
+StressModes ComputeStressModes(const fe::Mesh& mesh, const MatX& modes, bool solid_corners) {
   const Eigen::Index nn = static_cast<Eigen::Index>(mesh.nodes.size());
   if (modes.rows() != 6 * nn)
     throw InputError("stress modes: the mode matrix has " + std::to_string(modes.rows()) +
@@ -76,14 +159,12 @@ StressModes ComputeStressModes(const fe::Mesh& mesh, const MatX& modes) {
       const int k = position[e];
       t.axes[k] = axes;
       if (n == 0) continue;  // no modes: blocks of empty matrices are UB in Eigen
-      const int dpn = fe::DofsPerNode(el.type);
-      const int nodes = static_cast<int>(el.nodes.size());
-      ue.resize(dpn * nodes, n);
-      for (int i = 0; i < nodes; ++i)
-        ue.middleRows(dpn * i, dpn) = modes.middleRows(6 * static_cast<Eigen::Index>(el.nodes[i]), dpn);
+      ElementModeRows(el, modes, ue);
       t.modes.middleRows(t.Row(k, 0, 0), S.rows()).noalias() = S * ue;
     }
   });
+  out.beam_fibre = BeamFibreTable(mesh, out.beam);
+  if (solid_corners) out.solid_node = SolidNodeTable(mesh, modes, out.solid.elements);
   return out;
 }
 

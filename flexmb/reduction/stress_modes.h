@@ -22,7 +22,10 @@ namespace flexmb::reduction {
 /// element of that family). Throws InputError if `modes` does not have 6
 /// rows per node, and InputError naming the element for a missing section
 /// or material or a bad element (as the element routines of fe/elements/).
-StressModes ComputeStressModes(const fe::Mesh& mesh, const MatX& modes);
+/// Beams whose section has stress recovery points also give
+/// StressModes::beam_fibre; with `solid_corners`, solids also give
+/// StressModes::solid_node (the stress at each corner node).
+StressModes ComputeStressModes(const fe::Mesh& mesh, const MatX& modes, bool solid_corners = false);
 
 /// Von Mises stress of a plane stress state (sxx, syy, sxy) (shell
 /// components): sqrt(sxx^2 - sxx syy + syy^2 + 3 sxy^2).

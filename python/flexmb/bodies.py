@@ -55,8 +55,10 @@ class Body:
         return self.modes[:, k].reshape(-1, 6)[:, :3]
 
     def stress_modes(self, family):
-        """The stress table of 'shell', 'beam' or 'solid' (dict: components,
-        locations, elements, axes, modes rows x n)."""
+        """The stress table of 'shell', 'beam', 'solid', 'beam_fibre' (beams
+        at their sections' stress points) or 'solid_node' (solids at their
+        corner nodes, when reduced with solid_corner_stress) (dict:
+        components, locations, elements, axes, modes rows x n)."""
         return self.stress[family]
 
     def __repr__(self):

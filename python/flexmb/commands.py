@@ -38,11 +38,13 @@ def fe_export(model, hb_dir, fix="", interface="", modes=10):
 
 
 def reduce(model, output, interface="", modes=-1, cutoff_hz=0.0, keep=-1, fix="", rayleigh="",
-           damping_ratio="", modes_file="", geometric_stiffening=False, units="SI"):
+           damping_ratio="", modes_file="", geometric_stiffening=False, units="SI", solid_corner_stress=False):
     """`flexmb reduce --json`: Craig-Bampton reduction of a part into the body
     file `output` (.h5). interface: node ids "1,2,3" or a node set; modes:
     fixed-interface normal modes (or cutoff_hz [Hz]); keep: lowest flexible
-    modes kept; rayleigh "ALPHA,BETA" or damping_ratio "Z[,Z2...]". Returns
+    modes kept; rayleigh "ALPHA,BETA" or damping_ratio "Z[,Z2...]";
+    solid_corner_stress: also the solids' stress modes at their corner nodes
+    (`flexmb reduce --solid-corner-stress`). Returns
     the report (frequencies_hz, mass_kg, timings_s, ...)."""
     if isinstance(interface, (list, tuple)):
         interface = ",".join(str(i) for i in interface)
@@ -55,7 +57,8 @@ def reduce(model, output, interface="", modes=-1, cutoff_hz=0.0, keep=-1, fix=""
     elif isinstance(damping_ratio, (int, float)):
         damping_ratio = repr(float(damping_ratio))
     return json.loads(_core.reduce(os.fspath(model), os.fspath(output), interface, modes, cutoff_hz, keep, fix,
-                                   rayleigh, damping_ratio, os.fspath(modes_file), geometric_stiffening, units))
+                                   rayleigh, damping_ratio, os.fspath(modes_file), geometric_stiffening, units,
+                                   solid_corner_stress))
 
 
 def body_info(body):

@@ -93,8 +93,13 @@ int Post(const PostOptions& o, std::ostream& out) {
   const fe::Mesh& mesh = body.mesh;
   const int ne = static_cast<int>(mesh.elements.size());
   std::vector<PostElementSlot> slot(ne);
-  const reduction::StressTable* tables[2] = {&body.stress.shell, &body.stress.solid};
-  for (int t = 0; t < 2; ++t)
+  // stress tables: shells, solids (at their corner nodes when the body file
+  // has them, else at the centroid), and beams at their sections' stress points
+  constexpr int kPostTables = 3;
+  const reduction::StressTable& solids =
+      body.stress.solid_node.elements.empty() ? body.stress.solid : body.stress.solid_node;
+  const reduction::StressTable* tables[kPostTables] = {&body.stress.shell, &solids, &body.stress.beam_fibre};
+  for (int t = 0; t < kPostTables; ++t)
     for (size_t k = 0; k < tables[t]->elements.size(); ++k) slot[tables[t]->elements[k]] = {t, static_cast<int>(k)};
   auto element_index = [&](int id) {
     for (int e = 0; e < ne; ++e)
@@ -105,7 +110,9 @@ int Post(const PostOptions& o, std::ostream& out) {
   for (int id : o.elements) {
     const int e = element_index(id);
     if (slot[e].table < 0)
-      throw InputError("element " + std::to_string(id) + " has no stress modes (beams: section forces only)",
+      throw InputError("element " + std::to_string(id) +
+                           " has no stress modes (a beam needs stress recovery points in its section: PBAR C1 ... "
+                           "F2, a PBARL or *BEAM SECTION shape)",
                        {hist.bodies[b].body_file, 0, body_entity});
     history_elements.push_back(e);
   }
@@ -123,10 +130,10 @@ int Post(const PostOptions& o, std::ostream& out) {
   fs::create_directories(dir, ec);
   if (ec) throw InputError("cannot create the output folder: " + ec.message(), {dir.string(), 0, ""});
 
-  // every element of both tables, in batches
+  // every element of the tables, in batches
   PostElementData data(ne);
-  std::unique_ptr<durability::StressRecovery> rec[2];
-  for (int t = 0; t < 2; ++t) {
+  std::unique_ptr<durability::StressRecovery> rec[kPostTables];
+  for (int t = 0; t < kPostTables; ++t) {
     if (tables[t]->elements.empty()) continue;
     rec[t] = std::make_unique<durability::StressRecovery>(*tables[t], W);
     const ElementResults r = durability::AnalyzeElements(*rec[t], fo);

@@ -120,6 +120,7 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
   ro.cutoff_hz = opt.cutoff_hz;
   ro.keep = opt.keep;
   ro.geometric_stiffening = opt.geometric_stiffening;
+  ro.solid_corner_stress = opt.solid_corner_stress;
   if (!opt.rayleigh.empty()) {
     const std::vector<double> ab = NumberList(opt.rayleigh, "--rayleigh");
     if (ab.size() != 2 || ab[0] < 0.0 || ab[1] < 0.0) {
@@ -226,7 +227,11 @@ int BodyInfo(const BodyInfoOptions& opt, std::ostream& out) {
   const fe::Mesh& mesh = body.mesh;
   const int nk = static_cast<int>(body.frequencies_hz.size());
   const std::pair<const char*, const reduction::StressTable*> tables[] = {
-      {"shell", &body.stress.shell}, {"beam", &body.stress.beam}, {"solid", &body.stress.solid}};
+      {"shell", &body.stress.shell},
+      {"beam", &body.stress.beam},
+      {"solid", &body.stress.solid},
+      {"beam_fibre", &body.stress.beam_fibre},
+      {"solid_node", &body.stress.solid_node}};
 
   std::ostringstream s;
   if (opt.json) {
@@ -242,7 +247,7 @@ int BodyInfo(const BodyInfoOptions& opt, std::ostream& out) {
     s << "],\n";
     JsonModesAndMass(s, body, mp);
     s << "  \"stress\": {";
-    for (size_t k = 0; k < 3; ++k) {
+    for (size_t k = 0; k < std::size(tables); ++k) {
       const reduction::StressTable& t = *tables[k].second;
       s << (k ? ", " : "") << JsonString(tables[k].first) << ": {\"elements\": " << t.elements.size()
         << ", \"locations\": " << t.locations.size() << ", \"components\": " << t.components.size() << "}";

@@ -39,6 +39,9 @@ struct ReduceOptions {
   /// Also compute the centrifugal geometric stiffness (beams, shells and
   /// solids; reduction/geometric_stiffness.h).
   bool geometric_stiffening = false;
+  /// Also store solid stress modes at the corner nodes (the solid_node
+  /// table: stresses at nodes for `flexmb post`; a larger body file).
+  bool solid_corner_stress = false;
   /// Unit system of the FE model, recorded in the body file (a key of
   /// KnownUnitSystems, body_file/unit_system.h; default SI). A model file uses
   /// only SI body files; the others are refused when loaded.

@@ -122,6 +122,17 @@ Eigen::Matrix<double, 6, 3 * N> PointStress(const QuadPoint& p, Shape&& shape, c
   return ElasticityMatrix(s) * StrainMatrix<N>(dx);
 }
 
+/// Stress recovery at the corner nodes: PointStress at each of the `count`
+/// natural points `corners` (the corner nodes, in node order), stacked in
+/// S (6 rows per corner) x 3N. Throws as CartesianDerivatives (a Jacobian
+/// that is singular or inverted at a corner).
+template <int N, class Shape>
+void CornerStress(const QuadPoint* corners, int count, Shape&& shape, const Vec3* x, const SolidData& s,
+                  const Element& e, MatX& S) {
+  S.resize(6 * count, 3 * N);
+  for (int c = 0; c < count; ++c) S.middleRows(6 * c, 6) = PointStress<N>(corners[c], shape, x, s, e);
+}
+
 /// Adds rho int N^T N dV (3 DOF per node) over the given points to `m`;
 /// `shape(p, n, dn)` gives shape functions and natural derivatives.
 template <int N, class Shape>

@@ -103,6 +103,16 @@ void SolidHex20Stress(const ElementInput& in, MatX& S) {
   S = solid::PointStress<20>({0.0, 0.0, 0.0, 0.0}, Hex20Shape, in.x, s, *in.element);
 }
 
+// the corner nodes' natural coordinates, in node order
+constexpr solid::QuadPoint kHex20CornerPoints[8] = {
+    {-1.0, -1.0, -1.0, 0.0}, {1.0, -1.0, -1.0, 0.0}, {1.0, 1.0, -1.0, 0.0}, {-1.0, 1.0, -1.0, 0.0},
+    {-1.0, -1.0, 1.0, 0.0},  {1.0, -1.0, 1.0, 0.0},  {1.0, 1.0, 1.0, 0.0},  {-1.0, 1.0, 1.0, 0.0}};
+
+void SolidHex20CornerStress(const ElementInput& in, MatX& S) {
+  const solid::SolidData s = solid::CheckSolidInput(in, 20, 8);
+  solid::CornerStress<20>(kHex20CornerPoints, 8, Hex20Shape, in.x, s, *in.element, S);
+}
+
 void SolidHex20GeometricStiffness(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG) {
   const solid::SolidData s = solid::CheckSolidInput(in, 20, 8);
   const Eigen::Matrix<double, 6, 6> d = solid::ElasticityMatrix(s);

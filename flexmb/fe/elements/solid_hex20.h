@@ -49,6 +49,12 @@ void SolidHex20Matrices(const ElementInput& in, MatX& K, MatX& M, Hex20Integrati
 /// Throws InputError as SolidHex20Matrices.
 void SolidHex20Stress(const ElementInput& in, MatX& S);
 
+/// Stress recovery at the corner nodes of a 20-node hexahedron: fills S (48 x 60)
+/// with the map from the element DOF to the stresses (sxx, syy, szz, sxy,
+/// syz, szx) [Pa] in the basic frame at each of its 8 corner nodes, in node
+/// order (the strain field evaluated at the node, not extrapolated).
+void SolidHex20CornerStress(const ElementInput& in, MatX& S);
+
 /// Geometric (initial-stress) stiffness of a 20-node hexahedron under the
 /// stress of the nodal displacements `u` (60, as K): fills KG (60 x 60, as
 /// K) [N/m] with int dN_i^T S dN_j dV I3, S = D B u at the 27 points. K +

@@ -76,6 +76,16 @@ void SolidHex8Stress(const ElementInput& in, MatX& S) {
   S = solid::PointStress<8>({0.0, 0.0, 0.0, 0.0}, Hex8Shape, in.x, s, *in.element);
 }
 
+// the corner nodes' natural coordinates, in node order
+constexpr solid::QuadPoint kHex8CornerPoints[8] = {
+    {-1.0, -1.0, -1.0, 0.0}, {1.0, -1.0, -1.0, 0.0}, {1.0, 1.0, -1.0, 0.0}, {-1.0, 1.0, -1.0, 0.0},
+    {-1.0, -1.0, 1.0, 0.0},  {1.0, -1.0, 1.0, 0.0},  {1.0, 1.0, 1.0, 0.0},  {-1.0, 1.0, 1.0, 0.0}};
+
+void SolidHex8CornerStress(const ElementInput& in, MatX& S) {
+  const solid::SolidData s = solid::CheckSolidInput(in, 8, 8);
+  solid::CornerStress<8>(kHex8CornerPoints, 8, Hex8Shape, in.x, s, *in.element, S);
+}
+
 void SolidHex8GeometricStiffness(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG) {
   const solid::SolidData s = solid::CheckSolidInput(in, 8, 8);
   const Element& e = *in.element;

@@ -47,6 +47,12 @@ void SolidHex8Matrices(const ElementInput& in, MatX& K, MatX& M,
 /// for a bad material or a non-positive Jacobian at the centre.
 void SolidHex8Stress(const ElementInput& in, MatX& S);
 
+/// Stress recovery at the corner nodes of a 8-node hexahedron: fills S (48 x 24)
+/// with the map from the element DOF to the stresses (sxx, syy, szz, sxy,
+/// syz, szx) [Pa] in the basic frame at each of its 8 corner nodes, in node
+/// order (the strain field evaluated at the node, not extrapolated).
+void SolidHex8CornerStress(const ElementInput& in, MatX& S);
+
 /// Geometric (initial-stress) stiffness of an 8-node hexahedron under the
 /// stress of the nodal displacements `u` (24, basic frame, node by node ux
 /// uy uz, as K): fills KG (24 x 24, as K) [N/m] with int dN_i^T S dN_j dV

@@ -66,6 +66,14 @@ void SolidTet10Stress(const ElementInput& in, MatX& S) {
   S = solid::PointStress<10>({0.25, 0.25, 0.25, 0.0}, Tet10Shape, in.x, s, *in.element);
 }
 
+// the corner nodes' natural coordinates, in node order
+constexpr solid::QuadPoint kTet10Corners[4] = {{0.0, 0.0, 0.0, 0.0}, {1.0, 0.0, 0.0, 0.0}, {0.0, 1.0, 0.0, 0.0}, {0.0, 0.0, 1.0, 0.0}};
+
+void SolidTet10CornerStress(const ElementInput& in, MatX& S) {
+  const solid::SolidData s = solid::CheckSolidInput(in, 10, 4);
+  solid::CornerStress<10>(kTet10Corners, 4, Tet10Shape, in.x, s, *in.element, S);
+}
+
 void SolidTet10GeometricStiffness(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG) {
   const solid::SolidData s = solid::CheckSolidInput(in, 10, 4);
   const Eigen::Matrix<double, 6, 6> d = solid::ElasticityMatrix(s);

@@ -28,6 +28,12 @@ void SolidTet10Matrices(const ElementInput& in, MatX& K, MatX& M);
 /// Jacobian at the centroid.
 void SolidTet10Stress(const ElementInput& in, MatX& S);
 
+/// Stress recovery at the corner nodes of a 10-node tetrahedron: fills S (24 x 30)
+/// with the map from the element DOF to the stresses (sxx, syy, szz, sxy,
+/// syz, szx) [Pa] in the basic frame at each of its 4 corner nodes, in node
+/// order (the strain field evaluated at the node, not extrapolated).
+void SolidTet10CornerStress(const ElementInput& in, MatX& S);
+
 /// Geometric (initial-stress) stiffness of a 10-node tetrahedron under the
 /// stress of the nodal displacements `u` (30, basic frame, node by node ux
 /// uy uz, as K): fills KG (30 x 30, as K) [N/m] with int dN_i^T S dN_j dV

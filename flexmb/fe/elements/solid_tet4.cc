@@ -34,6 +34,14 @@ void SolidTet4Stress(const ElementInput& in, MatX& S) {
   S = solid::PointStress<4>(kOnePoint[0], Tet4Shape, in.x, s, *in.element);
 }
 
+// the corner nodes' natural coordinates, in node order
+constexpr solid::QuadPoint kTet4Corners[4] = {{0.0, 0.0, 0.0, 0.0}, {1.0, 0.0, 0.0, 0.0}, {0.0, 1.0, 0.0, 0.0}, {0.0, 0.0, 1.0, 0.0}};
+
+void SolidTet4CornerStress(const ElementInput& in, MatX& S) {
+  const solid::SolidData s = solid::CheckSolidInput(in, 4, 4);
+  solid::CornerStress<4>(kTet4Corners, 4, Tet4Shape, in.x, s, *in.element, S);
+}
+
 void SolidTet4GeometricStiffness(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG) {
   const solid::SolidData s = solid::CheckSolidInput(in, 4, 4);
   const Eigen::Matrix<double, 6, 6> d = solid::ElasticityMatrix(s);

@@ -23,6 +23,12 @@ void SolidTet4Matrices(const ElementInput& in, MatX& K, MatX& M);
 /// frame: D B of the stiffness. Throws InputError as SolidTet4Matrices.
 void SolidTet4Stress(const ElementInput& in, MatX& S);
 
+/// Stress recovery at the corner nodes of a 4-node tetrahedron: fills S (24 x 12)
+/// with the map from the element DOF to the stresses (sxx, syy, szz, sxy,
+/// syz, szx) [Pa] in the basic frame at each of its 4 corner nodes, in node
+/// order (the strain field evaluated at the node, not extrapolated).
+void SolidTet4CornerStress(const ElementInput& in, MatX& S);
+
 /// Geometric (initial-stress) stiffness of a 4-node tetrahedron under the
 /// stress of the nodal displacements `u` (12, basic frame, node by node ux
 /// uy uz, as K; a static solution of the prestress load case): fills KG

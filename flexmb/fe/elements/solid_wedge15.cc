@@ -83,6 +83,14 @@ void SolidWedge15Stress(const ElementInput& in, MatX& S) {
   S = solid::PointStress<15>(kWedge15Centroid, Wedge15Shape, in.x, s, *in.element);
 }
 
+// the corner nodes' natural coordinates, in node order
+constexpr solid::QuadPoint kWedge15CornerPoints[6] = {{0.0, 0.0, -1.0, 0.0}, {1.0, 0.0, -1.0, 0.0}, {0.0, 1.0, -1.0, 0.0}, {0.0, 0.0, 1.0, 0.0}, {1.0, 0.0, 1.0, 0.0}, {0.0, 1.0, 1.0, 0.0}};
+
+void SolidWedge15CornerStress(const ElementInput& in, MatX& S) {
+  const solid::SolidData s = solid::CheckSolidInput(in, 15, 6);
+  solid::CornerStress<15>(kWedge15CornerPoints, 6, Wedge15Shape, in.x, s, *in.element, S);
+}
+
 void SolidWedge15GeometricStiffness(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG) {
   const solid::SolidData s = solid::CheckSolidInput(in, 15, 6);
   const Eigen::Matrix<double, 6, 6> d = solid::ElasticityMatrix(s);

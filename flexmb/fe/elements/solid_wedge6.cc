@@ -61,6 +61,11 @@ void SolidWedge6Stress(const ElementInput& in, MatX& S) {
   S = solid::PointStress<6>(kWedge6Centroid, Wedge6Shape, in.x, s, *in.element);
 }
 
+void SolidWedge6CornerStress(const ElementInput& in, MatX& S) {
+  const solid::SolidData s = solid::CheckSolidInput(in, 6, 6);
+  solid::CornerStress<6>(kWedge6Corners, 6, Wedge6Shape, in.x, s, *in.element, S);
+}
+
 void SolidWedge6GeometricStiffness(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG) {
   const solid::SolidData s = solid::CheckSolidInput(in, 6, 6);
   const Eigen::Matrix<double, 6, 6> d = solid::ElasticityMatrix(s);

@@ -42,6 +42,12 @@ void SolidWedge6Matrices(const ElementInput& in, MatX& K, MatX& M,
 /// a bad material or a non-positive Jacobian at the centroid.
 void SolidWedge6Stress(const ElementInput& in, MatX& S);
 
+/// Stress recovery at the corner nodes of a 6-node wedge: fills S (36 x 18)
+/// with the map from the element DOF to the stresses (sxx, syy, szz, sxy,
+/// syz, szx) [Pa] in the basic frame at each of its 6 corner nodes, in node
+/// order (the strain field evaluated at the node, not extrapolated).
+void SolidWedge6CornerStress(const ElementInput& in, MatX& S);
+
 /// Geometric (initial-stress) stiffness of a 6-node wedge under the stress
 /// of the nodal displacements `u` (18, as K): fills KG (18 x 18, as K) [N/m]
 /// with int dN_i^T S dN_j dV I3, S = D B u at each point of the six-point

@@ -31,6 +31,19 @@ double CowperBox(double h, double t, double b, double t1, double nu) {
           nu * (11.0 + 66.0 * m + 135.0 * m * m + 90.0 * m * m * m) + 10.0 * n * n * ((3.0 + nu) * m + 3.0 * m * m));
 }
 
+// stress recovery points of a rectangle a (section 1-axis, element y) by
+// b (2-axis, element z): its corners, (y, z) from the centroid
+std::vector<std::array<double, 2>> AbaqusRectanglePoints(double a, double b) {
+  return {{0.5 * a, 0.5 * b}, {-0.5 * a, 0.5 * b}, {-0.5 * a, -0.5 * b}, {0.5 * a, -0.5 * b}};
+}
+
+// 8 points on the outer circle of radius r at 45 degree steps from +y
+std::vector<std::array<double, 2>> AbaqusCirclePoints(double r) {
+  std::vector<std::array<double, 2>> pts;
+  for (int k = 0; k < 8; ++k) pts.push_back({r * std::cos(k * kPi / 4.0), r * std::sin(k * kPi / 4.0)});
+  return pts;
+}
+
 // properties of a library shape; Iy = I11 (about the section 1-axis, n1),
 // Iz = I22; shear factors after Cowper (1966)
 void ShapeSection(const std::string& shape, const DataLine& d, double nu, const std::string& entity,
@@ -43,6 +56,7 @@ void ShapeSection(const std::string& shape, const DataLine& d, double nu, const 
     s.Iz = b * a * a * a / 12.0;
     s.J = RectangleTorsion(a, b);
     s.ky = s.kz = 10.0 * (1.0 + nu) / (12.0 + 11.0 * nu);
+    s.stress_points = AbaqusRectanglePoints(a, b);
   } else if (shape == "CIRC") {
     MaxFields(d, 1, entity);
     const double r = Positive(d, 0, entity, "radius r");
@@ -50,6 +64,7 @@ void ShapeSection(const std::string& shape, const DataLine& d, double nu, const 
     s.Iy = s.Iz = kPi * r * r * r * r / 4.0;
     s.J = 2.0 * s.Iy;
     s.ky = s.kz = 6.0 * (1.0 + nu) / (7.0 + 6.0 * nu);
+    s.stress_points = AbaqusCirclePoints(r);
   } else if (shape == "PIPE" || shape == "THICKPIPE") {
     MaxFields(d, 2, entity);
     const double r = Positive(d, 0, entity, "outer radius r"), t = Positive(d, 1, entity, "wall thickness t");
@@ -59,6 +74,7 @@ void ShapeSection(const std::string& shape, const DataLine& d, double nu, const 
     s.Iy = s.Iz = kPi * (r * r * r * r - ri * ri * ri * ri) / 4.0;
     s.J = 2.0 * s.Iy;
     s.ky = s.kz = 6.0 * (1.0 + nu) * m2 / ((7.0 + 6.0 * nu) * m2 + (20.0 + 12.0 * nu) * m * m);
+    s.stress_points = AbaqusCirclePoints(r);
   } else if (shape == "BOX") {
     MaxFields(d, 6, entity);
     const double a = Positive(d, 0, entity, "width a"), b = Positive(d, 1, entity, "height b");
@@ -77,6 +93,7 @@ void ShapeSection(const std::string& shape, const DataLine& d, double nu, const 
     s.J = 2.0 * tw * tf * am * am * bm * bm / (am * tw + bm * tf);
     s.ky = CowperBox(am, tf, bm, tw, nu);  // shear along 1: webs are the walls t2, t4
     s.kz = CowperBox(bm, tw, am, tf, nu);  // shear along 2: webs are the walls t1, t3
+    s.stress_points = AbaqusRectanglePoints(a, b);
   } else {
     Fail(d.origin, entity, "unsupported section shape SECTION=" + shape + " (supported: RECT, CIRC, PIPE, BOX, GENERAL)");
   }

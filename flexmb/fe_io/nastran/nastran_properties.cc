@@ -9,6 +9,22 @@
 
 namespace flexmb::io::nastran {
 
+namespace {
+// C1 C2 D1 D2 E1 E2 F1 F2 in fields f .. f + 7 (PBAR, PBEAM): the section's
+// stress recovery points (y, z) = (C1, C2), (D1, D2), ...; all blank or
+// zero: none given (Nastran then recovers the axial stress only)
+void ReadNastranStressPoints(const Entry& e, int f, fe::BeamSection& s) {
+  double v[8];
+  bool any = false;
+  for (int k = 0; k < 8; ++k) {
+    v[k] = e.Real(f + k, "stress recovery point", 0.0);
+    any = any || v[k] != 0.0;
+  }
+  if (!any) return;
+  for (int k = 0; k < 4; ++k) s.stress_points.push_back({v[2 * k], v[2 * k + 1]});
+}
+}  // namespace
+
 void Builder::AddProperty(const Entry& e) {
   if (e.name() == "PELAS") return AddPelas(e);
   const int pid = e.Id(1, "PID");
@@ -82,7 +98,7 @@ void Builder::ReadPbar(const Entry& e, fe::BeamSection& s) {
   s.Iy = e.Real(5, "I2", 0.0);
   s.J = e.Real(6, "J", 0.0);
   s.nsm = e.Real(7, "NSM", 0.0);
-  for (int f = 9; f <= 16; ++f) e.Real(f, "stress recovery point", 0.0);
+  ReadNastranStressPoints(e, 9, s);
   // blank or 0 K1, K2: no shear flexibility; Nastran ignores them if I12 != 0
   s.ky = e.Real(17, "K1", 0.0);
   s.kz = e.Real(18, "K2", 0.0);
@@ -147,6 +163,7 @@ void Builder::ReadBeamLibrary(const Entry& e, fe::BeamSection& s) {
   s.J = p.J;
   s.ky = p.K1;
   s.kz = p.K2;
+  s.stress_points = p.points;
   for (double v : {s.A, s.Iz, s.Iy, s.J, s.ky, s.kz}) Positive(e, 9, "section constant from the dimensions", v);
   if (!(s.Iy * s.Iz > s.Iyz * s.Iyz) || !std::isfinite(s.Iyz)) e.Fail(9, "section constants out of range");
   NonNegative(e, 9 + n, "NSM", s.nsm);
@@ -159,7 +176,7 @@ void Builder::ReadPbeam(const Entry& e, fe::BeamSection& s) {
   auto is_so = [&](int f) { return e.Text(f) == "YES" || e.Text(f) == "YESA" || e.Text(f) == "NO"; };
   int f = 9;
   if (!is_so(9)) {
-    for (int k = 9; k <= 16; ++k) e.Real(k, "stress recovery point", 0.0);
+    ReadNastranStressPoints(e, 9, s);  // end A's; the section is constant
     f = 17;
   }
   // intermediate and end-B stations: only a constant section is supported

@@ -13,6 +13,52 @@ struct Rect {
   double z, y, bz, hy;
 };
 
+// cross product of (b - a) and (c - a) in the (y, z) plane
+double SectionTurn(const std::array<double, 2>& a, const std::array<double, 2>& b, const std::array<double, 2>& c) {
+  return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+// the convex hull of the rectangles' corners, (y, z) from the centroid,
+// counter-clockwise (Andrew's monotone chain); points closer than 1e-9 of
+// the section's size and turns within rounding of collinear are merged
+std::vector<std::array<double, 2>> SectionHull(const std::vector<Rect>& rects, double yc, double zc) {
+  std::vector<std::array<double, 2>> pts;
+  double size = 0.0;
+  for (const Rect& r : rects)
+    for (double sy : {-0.5, 0.5})
+      for (double sz : {-0.5, 0.5}) {
+        pts.push_back({r.y + sy * r.hy - yc, r.z + sz * r.bz - zc});
+        size = std::max({size, std::abs(pts.back()[0]), std::abs(pts.back()[1])});
+      }
+  const double tol = 1e-9 * size;
+  std::sort(pts.begin(), pts.end());
+  pts.erase(std::unique(pts.begin(), pts.end(),
+                        [tol](const std::array<double, 2>& a, const std::array<double, 2>& b) {
+                          return std::abs(a[0] - b[0]) <= tol && std::abs(a[1] - b[1]) <= tol;
+                        }),
+            pts.end());
+  const double flat = tol * size;  // |cross| of a turn within rounding of collinear
+  std::vector<std::array<double, 2>> hull(2 * pts.size());
+  size_t k = 0;
+  for (size_t i = 0; i < pts.size(); ++i) {
+    while (k >= 2 && SectionTurn(hull[k - 2], hull[k - 1], pts[i]) <= flat) --k;
+    hull[k++] = pts[i];
+  }
+  for (size_t i = pts.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && SectionTurn(hull[k - 2], hull[k - 1], pts[i]) <= flat) --k;
+    hull[k++] = pts[i];
+  }
+  hull.resize(k - 1);  // the last point repeats the first
+  return hull;
+}
+
+// 8 points on a circle of radius r at 45 degree steps from +y
+std::vector<std::array<double, 2>> CirclePoints(double r) {
+  std::vector<std::array<double, 2>> pts;
+  for (int k = 0; k < 8; ++k) pts.push_back({r * std::cos(k * M_PI / 4.0), r * std::sin(k * M_PI / 4.0)});
+  return pts;
+}
+
 // A, I1, I2, I12 about the centroid of a union of disjoint rectangles
 // (parallel axis theorem)
 void RectangleUnion(const std::vector<Rect>& rects, ShapeProperties* p) {
@@ -36,6 +82,7 @@ void RectangleUnion(const std::vector<Rect>& rects, ShapeProperties* p) {
   p->I1 = i1;
   p->I2 = i2;
   p->I12 = i12;
+  p->points = SectionHull(rects, yc, zc);
 }
 
 std::string Need(bool ok, const std::string& what) { return ok ? std::string() : what; }
@@ -68,6 +115,7 @@ std::string ComputeShape(const std::string& type, const std::vector<double>& d, 
     p->I1 = p->I2 = M_PI * std::pow(r, 4) / 4.0;
     p->J = M_PI * std::pow(r, 4) / 2.0;
     p->K1 = p->K2 = 6.0 * (1.0 + nu) / (7.0 + 6.0 * nu);
+    p->points = CirclePoints(r);
   } else if (type == "TUBE") {
     // hollow circle: exact; Cowper's factor with m = r_in / r_out
     const double ro = d[0], ri = d[1];
@@ -78,6 +126,7 @@ std::string ComputeShape(const std::string& type, const std::vector<double>& d, 
     p->J = M_PI * (std::pow(ro, 4) - std::pow(ri, 4)) / 2.0;
     const double m = ri / ro, q = (1.0 + m * m) * (1.0 + m * m);
     p->K1 = p->K2 = 6.0 * (1.0 + nu) * q / ((7.0 + 6.0 * nu) * q + (20.0 + 12.0 * nu) * m * m);
+    p->points = CirclePoints(ro);
   } else if (type == "BAR") {
     // rectangle DIM1 (z) x DIM2 (y); J by Roark's Formulas for Stress and
     // Strain (7th ed., Table 10.7 case 4): a b^3 [1/3 - 0.21 (b/a)(1 - b^4 / (12 a^4))],

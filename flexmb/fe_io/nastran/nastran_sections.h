@@ -15,6 +15,7 @@
 /// x-y plane, about z), I2 = int z^2 dA, I12 = int y z dA, all about the
 /// centroid; K1, K2 are the shear area factors of planes 1 and 2.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,11 @@ struct ShapeProperties {
   double I1 = 0.0, I2 = 0.0, I12 = 0.0;
   double J = 0.0;
   double K1 = 0.0, K2 = 0.0;
+  /// Stress recovery points (y, z) from the centroid [length]: the corners
+  /// of the section's convex hull (the normal stress, linear in y and z,
+  /// is largest at one of them); round shapes: 8 points on the outer
+  /// circle at 45 degree steps from +y.
+  std::vector<std::array<double, 2>> points;
 };
 
 /// Number of dimensions of a beam library TYPE, 0 if the type is not

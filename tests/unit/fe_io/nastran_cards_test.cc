@@ -5,9 +5,11 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "flexmb/fe/assembly.h"
 #include "flexmb/fe_io/abaqus/abaqus_writer.h"
@@ -256,6 +258,46 @@ TEST(NastranInclude, SearchesIncludingFolderThenMainDeckFolderThenCurrentDirecto
                           {"sub/e.bdf:1: INCLUDE: cannot open 'nowhere.bdf'", "'" + root + "/sub' (including file)",
                            "'" + root + "' (main deck)", testing::ScratchPath("include_search_cwd") + "' (current directory)"},
                           "missing include");
+}
+
+}  // namespace
+}  // namespace flexmb::io
+
+// ---- stress recovery points of beam sections -------------------------------------
+
+namespace flexmb::io {
+namespace {
+
+// PBAR with C1 ... F2 keeps them as (y, z) = (Ci, Di ...) pairs; a PBAR
+// without them has none (Nastran: the axial stress only); PBARL BAR has its
+// four corners about the centroid (DIM1 along z, DIM2 along y); PBEAM takes
+// end A's points
+TEST(NastranCards, BeamSectionStressPoints) {
+  const std::string path = testing::WriteScratch("stress_points.bdf",
+                                                 "MAT1,1,2.1+11,,.3,7850.\n"
+                                                 "PBAR,1,1,1.-3,2.-7,3.-7,1.-7\n"
+                                                 ",.01,.02,-.01,.02,-.01,-.02,.01,-.02\n"
+                                                 "PBAR,2,1,1.-3,2.-7,3.-7,1.-7\n"
+                                                 "PBARL,3,1,,BAR\n"
+                                                 ",.04,.06\n"
+                                                 "PBEAM,4,1,1.-3,2.-7,3.-7,,1.-7\n"
+                                                 ",.03,.01,-.03,.01,,,,\n"
+                                                 "GRID,1,,0.,0.,0.\n"
+                                                 "GRID,2,,1.,0.,0.\n"
+                                                 "CBAR,1,1,1,2,0.,1.,0.\n"
+                                                 "CBAR,2,2,1,2,0.,1.,0.\n"
+                                                 "CBAR,3,3,1,2,0.,1.,0.\n"
+                                                 "CBEAM,4,4,1,2,0.,1.,0.\n");
+  const fe::Mesh mesh = ReadNastran(path);
+  ASSERT_EQ(mesh.beam_sections.size(), 4u);
+  using P = std::array<double, 2>;
+  EXPECT_EQ(mesh.beam_sections[0].stress_points,
+            (std::vector<P>{{.01, .02}, {-.01, .02}, {-.01, -.02}, {.01, -.02}}));
+  EXPECT_TRUE(mesh.beam_sections[1].stress_points.empty());
+  std::vector<P> bar = mesh.beam_sections[2].stress_points;
+  std::sort(bar.begin(), bar.end());
+  EXPECT_EQ(bar, (std::vector<P>{{-.03, -.02}, {-.03, .02}, {.03, -.02}, {.03, .02}}));
+  EXPECT_EQ(mesh.beam_sections[3].stress_points, (std::vector<P>{{.03, .01}, {-.03, .01}, {0, 0}, {0, 0}}));
 }
 
 }  // namespace
