@@ -21,6 +21,8 @@ PACKAGES=(
   calculix-ccx gmsh
   # Python module tests (ctest label python; docs/python.md)
   python3-pytest
+  # parameter studies on a local or remote Dask cluster (flexmb study; docs/studies.md)
+  python3-distributed
 )
 
 missing=()
