@@ -32,8 +32,11 @@ class StudyJournal:
             with open(self.path) as fh:
                 lines = fh.read().split("\n")
         good = []
-        if lines and lines[0]:
-            head = json.loads(lines[0])
+        try:  # a journal cut in its first line is an empty one
+            head = json.loads(lines[0]) if lines else None
+        except ValueError:
+            head = None
+        if head is not None:
             if head.get("fingerprint") != fingerprint:
                 raise StudyInputError(
                     f"{study_file}: {self.path} is the journal of another study (or the study file, its model "
@@ -111,17 +114,25 @@ def _default_cli():
 
 
 def _run_dask(client, tasks, journal, keep_dir, timeout, on_row):
-    from distributed import wait
     futures = {client.submit(run_one, t, None, keep_dir, key=f"flexmb-study-run-{t['run']}-{time.time_ns()}",
                              pure=False): t for t in tasks}
     pending = set(futures)
+    try:
+        _collect(futures, pending, journal, timeout, on_row)
+    finally:
+        if pending:  # interrupted or timed out: the cluster may live on, so its work is withdrawn
+            client.cancel(list(pending))
+
+
+def _collect(futures, pending, journal, timeout, on_row):
+    from distributed import wait
     deadline = None if timeout is None else time.monotonic() + timeout
     while pending:
         left = None if deadline is None else deadline - time.monotonic()
         if left is not None and left <= 0:
             raise TimeoutError(f"study timeout: {len(pending)} of {len(futures)} runs unfinished after {timeout} s")
-        done, pending = wait(pending, timeout=left, return_when="FIRST_COMPLETED")
-        pending = set(pending)
+        done, _ = wait(pending, timeout=left, return_when="FIRST_COMPLETED")
+        pending -= done
         for f in done:
             t = futures[f]
             if f.status == "finished":

@@ -32,9 +32,9 @@ def main(argv=None):
         table = study(args.study, args.out, workers=args.workers, scheduler=args.scheduler, keep_runs=args.keep_runs,
                       timeout=args.timeout, cli=args.cli,
                       on_row=None if args.quiet else (lambda r: print_row(r, total)))
-    except _core.Error as e:
+    except _core.Error as e:  # exit 2 for an input error, as the flexmb executable
         print(f"error: {e}", file=sys.stderr)
-        return 1
+        return 2 if isinstance(e, _core.InputError) else 1
     except KeyboardInterrupt:
         print(f"interrupted: the finished runs are in {os.path.join(args.out, 'journal.jsonl')}; "
               "the same command resumes", file=sys.stderr)

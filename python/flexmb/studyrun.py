@@ -163,6 +163,8 @@ def run_one(task, scratch=None, keep_dir=None):
     except Exception as e:  # a row says what went wrong; the study goes on
         row["message"] = f"{type(e).__name__}: {e}"
     finally:
+        # the scratch folder's name differs between attempts: messages name run_NNNN instead
+        row["message"] = row["message"].replace(work, f"run_{task['run']:04d}")
         row["wall_time_s"] = time.perf_counter() - start
         if keep_dir:
             final = os.path.join(keep_dir, f"run_{task['run']:04d}")

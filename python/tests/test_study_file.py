@@ -110,7 +110,8 @@ outputs: {period: period(angle.value), x: max(no_such_column)}
     table = flexmb.study(path, tmp_path / "out", workers=0, cli=cli, keep_runs=True)
     assert table.column("status") == ["failed"] * 3  # the missing column fails every run that ran
     assert "no column 'no_such_column'" in table[0]["message"]
-    assert "mass" in table[1]["message"] and "no_such_column" not in table[1]["message"]  # flexmb's own error
+    msg = table[1]["message"]  # flexmb's own error, the scratch folder named by the run
+    assert msg.startswith("run_0001/model/pendulum.yaml:") and "'mass' must be positive, got -1" in msg, msg
     assert (tmp_path / "out" / "runs" / "run_0001" / "out" / "summary.json").exists()
     path.write_text(path.read_text().replace(", x: max(no_such_column)", ""))
     table = flexmb.study(path, tmp_path / "out2", workers=0, cli=cli)
@@ -146,3 +147,20 @@ def test_an_interrupted_study_resumes_without_redoing_runs(cli, source_dir, tmp_
     assert journal.read_text().splitlines()[:len(lines)] == lines  # finished rows kept as they were
     assert all(json.loads(line) for line in journal.read_text().splitlines())
     assert len((out / "study.csv").read_text().splitlines()) == 7
+
+
+def test_flexmb_study_command_equals_the_python_call(cli, source_dir, tmp_path):
+    study = os.path.join(source_dir, "examples", "studies", "pendulum_period.yaml")
+    proc = subprocess.run([cli, "study", study, "--out", str(tmp_path / "cli"), "--workers", "0"],
+                          capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 0, proc.stderr
+    assert "4 runs, 0 failed" in proc.stdout and "run 4/4: ok" in proc.stdout
+    table = flexmb.study(study, tmp_path / "py", workers=0, cli=cli)
+    rows = [line.rsplit(",", 1)[0] for line in (tmp_path / "cli" / "study.csv").read_text().splitlines()]
+    assert rows == [line.rsplit(",", 1)[0] for line in (tmp_path / "py" / "study.csv").read_text().splitlines()]
+    assert len(table) == 4
+    bad = pendulum_study(tmp_path, source_dir, LENGTHS.replace("values: [0.5, 1.0]", "values: []"))
+    proc = subprocess.run([cli, "study", str(bad), "--out", str(tmp_path / "bad")], capture_output=True, text=True,
+                          timeout=60)
+    assert proc.returncode == 2
+    assert proc.stderr.startswith(f"error: {bad}: parameters.length.values: a non-empty list is needed")
