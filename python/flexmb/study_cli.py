@@ -4,6 +4,7 @@ forwards its `study` subcommand here (python3 -m flexmb.study_cli ...)."""
 
 import argparse
 import os
+import signal
 import sys
 
 
@@ -23,6 +24,10 @@ def main(argv=None):
     if args.workers is not None and args.workers < 0:
         ap.error("--workers must be 0 or more")
 
+    def on_term(signum, frame):  # kill (SIGTERM) stops like Ctrl-C: the cluster is closed, the journal kept
+        raise KeyboardInterrupt
+
+    signal.signal(signal.SIGTERM, on_term)
     from . import _core
     from .studies import print_row, study
     from .studyfile import load_study

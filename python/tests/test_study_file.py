@@ -164,3 +164,24 @@ def test_flexmb_study_command_equals_the_python_call(cli, source_dir, tmp_path):
                           timeout=60)
     assert proc.returncode == 2
     assert proc.stderr.startswith(f"error: {bad}: parameters.length.values: a non-empty list is needed")
+
+
+def test_example_studies_are_valid(source_dir):
+    folder = os.path.join(source_dir, "examples", "studies")
+    counts = {"pendulum_period.yaml": 4, "truck_speed_friction.yaml": 9, "truck_max_speed.yaml": 3}
+    for name, count in counts.items():
+        spec = flexmb.load_study(os.path.join(folder, name))
+        assert len(spec.rows) == count, name
+    grid = flexmb.load_study(os.path.join(folder, "truck_speed_friction.yaml")).runs("flexmb")
+    assert grid[5]["options"] == {"frame": "rigid", "speed": 50.0}
+    assert "road_mu: 0.8" in grid[5]["model_text"] and "road_mu: 0.8" not in grid[4]["model_text"]
+
+
+def test_study_table_in_hdf5_equals_the_csv(cli, source_dir, tmp_path):
+    pd = pytest.importorskip("pandas", reason="study.h5 is written only with pandas (python3-pandas)")
+    pytest.importorskip("tables", reason="study.h5 is written only with PyTables (python3-tables)")
+    path = pendulum_study(tmp_path, source_dir, LENGTHS)
+    table = flexmb.study(path, tmp_path / "out", workers=0, cli=cli)
+    frame = pd.read_hdf(tmp_path / "out" / "study.h5", "study")
+    assert list(frame.columns) == ["run", "length", "status", "message", "period", "wall_time_s"]
+    assert list(frame["period"]) == table.column("period") and list(frame["status"]) == ["ok", "ok"]
