@@ -156,6 +156,7 @@ def run_one(task, scratch=None, keep_dir=None):
             summary = _last_json(proc.stdout)
         if proc.returncode != 0:
             msg = summary.get("message") or (proc.stderr.strip().splitlines() or [""])[-1]
+            msg = msg[len("error: "):] if msg.startswith("error: ") else msg
             row["message"] = msg or f"flexmb exited with status {proc.returncode}"
             return row
         row.update(collect_outputs(task["outputs"], summary, out))

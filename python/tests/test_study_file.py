@@ -185,3 +185,29 @@ def test_study_table_in_hdf5_equals_the_csv(cli, source_dir, tmp_path):
     frame = pd.read_hdf(tmp_path / "out" / "study.h5", "study")
     assert list(frame.columns) == ["run", "length", "status", "message", "period", "wall_time_s"]
     assert list(frame["period"]) == table.column("period") and list(frame["status"]) == ["ok", "ok"]
+
+
+def test_truck_run_with_side_files_equals_the_plain_run(cli, source_dir, tmp_path):
+    truck = os.path.join(source_dir, "examples", "truck_lane_change", "truck.yaml")
+    body = f"""model: {truck}
+options: {{frame: rigid}}
+parameters:
+  speed_kmh: {{option: speed, values: [40]}}
+  road_mu: {{path: lane_change_test.road_mu, values: [0.8]}}
+outputs: {{passed: summary.passed, margin: summary.min_corridor_margin, roll: max(roll_deg)}}
+"""
+    (tmp_path / "shared.yaml").write_text(body)
+    (tmp_path / "sent.yaml").write_text(body + "files: [tire_11r22_5.yaml, tire_11r22_5_twin.yaml]\n")
+    shared = flexmb.study(tmp_path / "shared.yaml", tmp_path / "shared", workers=0, cli=cli)
+    sent = flexmb.study(tmp_path / "sent.yaml", tmp_path / "sent", workers=0, cli=cli, keep_runs=True)
+    assert shared[0]["status"] == "ok", shared[0]["message"]
+    assert {k: v for k, v in sent[0].items() if k != "wall_time_s"} == \
+        {k: v for k, v in shared[0].items() if k != "wall_time_s"}
+    model_dir = tmp_path / "sent" / "runs" / "run_0000" / "model"
+    assert sorted(p.name for p in model_dir.iterdir()) == ["tire_11r22_5.yaml", "tire_11r22_5_twin.yaml", "truck.yaml"]
+    assert not any(p.is_symlink() for p in model_dir.iterdir())  # copies that travelled with the task
+    subprocess.run([cli, "run", truck, "-o", str(tmp_path / "plain"), "--speed", "40", "--frame", "rigid", "-q"],
+                   check=True, capture_output=True, timeout=120)
+    plain = json.loads((tmp_path / "plain" / "summary.json").read_text())
+    assert shared[0]["passed"] == plain["passed"]
+    assert shared[0]["margin"] == plain["min_corridor_margin"]  # the rewritten file runs the same truck, bit for bit
