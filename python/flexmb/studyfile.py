@@ -118,10 +118,6 @@ def _expand_range(file, key, r):
     return [start + i * step for i in range(n)]
 
 
-def _to_float(x):
-    return float(x) if isinstance(x, (int, float)) and not isinstance(x, bool) else x
-
-
 class StudyParameter:
     """One parameter: where it goes (key paths into the model, or a command
     line option) and its values (None in a table study)."""
@@ -154,7 +150,7 @@ class StudyParameter:
             vals = spec["values"]
             if not isinstance(vals, list) or not vals:
                 _fail(file, f"{key}.values", "a non-empty list is needed")
-            self.values = [_to_float(v) for v in vals]
+            self.values = list(vals)  # as YAML read them: 12 stays a whole number (counts)
         elif "range" in spec:
             self.values = _expand_range(file, f"{key}.range", spec["range"])
 
@@ -250,7 +246,7 @@ class StudySpec:
             if not isinstance(row, dict) or set(row) != set(names):
                 got = ", ".join(row) if isinstance(row, dict) else "not a map"
                 _fail(f, f"table[{i}]", f"a row gives every parameter ({', '.join(names)}); it has: {got}")
-            rows.append({n: _to_float(row[n]) for n in names})
+            rows.append({n: row[n] for n in names})
         return rows
 
     def _outputs(self, outputs):

@@ -211,3 +211,23 @@ outputs: {{passed: summary.passed, margin: summary.min_corridor_margin, roll: ma
     plain = json.loads((tmp_path / "plain" / "summary.json").read_text())
     assert shared[0]["passed"] == plain["passed"]
     assert shared[0]["margin"] == plain["min_corridor_margin"]  # the rewritten file runs the same truck, bit for bit
+
+
+def test_a_newton_failure_is_a_row(cli, source_dir, tmp_path):
+    text = open(os.path.join(source_dir, "examples", "studies", "pendulum.yaml")).read()
+    solver = "solver: {t_end: 4.0, dt: 1.0e-3, rho_inf: 0.9}"
+    assert solver in text
+    model = tmp_path / "pendulum.yaml"  # no step cutting (dt_min = dt): one Newton iteration cannot converge
+    model.write_text(text.replace(solver, "solver: {t_end: 0.5, dt: 1.0e-3, dt_min: 1.0e-3, rho_inf: 0.9, "
+                                          "newton_tol: 1.0e-12, max_newton: 12}"))
+    path = tmp_path / "newton.yaml"
+    path.write_text(f"""model: {model}
+parameters:
+  max_newton: {{path: solver.max_newton}}
+table: [{{max_newton: 12}}, {{max_newton: 1}}]
+outputs: {{angle: final(angle.value)}}
+""")
+    table = flexmb.study(path, tmp_path / "out", workers=0, cli=cli)
+    assert table.column("status") == ["ok", "failed"]
+    assert "step size fell below dt_min" in table[1]["message"] and table[1].get("angle") is None
+    assert table[0]["angle"] < 0.1  # released at 0.1 rad, swinging down
