@@ -34,18 +34,25 @@ outputs: {{period: period(angle.value), max_rate: max(angle.rate), steps: summar
     return path
 
 
+@pytest.fixture(scope="module")
+def lengths(tmp_path_factory, source_dir_module, cli_module):
+    """The study of 6 lengths and its rows run serially (the reference of every test here)."""
+    folder = tmp_path_factory.mktemp("lengths")
+    path = lengths_study(folder, source_dir_module, 6)
+    return path, flexmb.study(path, folder / "serial", workers=0, cli=cli_module)
+
+
 def outputs(table):
     """The rows without the wall time (which differs from run to run)."""
     return [{k: v for k, v in r.items() if k != "wall_time_s"} for r in table]
 
 
-def test_local_cluster_equals_serial(cli, source_dir, tmp_path):
-    path = lengths_study(tmp_path, source_dir, 4)
-    serial = flexmb.study(path, tmp_path / "serial", workers=0, cli=cli)
+def test_local_cluster_equals_serial(cli, lengths, tmp_path):
+    path, serial = lengths
     parallel = flexmb.study(path, tmp_path / "dask", workers=2, cli=cli, timeout=DASK_TIMEOUT)
     assert outputs(parallel) == outputs(serial)
-    assert parallel.column("status") == ["ok"] * 4
-    csv_serial = (tmp_path / "serial" / "study.csv").read_text().splitlines()
+    assert parallel.column("status") == ["ok"] * 6
+    csv_serial = (path.parent / "serial" / "study.csv").read_text().splitlines()
     csv_dask = (tmp_path / "dask" / "study.csv").read_text().splitlines()
     assert [line.rsplit(",", 1)[0] for line in csv_dask] == [line.rsplit(",", 1)[0] for line in csv_serial]
 
@@ -56,9 +63,8 @@ def free_port():
         return s.getsockname()[1]
 
 
-def test_scheduler_and_workers_as_processes(cli, source_dir, tmp_path):
-    path = lengths_study(tmp_path, source_dir, 4)
-    serial = flexmb.study(path, tmp_path / "serial", workers=0, cli=cli)
+def test_scheduler_and_workers_as_processes(cli, lengths, tmp_path):
+    path, serial = lengths
     address = f"tcp://127.0.0.1:{free_port()}"
     dask = [sys.executable, "-m", "distributed.cli.dask_scheduler"]
     env = dict(os.environ, FLEXMB_CLI=cli)
@@ -83,8 +89,8 @@ def test_scheduler_and_workers_as_processes(cli, source_dir, tmp_path):
     assert outputs(table) == outputs(serial)
 
 
-def test_a_killed_worker_has_its_runs_redone(cli, source_dir, tmp_path):
-    path = lengths_study(tmp_path, source_dir, 6)
+def test_a_killed_worker_has_its_runs_redone(cli, lengths, tmp_path):
+    path, serial = lengths
     killed = {}
 
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None,
@@ -107,5 +113,4 @@ def test_a_killed_worker_has_its_runs_redone(cli, source_dir, tmp_path):
     lost = sorted(int(k.split("-")[3]) for k in killed["keys"])  # keys flexmb-study-run-N-...
     assert all(table[i]["status"] == "ok" for i in lost)  # the killed worker's runs, redone elsewhere
     assert table.column("status") == ["ok"] * 6
-    serial = flexmb.study(path, tmp_path / "serial", workers=0, cli=cli)
     assert outputs(table) == outputs(serial)
