@@ -6,6 +6,7 @@ so an interrupted study resumes where it stopped; the table is DIR/study.csv
 """
 
 import csv
+import fcntl
 import json
 import math
 import os
@@ -27,13 +28,24 @@ class StudyJournal:
     def __init__(self, out_dir, fingerprint, study_file):
         self.path = os.path.join(out_dir, "journal.jsonl")
         self.rows = {}
-        lines = []
-        if os.path.exists(self.path):
-            with open(self.path) as fh:
-                lines = fh.read().split("\n")
+        self.fh = open(self.path, "a+")
+        try:  # one study at a time per folder: the lock ends with the process
+            fcntl.flock(self.fh, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            self.fh.close()
+            raise StudyInputError(f"{study_file}: {out_dir} is in use by another study (its journal is locked)") from None
+        try:
+            self._read(fingerprint, study_file)
+        except BaseException:
+            self.fh.close()
+            raise
+
+    def _read(self, fingerprint, study_file):
+        self.fh.seek(0)
+        lines = self.fh.read().split("\n")
         good = []
         try:  # a journal cut in its first line is an empty one
-            head = json.loads(lines[0]) if lines else None
+            head = json.loads(lines[0])
         except ValueError:
             head = None
         if head is not None:
@@ -49,9 +61,10 @@ class StudyJournal:
                     continue
                 self.rows[row["run"]] = row
                 good.append(line)
-        with open(self.path, "w") as fh:  # rewritten without a partial line
-            fh.write("\n".join(good or [json.dumps({"fingerprint": fingerprint, "study": study_file})]) + "\n")
-        self.fh = open(self.path, "a")
+        self.fh.seek(0)
+        self.fh.truncate()  # rewritten without a partial line
+        self.fh.write("\n".join(good or [json.dumps({"fingerprint": fingerprint, "study": study_file})]) + "\n")
+        self.fh.flush()
 
     def add(self, row):
         self.rows[row["run"]] = row

@@ -231,3 +231,14 @@ outputs: {{angle: final(angle.value)}}
     assert table.column("status") == ["ok", "failed"]
     assert "step size fell below dt_min" in table[1]["message"] and table[1].get("angle") is None
     assert table[0]["angle"] < 0.1  # released at 0.1 rad, swinging down
+
+
+def test_one_study_at_a_time_per_folder(cli, source_dir, tmp_path):
+    import fcntl
+    path = pendulum_study(tmp_path, source_dir, LENGTHS)
+    (tmp_path / "out").mkdir()
+    with open(tmp_path / "out" / "journal.jsonl", "a") as fh:  # as a study running into the folder holds it
+        fcntl.flock(fh, fcntl.LOCK_EX)
+        with pytest.raises(flexmb.InputError, match="is in use by another study"):
+            flexmb.study(path, tmp_path / "out", workers=0, cli=cli)
+    assert len(flexmb.study(path, tmp_path / "out", workers=0, cli=cli)) == 2
