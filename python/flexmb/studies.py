@@ -178,7 +178,10 @@ def study(study_file, out_dir, workers=None, scheduler=None, keep_runs=False, ti
     todo = [t for t in tasks if t["run"] not in journal.rows]
     try:
         if todo and workers == 0 and scheduler is None:
-            for t in todo:
+            deadline = None if timeout is None else time.monotonic() + timeout
+            for i, t in enumerate(todo):
+                if deadline is not None and time.monotonic() > deadline:
+                    raise TimeoutError(f"study timeout: {len(todo) - i} of {len(todo)} runs unfinished after {timeout} s")
                 row = run_one(t, None, keep_dir)
                 journal.add(row)
                 if on_row:
