@@ -33,7 +33,8 @@ class StudyJournal:
             fcntl.flock(self.fh, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except BlockingIOError:
             self.fh.close()
-            raise StudyInputError(f"{study_file}: {out_dir} is in use by another study (its journal is locked)") from None
+            raise StudyInputError(
+                f"{study_file}: {out_dir} is in use by another study (its journal is locked)") from None
         try:
             self._read(fingerprint, study_file)
         except BaseException:
@@ -181,7 +182,8 @@ def study(study_file, out_dir, workers=None, scheduler=None, keep_runs=False, ti
             deadline = None if timeout is None else time.monotonic() + timeout
             for i, t in enumerate(todo):
                 if deadline is not None and time.monotonic() > deadline:
-                    raise TimeoutError(f"study timeout: {len(todo) - i} of {len(todo)} runs unfinished after {timeout} s")
+                    raise TimeoutError(
+                        f"study timeout: {len(todo) - i} of {len(todo)} runs unfinished after {timeout} s")
                 row = run_one(t, None, keep_dir)
                 journal.add(row)
                 if on_row:
