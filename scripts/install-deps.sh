@@ -21,6 +21,10 @@ PACKAGES=(
   calculix-ccx gmsh
   # Python module tests (ctest label python; docs/python.md)
   python3-pytest
+  # parameter studies on a local or remote Dask cluster (flexmb study; docs/studies.md)
+  python3-distributed
+  # the study files are rewritten with PyYAML (python/flexmb/studyfile.py)
+  python3-yaml
 )
 
 missing=()

@@ -23,6 +23,7 @@
 #include "apps/flexmb/commands/run.h"
 #include "apps/flexmb/commands/lane_change.h"
 #include "apps/flexmb/commands/post_command.h"
+#include "apps/flexmb/commands/study_command.h"
 
 namespace {
 
@@ -244,6 +245,11 @@ int main(int argc, char** argv) {
   post->add_option("--node", post_opt.nodes, "node id: elastic displacement history to CSV (repeatable)");
   post->add_flag("--json", post_opt.json, "print one JSON object instead of text");
 
+  CLI::App* study = app.add_subcommand("study", "parameter study from a study file, on a local or remote Dask cluster");
+  study->set_help_flag();  // its options and --help belong to python3 -m flexmb.study_cli
+  study->prefix_command();
+  study->allow_extras();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -254,6 +260,7 @@ int main(int argc, char** argv) {
     app.exit(e);
     return 2;
   }
+  if (study->parsed()) return flexmb::cli::StudyCommand(study->remaining(), argv[0]);
   if (run->parsed() && flexmb::vehicle::IsLaneChangeFile(model)) {
     return Guarded([&] {
       flexmb::vehicle::LaneChangeOptions o{model, out, speed, frame, dt, false, quiet ? nullptr : stdout};

@@ -2,8 +2,9 @@
 
 The compiled core (flexmb._core) holds the engine; this package adds the
 pure-Python helpers: models from dicts, results as numpy arrays, FE and body
-files, the truck lane change, parameter studies, static equilibrium, linearized
-modes and state-space models, and plots. See docs/python.md.
+files, the truck lane change, parameter studies (in processes, or from a
+study file on a Dask cluster), static equilibrium, linearized modes and
+state-space models, and plots. See docs/python.md.
 """
 
 from ._core import Error, InputError, NumericalError, Input, Simulation
@@ -12,7 +13,9 @@ from .results import Results, read_results
 from .commands import run_file, fe_modes, fe_mode_shapes, fe_info, fe_export, reduce, body_info
 from .bodies import Body, read_body
 from .vehicle import LaneChangeResult, lane_change, max_pass_speed
-from .study import run_study
+from .study import run_study, Table
+from .studyfile import load_study
+from .studies import study
 from .analysis import StaticsResult, ModesResult, StateSpace, statics, modes, linearize, read_mtx
 
 __all__ = [
@@ -22,6 +25,6 @@ __all__ = [
     "run_file", "fe_modes", "fe_mode_shapes", "fe_info", "fe_export", "reduce", "body_info",
     "Body", "read_body",
     "LaneChangeResult", "lane_change", "max_pass_speed",
-    "run_study",
+    "run_study", "Table", "load_study", "study",
     "StaticsResult", "ModesResult", "StateSpace", "statics", "modes", "linearize", "read_mtx",
 ]

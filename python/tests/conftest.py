@@ -22,3 +22,17 @@ def cli():
 @pytest.fixture
 def source_dir():
     return SOURCE_DIR
+
+
+@pytest.fixture(scope="module")
+def cli_module():
+    """The flexmb executable for module-scoped fixtures."""
+    path = os.environ.get("FLEXMB_CLI") or shutil.which("flexmb")
+    if not path:
+        pytest.skip("flexmb CLI not found (FLEXMB_CLI)")
+    return path
+
+
+@pytest.fixture(scope="module")
+def source_dir_module():
+    return SOURCE_DIR
