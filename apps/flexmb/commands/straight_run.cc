@@ -47,7 +47,7 @@ struct StraightRunMoments {
 
 // an option error naming the file and the option
 [[noreturn]] void StraightRunFail(const StraightRunOptions& o, const std::string& option, const std::string& what) {
-  throw InputError(option + ": " + what, {o.file, 0, "straight run option " + option});
+  throw InputError(what, {o.file, 0, "straight run option " + option});
 }
 
 }  // namespace
@@ -75,7 +75,7 @@ RoadProfile StraightRunRoad(const StraightRunOptions& o, double track_width) {
     try {
       p = GenerateIso8608(g);
     } catch (const InputError& e) {
-      StraightRunFail(o, "--road-class", e.what());
+      StraightRunFail(o, "--road-class", std::string("'") + o.road_class + "': " + e.what());
     }
     // the generated grid is a power of two long: keep the requested length
     const auto end = std::upper_bound(p.x.begin(), p.x.end(), o.road_length + 1e-9);
