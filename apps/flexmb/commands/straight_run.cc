@@ -231,6 +231,7 @@ StraightRunResult RunStraight(const StraightRunOptions& opt) {
         fz[k] = c.fz;
         double slope = 0.0;
         surface[static_cast<size_t>(k % 2)]->Evaluate(wm.p_WM.x(), &road[k], &slope);
+        road[k] += 0.0;  // -0 (the faded-in start) written as 0
         tire_moments[static_cast<size_t>(k)].Add(c.fz);
       }
       if (csv)
