@@ -22,6 +22,7 @@
 #include "apps/flexmb/commands/reduce_commands.h"
 #include "apps/flexmb/commands/run.h"
 #include "apps/flexmb/commands/lane_change.h"
+#include "apps/flexmb/commands/straight_run.h"
 #include "apps/flexmb/commands/post_command.h"
 #include "apps/flexmb/commands/study_command.h"
 
@@ -155,6 +156,24 @@ int main(int argc, char** argv) {
   max_speed->add_option("--high", v_high, "highest speed tried [km/h] (default 90)");
   max_speed->add_option("--tol", v_tol, "bisection tolerance [km/h] (default 1)");
   max_speed->add_option("--frame", frame, "frame model, rigid or elastic (default: the file's)");
+
+  flexmb::vehicle::StraightRunOptions straight_opt;
+  CLI::App* straight = truck->add_subcommand("straight-run", "straight run over a rough road at a constant speed");
+  straight->add_option("file", straight_opt.file, "lane-change file (YAML): the truck, driver, solver")->required();
+  straight->add_option("--out,-o", straight_opt.out_dir, "output directory")->required();
+  straight->add_option("--speed", straight_opt.speed_kmh, "speed [km/h] (default: the file's entry speed)");
+  straight->add_option("--frame", straight_opt.frame, "frame model, rigid or elastic (default: the file's)");
+  straight->add_option("--dt", straight_opt.dt, "step size [s] (default: the file's)");
+  straight->add_option("--road", straight_opt.road, "iso8608 (default), csv or flat");
+  straight->add_option("--road-class", straight_opt.road_class, "ISO 8608 road class A to H (default B)");
+  straight->add_option("--road-length", straight_opt.road_length, "road length [m] (default 300)");
+  straight->add_option("--seed", straight_opt.seed, "random seed of the generated road (default 1)");
+  straight->add_option("--road-csv", straight_opt.road_csv, "CSV of x, z_left, z_right [m] (with --road csv)");
+  straight->add_option("--distance", straight_opt.distance, "distance driven on the road [m] (default: the road)");
+  straight->add_option("--run-up", straight_opt.run_up_time, "time on the flat before the road [s] (default 3)");
+  straight->add_option("--fade-in", straight_opt.fade_in, "length over which the road fades in [m] (default 5)");
+  bool straight_quiet = false;
+  straight->add_flag("--quiet,-q", straight_quiet, "no summary line");
 
   CLI::App* check = app.add_subcommand("check", "validate a model file and report its constraints");
   check->add_option("model", model, "model file or lane-change file (YAML)")->required();
@@ -305,6 +324,15 @@ int main(int argc, char** argv) {
       std::printf("{\"max_pass_speed_kmh\": %.3f, \"low_passed\": %s, \"tolerance_kmh\": %g}\n", low_ok ? v : 0.0,
                   low_ok ? "true" : "false", v_tol);
       return 0;
+    });
+  }
+  if (straight->parsed()) {
+    return Guarded([&] {
+      if (!straight_opt.road_csv.empty() && straight_opt.road == "iso8608") straight_opt.road = "csv";
+      straight_opt.info = straight_quiet ? nullptr : stdout;
+      const flexmb::vehicle::StraightRunResult r = flexmb::vehicle::RunStraight(straight_opt);
+      if (!r.completed) std::fprintf(stderr, "error: straight run did not complete: %s\n", r.message.c_str());
+      return r.completed ? 0 : 1;
     });
   }
   if (modes->parsed()) return Guarded([&] { return flexmb::io::FeModes(modes_opt, std::cout); });

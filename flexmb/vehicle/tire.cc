@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "flexmb/common/error.h"
+#include "flexmb/vehicle/road_surface.h"
 
 namespace flexmb::vehicle {
 namespace {
@@ -86,7 +87,10 @@ Vec12 Tire::Compute(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, 
   Vec3 spring = p_j ? Vec3(k_carcass_ * (*p_j - p)) : Vec3::Zero();
   out.segment<3>(0) = spring;
   out.segment<3>(6) = -spring;
-  const Vec3 n(0, 0, 1);
+  // road plane under the centre: height h, normal n (flat road: z = 0, +z)
+  double h = 0.0, slope = 0.0;
+  if (road_) road_->Evaluate(p.x(), &h, &slope);
+  const Vec3 n = road_ ? Vec3(Vec3(-slope, 0, 1).normalized()) : Vec3(0, 0, 1);
   const Vec3 a = R.col(2);
   const Vec3 axn = a.cross(n);
   const double s = axn.norm();
@@ -96,7 +100,7 @@ Vec12 Tire::Compute(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, 
   const Vec3 yt = n.cross(xt);
   // upward unit vector in the wheel plane; cos(gamma) = r . n = s
   const Vec3 r = xt.cross(a);
-  const double rho = p.z() / s;
+  const double rho = road_ ? (p.z() - h) * n.z() / s : p.z() / s;
   const double defl = d.unloaded_radius - rho;
   const Vec3 c = p - rho * r;
   // longitudinally relaxed: the spring is stiffer along x_t and acts on both
@@ -118,7 +122,9 @@ Vec12 Tire::Compute(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, 
   }
   if (defl <= 0) return out;
   const double n_t = d.count;
-  const double fz = std::max(0.0, n_t * (d.vertical_stiffness * defl - d.vertical_damping * v.z() / s));
+  // deflection rate: the centre's velocity along the road normal
+  const double vn = road_ ? (v.z() - slope * v.x()) * n.z() : v.z();
+  const double fz = std::max(0.0, n_t * (d.vertical_stiffness * defl - d.vertical_damping * vn / s));
   if (fz <= 0) return out;
 
   // slip

@@ -1,15 +1,18 @@
 #pragma once
 /// \file tire.h
-/// Tire force element on a flat road: a Magic Formula-type (Pacejka 2002
+/// Tire force element on a flat road (or on a RoadSurface, road_surface.h): a Magic Formula-type (Pacejka 2002
 /// simplified) longitudinal and lateral force with combined slip and load
 /// sensitivity, a vertical spring-damper with lift-off, an effective rolling
 /// radius, a pneumatic-trail aligning moment and rolling resistance.
 
+#include <memory>
 #include <string>
 
 #include "flexmb/forces/force_element.h"
 
 namespace flexmb::vehicle {
+
+class RoadSurface;
 
 /// Coefficients of one tire (or of each tire of an identical twin set),
 /// following the naming of Pacejka, "Tire and Vehicle Dynamics", 3rd ed.,
@@ -125,6 +128,16 @@ struct TireContact {
 /// patch: sigma_kappa dFx/dx + Fx = Fx_ss, sigma_kappa = Kx / k_x.
 /// K and C are central finite differences of the wrench (the element's
 /// documented choice, docs/design.md "Vehicle: tire tangent").
+/// Road surface (SetRoad): the road under the wheel is the plane through
+/// (p_x, p_y, h(p_x)) with the normal n = (-h', 0, 1) / sqrt(1 + h'^2)
+/// (h, h' = dh/dx of the RoadSurface at the centre's x) in place of z = 0
+/// and +z: rho = (p_z - h) n_z / cos(gamma), the deflection rate in the
+/// damper is the centre's velocity along n, (v_z - h' v_x) n_z (the road's
+/// curvature neglected), and the slip frame x_t = normalize(a x n) follows
+/// the road's slope. The vertical road input thus acts through the radial
+/// stiffness and damping; the finite-difference tangents see h(p_x) and h'.
+/// Without a road (the default) the flat road z = 0 is evaluated exactly as
+/// before.
 class Tire final : public ForceElement {
  public:
   /// Throws InputError naming the element for a coefficient out of range
@@ -159,6 +172,11 @@ class Tire final : public ForceElement {
   const TireData& data() const { return data_; }
   /// Road friction coefficient [-].
   double mu() const { return mu_; }
+  /// Rolls the tire on `road` (nullptr: the flat road z = 0, the default).
+  /// Set before the simulation starts; the surface is shared, not copied.
+  void SetRoad(std::shared_ptr<const RoadSurface> road) { road_ = std::move(road); }
+  /// The road surface (nullptr: flat road z = 0).
+  const RoadSurface* road() const { return road_.get(); }
 
  private:
   // wheel wrench (head) and patch wrench (tail); no patch when p_j is null
@@ -168,6 +186,7 @@ class Tire final : public ForceElement {
   double mu_;
   double k_carcass_ = 0.0;
   double k_long_ = 0.0;
+  std::shared_ptr<const RoadSurface> road_;
 };
 
 }  // namespace flexmb::vehicle

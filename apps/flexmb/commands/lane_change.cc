@@ -292,6 +292,12 @@ bool IsLaneChangeFile(const std::string& path) {
 
 TruckData LoadLaneChangeTruck(const std::string& file) { return ReadFile(file).truck; }
 
+TruckFileSettings LoadTruckFileSettings(const std::string& file) {
+  const LaneChangeFile f = ReadFile(file);
+  return {f.speed_kmh, f.run_up_time, f.frame, f.reduction, f.mu, f.driver, f.solver, f.dt_min_given,
+          f.output_interval, f.truck};
+}
+
 FrameReductionData LaneChangeFrameReduction(const std::string& file) { return ReadFile(file).reduction; }
 
 std::shared_ptr<reduction::ReducedBody> ReduceTruckFrame(const TruckData& d, const FrameReductionData& r, double g) {

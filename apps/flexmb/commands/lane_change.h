@@ -13,6 +13,7 @@
 #include <string>
 
 #include "flexmb/model/state.h"
+#include "flexmb/vehicle/driver.h"
 #include "flexmb/vehicle/truck.h"
 
 namespace flexmb::vehicle {
@@ -145,5 +146,25 @@ FrameReductionData LaneChangeFrameReduction(const std::string& file);
 
 /// The result as a JSON object.
 std::string LaneChangeJson(const LaneChangeResult& r);
+
+/// The settings of a lane-change file that other manoeuvres of its truck
+/// share (the straight run, straight_run.h): the file's values as read,
+/// the course aside.
+struct TruckFileSettings {
+  double speed_kmh = 55.0;          ///< entry_speed_kmh [km/h]
+  double run_up_time = 1.0;         ///< run_up_time [s]
+  std::string frame = "rigid";      ///< frame: "rigid" or "elastic"
+  FrameReductionData reduction;     ///< the elastic frame's reduction
+  double mu = 0.8;                  ///< road_mu [-]
+  DriverData driver;                ///< driver gains (steering ratio from the truck)
+  SolverSettings solver;            ///< the solver section (dt_min as read)
+  bool dt_min_given = false;        ///< the solver section gives dt_min (else use 1e-6 dt)
+  double output_interval = 0.01;    ///< solver.output_interval [s]
+  TruckData truck;                  ///< the truck
+};
+
+/// Reads the shared settings of a lane-change file; throws InputError
+/// naming the file and key like RunLaneChange.
+TruckFileSettings LoadTruckFileSettings(const std::string& file);
 
 }  // namespace flexmb::vehicle
