@@ -22,6 +22,7 @@
 //   modes under the cab.
 // docs/validation.md, "Rough roads".
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -66,7 +67,8 @@ struct TruckRoadRun {
 // 60 km/h over 40 m of `road` ("flat" or an ISO 8608 class letter)
 TruckRoadRun RunTruckRoad(const std::string& road, const std::string& frame) {
   const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("flexmb_truck_rough_road_" + road + "_" + frame);
+      std::filesystem::temp_directory_path() /
+      ("flexmb_truck_rough_road_" + road + "_" + frame + "_" + std::to_string(::getpid()));  // ctest -j: own folder
   std::filesystem::remove_all(dir);
   StraightRunOptions o;
   o.file = TruckRoadFile();
