@@ -10,6 +10,7 @@
 #include <map>
 #include <numbers>
 
+#include "apps/flexmb/commands/analysis_support.h"
 #include "apps/flexmb/commands/lane_change.h"
 #include "flexmb/body_file/body_file.h"
 #include "flexmb/common/error.h"
@@ -286,10 +287,6 @@ StraightRunResult RunStraight(const StraightRunOptions& opt) {
 std::string StraightRunJson(const StraightRunResult& r) {
   using io::JsonNumber;
   using io::JsonString;
-  std::string j = "{\n";
-  auto add = [&](const char* key, const std::string& value, bool last = false) {
-    j += "  " + JsonString(key) + ": " + value + (last ? "\n" : ",\n");
-  };
   auto forces = [](const std::vector<ForceStatistics>& v) {
     std::string s = "[";
     for (size_t i = 0; i < v.size(); ++i)
@@ -298,25 +295,26 @@ std::string StraightRunJson(const StraightRunResult& r) {
            ", \"min\": " + JsonNumber(v[i].min) + ", \"max\": " + JsonNumber(v[i].max) + "}";
     return s + "]";
   };
-  add("status", JsonString(r.completed ? "ok" : "failed"));
-  add("message", JsonString(r.message));
-  add("frame", JsonString(r.frame));
-  add("speed_kmh", JsonNumber(r.speed_kmh));
-  add("mean_speed_kmh", JsonNumber(r.mean_speed_kmh));
-  add("road", JsonString(r.road));
-  add("road_length", JsonNumber(r.road_length));
-  add("run_up", JsonNumber(r.run_up));
-  add("distance", JsonNumber(r.distance));
-  add("distance_km", JsonNumber(r.distance / 1e3));
-  add("t_end", JsonNumber(r.t_end));
-  add("rows", std::to_string(r.rows));
-  add("steps", std::to_string(r.steps));
-  add("wall_time_s", JsonNumber(r.wall_time_s));
-  add("cpu_time_s", JsonNumber(r.cpu_time_s));
-  add("reduction_wall_time_s", JsonNumber(r.reduction_wall_time_s));
-  add("tire_fz_N", forces(r.tires));
-  add("mount_fz_N", forces(r.mounts), true);
-  return j + "}\n";
+  cli::JsonObjectText j;
+  j.Text("status", r.completed ? "ok" : "failed");
+  j.Text("message", r.message);
+  j.Text("frame", r.frame);
+  j.Number("speed_kmh", r.speed_kmh);
+  j.Number("mean_speed_kmh", r.mean_speed_kmh);
+  j.Text("road", r.road);
+  j.Number("road_length", r.road_length);
+  j.Number("run_up", r.run_up);
+  j.Number("distance", r.distance);
+  j.Number("distance_km", r.distance / 1e3);
+  j.Number("t_end", r.t_end);
+  j.Raw("rows", std::to_string(r.rows));
+  j.Raw("steps", std::to_string(r.steps));
+  j.Number("wall_time_s", r.wall_time_s);
+  j.Number("cpu_time_s", r.cpu_time_s);
+  j.Number("reduction_wall_time_s", r.reduction_wall_time_s);
+  j.Raw("tire_fz_N", forces(r.tires));
+  j.Raw("mount_fz_N", forces(r.mounts));
+  return j.str();
 }
 
 }  // namespace flexmb::vehicle
