@@ -114,7 +114,8 @@ class StateSpace:
     """The state-space model x' = A x + B u, y = C x + D u of `linearize()`.
 
     A, B, C, D: numpy arrays; states (names: "dx COORDINATE" increments,
-    then "v COORDINATE" rates), inputs ("FORCE.fx", ..., "SPRING.tension"),
+    then "v COORDINATE" rates, then "driver NAME.position" and "driver NAME.velocity" of driver inputs),
+    inputs ("FORCE.fx", ..., "SPRING.tension", "DRIVER.acceleration"),
     outputs ("SENSOR.COMPONENT", deviations from output_values, their values
     at the state); time [s] of the state; summary; warnings."""
 
@@ -164,7 +165,9 @@ def linearize(model, inputs, outputs=(), at="statics", time=0.0, out_dir=None):
     about the state `at` ("statics", "initial" or "time", as in modes());
     inputs: force element names (point_force: 3 world force components [N],
     point_torque: 3 moments [N m], spring_damper: its extra tension [N],
-    joint_motor: its torque [N m] or force [N]);
+    joint_motor: its torque [N m] or force [N]) and motion drivers (their
+    acceleration [m/s^2 or rad/s^2]; their position and velocity are then
+    appended to the states, docs/cli.md "Drivers as inputs");
     outputs: sensor names (empty: all sensors). out_dir: also write A.mtx,
     B.mtx, C.mtx, D.mtx, statespace.json and summary.json there."""
     if isinstance(inputs, str):
