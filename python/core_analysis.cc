@@ -94,6 +94,10 @@ py::dict AnalysisModesDict(const cli::ModesResult& r) {
   d["eigenvalues"] = py::array_t<std::complex<double>>(s.size(), s.data());
   d["shapes"] = AnalysisMatrix(shapes);
   d["shapes_imag"] = AnalysisMatrix(shapes_imag);
+  // lane-change (truck) files: the modes' names by their dominant motion
+  std::vector<std::string> names;
+  for (const cli::TruckModeName& t : r.names) names.push_back(t.name);
+  d["names"] = names;
   return d;
 }
 
@@ -133,8 +137,10 @@ void BindAnalysis(py::module_& m) {
         "`flexmb statics`: the static equilibrium as a dict (files in out_dir unless empty); text: the model-file "
         "text (model then names it).");
   m.def("modes", [](const std::string& model, const std::string& text, const std::string& out_dir,
-                    const std::string& at, double time, int count, bool animation, int frames, double amplitude) {
+                    const std::string& at, double time, int count, bool animation, int frames, double amplitude,
+                    const std::string& frame) {
     cli::ModesCommandOptions o;
+    o.frame = frame;
     o.model_path = model;
     o.model_text = text;
     o.out_dir = out_dir;
@@ -152,7 +158,9 @@ void BindAnalysis(py::module_& m) {
     return AnalysisModesDict(r);
   }, py::arg("model"), py::arg("text") = "", py::arg("out_dir") = "", py::arg("at") = "statics",
         py::arg("time") = 0.0, py::arg("count") = 10, py::arg("animation") = true, py::arg("frames") = 24,
-        py::arg("amplitude") = 0.1, "`flexmb modes`: the modes as a dict (files in out_dir unless empty).");
+        py::arg("amplitude") = 0.1, py::arg("frame") = "",
+        "`flexmb modes`: the modes as a dict (files in out_dir unless empty); frame: lane-change files only, "
+        "\"rigid\" or \"elastic\" (empty: the file's).");
   m.def("linearize", [](const std::string& model, const std::string& text, const std::string& out_dir,
                         const std::vector<std::string>& inputs, const std::vector<std::string>& outputs,
                         const std::string& at, double time) {

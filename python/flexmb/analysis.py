@@ -85,7 +85,8 @@ class ModesResult:
     "oscillatory", "overdamped"...), shapes and shapes_imag (nv x modes: one
     column per mode in the velocity coordinates, largest entry 1),
     coordinates (the names of the rows), dof, rigid_modes, time [s] of the
-    state; summary: summary.json as a dict; warnings."""
+    state; names (lane-change files: each mode's dominant motion, else
+    empty); summary: summary.json as a dict; warnings."""
 
     def __init__(self, r):
         self.model_name = r["model_name"]
@@ -97,6 +98,7 @@ class ModesResult:
         self.shapes = r["shapes"]
         self.shapes_imag = r["shapes_imag"]
         self.coordinates = list(r["coordinates"])
+        self.names = list(r["names"])
         self.dof = r["dof"]
         self.rigid_modes = r["rigid_modes"]
         self.time = r["time"]
@@ -146,16 +148,20 @@ def statics(model, out_dir=None, time=0.0, animation=False):
     return StaticsResult(r)
 
 
-def modes(model, at="statics", count=10, time=0.0, out_dir=None, animation=True, frames=24, amplitude=0.1):
+def modes(model, at="statics", count=10, time=0.0, out_dir=None, animation=True, frames=24, amplitude=0.1,
+          frame=None):
     """`flexmb modes`: the modes of `model` (path or dict) linearized about
     the state `at`: "statics" (the static equilibrium at `time`), "initial"
     (the consistent initial state at `time`) or "time" (a dynamic run to
     `time` [s]); all rigid-body modes and the `count` lowest vibration modes.
     out_dir: also write modes.csv, modes.json, summary.json and (animation)
-    mode_<k>/anim.pvd there as the command does."""
+    mode_<k>/anim.pvd there as the command does. A lane-change file
+    (examples/truck_lane_change/truck.yaml): the truck standing on its
+    tires, frame "rigid" or "elastic" (None: the file's), and `names` the
+    modes' dominant motions ("bounce", "pitch", "front axle hop", ...)."""
     name, text = _model_args(model)
     r = _core.modes(name, text, _out(out_dir), at, float(time), int(count), animation, int(frames),
-                    float(amplitude))
+                    float(amplitude), frame or "")
     _raise_if_failed(r)
     return ModesResult(r)
 

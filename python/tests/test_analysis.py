@@ -206,6 +206,25 @@ def test_linearize_driver_input_closed_form():
     assert ss.C[z, :2] @ x + ss.C[z, 2] == pytest.approx(1.0, rel=1e-6)
 
 
+def test_truck_modes_named_as_the_cli(cli, tmp_path):
+    # the standing truck of a lane-change file, rigid frame: the names and
+    # frequencies of flexmb.modes equal the CLI's modes.csv
+    import os
+    path = os.path.join(os.environ["FLEXMB_SOURCE_DIR"], "examples", "truck_lane_change", "truck.yaml")
+    subprocess.run([cli, "modes", path, "--frame", "rigid", "--out", str(tmp_path), "--no-animation", "-n", "20",
+                    "--quiet"], check=True)
+    rows = (tmp_path / "modes.csv").read_text().splitlines()
+    assert rows[0].endswith(",name,energy_share")
+    r = flexmb.modes(path, frame="rigid", count=20, animation=False)
+    assert len(r.names) == len(rows) - 1
+    for k, row in enumerate(rows[1:]):
+        cells = row.split(",")
+        assert r.names[k] == cells[7]
+        assert r.frequencies_hz[k] == pytest.approx(float(cells[2]), rel=1e-13)
+    assert "bounce" in r.names and "front axle hop" in r.names
+    assert flexmb.modes(compound_pendulum(), count=1).names == []
+
+
 def test_linearize_at_time_equal_cli(cli, tmp_path):
     # --at time: the state after a dynamic run to 0.05 s (the quarter car
     # settles from its unloaded springs), the same through both
