@@ -95,6 +95,10 @@ py::dict AnalysisModesDict(const cli::ModesResult& r) {
   d["eigenvalues"] = py::array_t<std::complex<double>>(s.size(), s.data());
   d["shapes"] = AnalysisMatrix(shapes);
   d["shapes_imag"] = AnalysisMatrix(shapes_imag);
+  // lane-change (truck) files: the modes' names by their dominant motion
+  std::vector<std::string> names;
+  for (const cli::TruckModeName& t : r.names) names.push_back(t.name);
+  d["names"] = names;
   return d;
 }
 
@@ -150,8 +154,9 @@ void BindAnalysis(py::module_& m) {
         "text (model then names it).");
   m.def("modes", [](const std::string& model, const std::string& text, const std::string& out_dir,
                     const std::string& at, double time, int count, bool animation, int frames, double amplitude,
-                    const py::object& simulation) {
+                    const std::string& frame, const py::object& simulation) {
     cli::ModesCommandOptions o;
+    o.frame = frame;
     cli::AnalysisSource source;
     if (AnalysisSourceOf(simulation, source)) o.source = &source;
     o.model_path = model;
@@ -171,9 +176,10 @@ void BindAnalysis(py::module_& m) {
     return AnalysisModesDict(r);
   }, py::arg("model"), py::arg("text") = "", py::arg("out_dir") = "", py::arg("at") = "statics",
         py::arg("time") = 0.0, py::arg("count") = 10, py::arg("animation") = true, py::arg("frames") = 24,
-        py::arg("amplitude") = 0.1, py::arg("simulation") = py::none(),
-        "`flexmb modes`: the modes as a dict (files in out_dir unless empty); simulation: a Simulation linearized "
-        "about its current state (at 'current').");
+        py::arg("amplitude") = 0.1, py::arg("frame") = "", py::arg("simulation") = py::none(),
+        "`flexmb modes`: the modes as a dict (files in out_dir unless empty); frame: lane-change files only, "
+        "\"rigid\" or \"elastic\" (empty: the file's); simulation: a Simulation linearized about its current "
+        "state (at 'current').");
   m.def("linearize", [](const std::string& model, const std::string& text, const std::string& out_dir,
                         const std::vector<std::string>& inputs, const std::vector<std::string>& outputs,
                         const std::string& at, double time, const py::object& simulation) {

@@ -123,6 +123,10 @@ int main(int argc, char** argv) {
   sys_modes->add_option("--time", sys_modes_opt.time,
                         "with --at time: simulate to this time [s]; otherwise: time of the loads (default 0)");
   sys_modes->add_option("--count,-n", sys_modes_opt.count, "vibration modes reported, lowest first (default 10)");
+  sys_modes->add_option("--frame", sys_modes_opt.frame,
+                        "lane-change (truck) files only: frame model, rigid or elastic (default: the file's); the "
+                        "truck stands on its tires")
+      ->check(CLI::IsMember({"rigid", "elastic"}));
   bool sys_modes_no_anim = false;
   sys_modes->add_flag("--no-animation", sys_modes_no_anim, "no mode_<k>/anim.pvd animations");
   sys_modes->add_option("--frames", sys_modes_opt.frames, "animation frames per period (default 24)");

@@ -98,7 +98,8 @@ class ModesResult:
     "oscillatory", "overdamped"...), shapes and shapes_imag (nv x modes: one
     column per mode in the velocity coordinates, largest entry 1),
     coordinates (the names of the rows), dof, rigid_modes, time [s] of the
-    state; summary: summary.json as a dict; warnings."""
+    state; names (lane-change files: each mode's dominant motion, else
+    empty); summary: summary.json as a dict; warnings."""
 
     def __init__(self, r):
         self.model_name = r["model_name"]
@@ -110,6 +111,7 @@ class ModesResult:
         self.shapes = r["shapes"]
         self.shapes_imag = r["shapes_imag"]
         self.coordinates = list(r["coordinates"])
+        self.names = list(r["names"])
         self.dof = r["dof"]
         self.rigid_modes = r["rigid_modes"]
         self.time = r["time"]
@@ -127,7 +129,8 @@ class StateSpace:
     """The state-space model x' = A x + B u, y = C x + D u of `linearize()`.
 
     A, B, C, D: numpy arrays; states (names: "dx COORDINATE" increments,
-    then "v COORDINATE" rates), inputs ("FORCE.fx", ..., "SPRING.tension"),
+    then "v COORDINATE" rates, then "driver NAME.position" and "driver NAME.velocity" of driver inputs),
+    inputs ("FORCE.fx", ..., "SPRING.tension", "DRIVER.acceleration"),
     outputs ("SENSOR.COMPONENT", deviations from output_values, their values
     at the state); time [s] of the state; summary; warnings."""
 
@@ -158,7 +161,8 @@ def statics(model, out_dir=None, time=0.0, animation=False):
     return StaticsResult(r)
 
 
-def modes(model, at=None, count=10, time=0.0, out_dir=None, animation=True, frames=24, amplitude=0.1):
+def modes(model, at=None, count=10, time=0.0, out_dir=None, animation=True, frames=24, amplitude=0.1,
+          frame=None):
     """`flexmb modes`: the modes of `model` (path, dict or Simulation)
     linearized about the state `at`: "statics" (the default for a path or
     dict: the static equilibrium at `time`), "initial" (the consistent
@@ -166,10 +170,14 @@ def modes(model, at=None, count=10, time=0.0, out_dir=None, animation=True, fram
     Simulation, "current" (its state now, e.g. after run() or step(), with
     the inputs as set); all rigid-body modes and the `count` lowest
     vibration modes. out_dir: also write modes.csv, modes.json, summary.json
-    and (animation) mode_<k>/anim.pvd there as the command does."""
+    and (animation) mode_<k>/anim.pvd there as the command does. A
+    lane-change file (examples/truck_lane_change/truck.yaml): the truck
+    standing on its tires, frame "rigid" or "elastic" (None: the file's),
+    and `names` the modes' dominant motions ("bounce", "pitch", "front axle
+    hop", ...)."""
     name, text, at, sim = _source_args(model, at)
     r = _core.modes(name, text, _out(out_dir), at, float(time), int(count), animation, int(frames),
-                    float(amplitude), sim)
+                    float(amplitude), frame or "", sim)
     _raise_if_failed(r)
     return ModesResult(r)
 
@@ -180,7 +188,9 @@ def linearize(model, inputs, outputs=(), at=None, time=0.0, out_dir=None):
     Simulation, "current", as in modes());
     inputs: force element names (point_force: 3 world force components [N],
     point_torque: 3 moments [N m], spring_damper: its extra tension [N],
-    joint_motor: its torque [N m] or force [N]);
+    joint_motor: its torque [N m] or force [N]) and motion drivers (their
+    acceleration [m/s^2 or rad/s^2]; their position and velocity are then
+    appended to the states, docs/cli.md "Drivers as inputs");
     outputs: sensor names (empty: all sensors). out_dir: also write A.mtx,
     B.mtx, C.mtx, D.mtx, statespace.json and summary.json there."""
     if isinstance(inputs, str):

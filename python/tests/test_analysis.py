@@ -171,6 +171,60 @@ def test_linearize_motor_input_static_gain():
     assert gain[1, 0] == pytest.approx(0.0, abs=1e-9)  # no rate at rest
 
 
+def base_excited(m=10.0, k=4000.0, c=40.0):
+    """A mass m [kg] on a guide linked by a spring-damper (k [N/m], c
+    [N s/m]) to a base on a driven guide (driver `base_drive`, held at 0);
+    no gravity. As in tests/validation/statespace_driver_test.cc."""
+    return {
+        "name": "base_excited",
+        "gravity": [0, 0, 0],
+        "ground": {"markers": [{"name": "o"}]},
+        "bodies": [{"name": "base", "mass": 5, "inertia": [1, 1, 1], "position": [0, 0, 0], "markers": [{"name": "c"}]},
+                   {"name": "mass", "mass": m, "inertia": [1, 1, 1], "position": [0, 0, 1], "markers": [{"name": "c"}]}],
+        "joints": [{"name": "base_guide", "type": "prismatic", "i": "ground.o", "j": "base.c"},
+                   {"name": "mass_guide", "type": "prismatic", "i": "ground.o", "j": "mass.c"}],
+        "drivers": [{"name": "base_drive", "joint": "base_guide", "function": 0.0}],
+        "forces": [{"name": "link", "type": "spring_damper", "i": "base.c", "j": "mass.c", "stiffness": k, "damping": c}],
+        "sensors": [{"name": "mass", "type": "body_position", "body": "mass"}],
+    }
+
+
+def test_linearize_driver_input_closed_form():
+    # a motion driver as input: its acceleration; its position and velocity
+    # are appended to the state. Closed form: z'' = -k/m (z - b) - c/m (z' - b'),
+    # b'' = u; and the static gain of a base displacement on the mass is 1
+    m, k, c = 10.0, 4000.0, 40.0
+    ss = flexmb.linearize(base_excited(m, k, c), inputs=["base_drive"], outputs=["mass"])
+    assert ss.inputs == ["base_drive.acceleration"]
+    assert ss.states[2:] == ["driver base_drive.position", "driver base_drive.velocity"]
+    a_ref = np.array([[0, 1, 0, 0], [-k / m, -c / m, k / m, c / m], [0, 0, 0, 1], [0, 0, 0, 0]])
+    assert np.allclose(ss.A, a_ref, rtol=0, atol=1e-9 * k / m)
+    assert np.allclose(ss.B[:, 0], [0, 0, 0, 1], rtol=0, atol=1e-12)
+    # with the base held at df: the mass follows, z = df (output mass.z)
+    z = ss.outputs.index("mass.z")
+    x = np.linalg.solve(ss.A[:2, :2], -ss.A[:2, 2])  # steady state at df = 1, df' = 0
+    assert ss.C[z, :2] @ x + ss.C[z, 2] == pytest.approx(1.0, rel=1e-6)
+
+
+def test_truck_modes_named_as_the_cli(cli, tmp_path):
+    # the standing truck of a lane-change file, rigid frame: the names and
+    # frequencies of flexmb.modes equal the CLI's modes.csv
+    import os
+    path = os.path.join(os.environ["FLEXMB_SOURCE_DIR"], "examples", "truck_lane_change", "truck.yaml")
+    subprocess.run([cli, "modes", path, "--frame", "rigid", "--out", str(tmp_path), "--no-animation", "-n", "20",
+                    "--quiet"], check=True)
+    rows = (tmp_path / "modes.csv").read_text().splitlines()
+    assert rows[0].endswith(",name,energy_share")
+    r = flexmb.modes(path, frame="rigid", count=20, animation=False)
+    assert len(r.names) == len(rows) - 1
+    for k, row in enumerate(rows[1:]):
+        cells = row.split(",")
+        assert r.names[k] == cells[7]
+        assert r.frequencies_hz[k] == pytest.approx(float(cells[2]), rel=1e-13)
+    assert "bounce" in r.names and "front axle hop" in r.names
+    assert flexmb.modes(compound_pendulum(), count=1).names == []
+
+
 def test_linearize_at_time_equal_cli(cli, tmp_path):
     # --at time: the state after a dynamic run to 0.05 s (the quarter car
     # settles from its unloaded springs), the same through both

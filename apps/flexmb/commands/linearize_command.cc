@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "apps/flexmb/commands/analysis_support.h"
+#include "apps/flexmb/commands/linearize_drivers.h"
 #include "flexmb/common/json_text.h"
 #include "flexmb/forces/joint_motor.h"
 #include "flexmb/solver/assembler.h"
@@ -36,7 +37,7 @@ MatX LinearizeInputs(const Model& m, const Workspace& ws, const std::vector<std:
     const ForceElement* f = nullptr;
     for (const auto& e : m.forces)
       if (e->name() == name) f = e.get();
-    if (!f) throw InputError("--inputs: no force element named '" + name + "'");
+    if (!f) throw InputError("--inputs: no force element named '" + name + "' (nor a motion driver)");
     const std::string type = f->type();
     if (type == "point_force" || type == "point_torque") {
       const int off = type == "point_force" ? 0 : 3;
@@ -132,7 +133,7 @@ LinearizeResult LinearizeAnalysis(const LinearizeCommandOptions& opt) {
   }
   const std::filesystem::path dir(opt.out_dir);
   try {
-    if (opt.inputs.empty()) throw InputError("--inputs: name at least one force element");
+    if (opt.inputs.empty()) throw InputError("--inputs: name at least one force element or driver");
     VecX a0;
     const Model& m =
         AnalysisLinearizationModel(opt.model_path, opt.model_text, opt.at, opt.time, opt.source, am, a0, warnings);
@@ -142,9 +143,50 @@ LinearizeResult LinearizeAnalysis(const LinearizeCommandOptions& opt) {
     std::vector<int> indep;
     ReduceWithBasis(L, PartitionedNullSpace(L.B, std::max(1e-12, m.solver.redundancy_tol), indep));
     const int n = static_cast<int>(L.N.cols());
-    std::vector<std::string> input_names;
+    // inputs: force elements (generalized forces Qu) and drivers (their
+    // accelerations, with their values and rates appended to the state)
+    std::vector<std::string> force_names, driver_names, input_names;
+    std::vector<std::pair<bool, int>> order;  // (driver, index among its kind) per named input
+    for (const std::string& name : opt.inputs) {
+      const bool drv = IsLinearizeDriver(m, name);
+      order.emplace_back(drv, static_cast<int>(drv ? driver_names.size() : force_names.size()));
+      (drv ? driver_names : force_names).push_back(name);
+    }
     EvaluateMarkers(m, am.state, am.ws);
-    const MatX Qu = LinearizeInputs(m, am.ws, opt.inputs, input_names);
+    std::vector<std::string> force_labels;
+    std::vector<int> force_first;  // first input column of each force element
+    MatX Qf(m.nv, 0);
+    {
+      std::vector<MatX> parts;
+      for (const std::string& name : force_names) {
+        force_first.push_back(static_cast<int>(force_labels.size()));
+        parts.push_back(LinearizeInputs(m, am.ws, {name}, force_labels));
+      }
+      force_first.push_back(static_cast<int>(force_labels.size()));
+      Qf.resize(m.nv, force_first.back());
+      for (size_t i = 0; i < parts.size(); ++i) Qf.middleCols(force_first[i], parts[i].cols()) = parts[i];
+    }
+    const LinearizeDriverSet drivers = LinearizeDriverInputs(m, am.ws, L, indep, driver_names);
+    const int nd = static_cast<int>(driver_names.size());
+    // Qu (nv x nu) in the named order; driver columns are zero here (their
+    // accelerations enter through -M P), drv_col[d] their input column
+    std::vector<int> drv_col(static_cast<size_t>(nd));
+    MatX Qu(m.nv, static_cast<int>(force_labels.size()) + nd);
+    {
+      int c = 0;
+      for (const auto& o : order) {
+        if (o.first) {
+          Qu.col(c).setZero();
+          drv_col[static_cast<size_t>(o.second)] = c++;
+          input_names.push_back(driver_names[static_cast<size_t>(o.second)] + ".acceleration");
+        } else {
+          const int a = force_first[static_cast<size_t>(o.second)], b = force_first[static_cast<size_t>(o.second) + 1];
+          Qu.middleCols(c, b - a) = Qf.middleCols(a, b - a);
+          for (int i = a; i < b; ++i) input_names.push_back(force_labels[static_cast<size_t>(i)]);
+          c += b - a;
+        }
+      }
+    }
     // outputs
     std::vector<int> sensors;
     std::vector<std::string> output_names;
@@ -161,40 +203,57 @@ LinearizeResult LinearizeAnalysis(const LinearizeCommandOptions& opt) {
       for (const std::string& c : m.sensors[i]->Components()) output_names.push_back(m.sensors[i]->name() + "." + c);
     const int p = static_cast<int>(output_names.size()), nu = static_cast<int>(Qu.cols());
     if (p == 0) throw InputError("--outputs: the model has no sensors to output");
-    // A, B: Mr z'' + Cr z' + Kr z = N^T Qu u
+    // A, B: Mr z'' + Cr z' + Kr z = N^T (Qu u - K P df - C P df' - M P u_d),
+    // the state (z, z', df, df') (linearize_drivers.h)
     const Eigen::LLT<MatX> llt(L.Mr);
     const MatX MiK = llt.solve(L.Kr), MiC = llt.solve(L.Cr), MiQ = llt.solve(L.N.transpose() * Qu);
-    MatX A = MatX::Zero(2 * n, 2 * n), B = MatX::Zero(2 * n, nu);
-    A.topRightCorner(n, n).setIdentity();
-    A.bottomLeftCorner(n, n) = -MiK;
-    A.bottomRightCorner(n, n) = -MiC;
-    B.bottomRows(n) = MiQ;
+    const int ns = 2 * n + 2 * nd;
+    MatX A = MatX::Zero(ns, ns), B = MatX::Zero(ns, nu);
+    A.block(0, n, n, n).setIdentity();
+    A.block(n, 0, n, n) = -MiK;
+    A.block(n, n, n, n) = -MiC;
+    B.middleRows(n, n) = MiQ;
+    if (nd > 0) {
+      const MatX& P = drivers.P;
+      A.block(n, 2 * n, n, nd) = -llt.solve(L.N.transpose() * L.K * P);
+      A.block(n, 2 * n + nd, n, nd) = -llt.solve(L.N.transpose() * L.C * P);
+      A.block(2 * n, 2 * n + nd, nd, nd).setIdentity();
+      const MatX MiMP = llt.solve(L.N.transpose() * L.M * P);
+      for (int d = 0; d < nd; ++d) {
+        B.block(n, drv_col[static_cast<size_t>(d)], n, 1) = -MiMP.col(d);
+        B(2 * n + nd + d, drv_col[static_cast<size_t>(d)]) = 1.0;
+      }
+    }
     // C, D by central differences of the sensors along the states and inputs
-    MatX C(p, 2 * n), D(p, nu);
+    MatX C(p, ns), D(p, nu);
     State st = am.state;
     const State s0 = am.state;
     const double eps = 1e-6;
     VecX dx(m.nv);
-    for (int k = 0; k < 2 * n + nu; ++k) {
+    const MatX& P = drivers.P;
+    for (int k = 0; k < ns + nu; ++k) {
       VecX y[2];
       for (int side = 0; side < 2; ++side) {
         const double h = side ? -eps : eps;
-        VecX x = VecX::Zero(2 * n), u = VecX::Zero(nu);
-        if (k < 2 * n) x(k) = h; else u(k - 2 * n) = h;
-        dx = L.N * x.head(n);
+        VecX x = VecX::Zero(ns), u = VecX::Zero(nu);
+        if (k < ns) x(k) = h; else u(k - ns) = h;
+        dx = L.N * x.head(n) + P * x.segment(2 * n, nd);
         RetractAll(m, s0.q, dx, st.q);
-        st.v = s0.v + L.N * x.tail(n);
-        const VecX a = a0 + L.N * (A.bottomRows(n) * x + B.bottomRows(n) * u);
+        st.v = s0.v + L.N * x.segment(n, n) + P * x.tail(nd);
+        const VecX a = a0 + L.N * (A.middleRows(n, n) * x + B.middleRows(n, n) * u) +
+                       P * (A.bottomRows(nd) * x + B.bottomRows(nd) * u);
         y[side] = LinearizeSensors(m, st, am.ws, a, sensors, p);
       }
       const VecX col = (y[0] - y[1]) / (2.0 * eps);
-      if (k < 2 * n) C.col(k) = col; else D.col(k - 2 * n) = col;
+      if (k < ns) C.col(k) = col; else D.col(k - ns) = col;
     }
     if (!A.allFinite() || !B.allFinite() || !C.allFinite() || !D.allFinite())
       throw NumericalError("linearize: the state-space matrices are not finite");
     std::vector<std::string> state_names;
     for (int k = 0; k < n; ++k) state_names.push_back("dx " + VelocityCoordinateName(m, indep[k]));
     for (int k = 0; k < n; ++k) state_names.push_back("v " + VelocityCoordinateName(m, indep[k]));
+    for (const std::string& d : driver_names) state_names.push_back("driver " + d + ".position");
+    for (const std::string& d : driver_names) state_names.push_back("driver " + d + ".velocity");
     const VecX y0 = LinearizeSensors(m, s0, am.ws, a0, sensors, p);
     std::string js = "{\n  \"model\": " + io::JsonString(opt.model_path) + ",\n  \"at\": " + io::JsonString(opt.at) +
                      ",\n  \"time\": " + io::JsonNumber(s0.t) + ",\n  \"states\": " + LinearizeNames(state_names) +
@@ -211,7 +270,7 @@ LinearizeResult LinearizeAnalysis(const LinearizeCommandOptions& opt) {
     out.A = A, out.B = B, out.C = C, out.D = D;
     out.states = state_names, out.inputs = input_names, out.outputs = output_names;
     out.output_values = y0, out.time = s0.t;
-    n_states = 2 * n, n_inputs = nu, n_outputs = p;
+    n_states = ns, n_inputs = nu, n_outputs = p;
     if (opt.info)
       std::fprintf(opt.info, "state-space model of '%s': %d states, %d inputs, %d outputs; results in %s\n",
                    m.name.c_str(), n_states, n_inputs, n_outputs, opt.out_dir.c_str());

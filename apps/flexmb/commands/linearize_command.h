@@ -10,7 +10,9 @@
 /// increments about body axes) and their rates. Inputs u are extra loads of
 /// force elements: a point_force gives 3 inputs (world force components
 /// [N]), a point_torque 3 (world moment components [N m]), a spring_damper
-/// 1 (extra tension [N]), a joint_motor 1 (its torque [N m] or force [N]).
+/// 1 (extra tension [N]), a joint_motor 1 (its torque [N m] or force [N]),
+/// a motion driver 1 (its acceleration [rad/s^2 or m/s^2]; its value and
+/// rate are then appended to the state, linearize_drivers.h).
 /// Outputs y are the sensors' components, as deviations from their values
 /// at the state. Writes DIR/A.mtx, B.mtx,
 /// C.mtx, D.mtx (Matrix Market, dense "array" format), DIR/statespace.json
@@ -32,7 +34,7 @@ struct LinearizeCommandOptions {
   std::string out_dir;               ///< output directory (created if missing; empty: no files)
   std::string at = "statics";        ///< state: "statics", "initial", "time" or, with `source`, "current"
   double time = 0.0;                 ///< "statics"/"initial": time of the loads and drivers; "time": time simulated to [s]
-  std::vector<std::string> inputs;   ///< force element names
+  std::vector<std::string> inputs;   ///< force element and motion driver names
   std::vector<std::string> outputs;  ///< sensor names (empty: all sensors)
   const AnalysisSource* source = nullptr;  ///< a model in simulation (at "current"), else the model file
   std::FILE* info = nullptr;         ///< a summary line (nullptr: silent)
@@ -42,8 +44,10 @@ struct LinearizeCommandOptions {
 /// The state-space model of LinearizeAnalysis, as written to the files.
 struct LinearizeResult : AnalysisOutcome {
   MatX A, B, C, D;                   ///< x' = A x + B u, y = C x + D u
-  std::vector<std::string> states;   ///< names of x ("dx COORDINATE", then "v COORDINATE")
-  std::vector<std::string> inputs;   ///< names of u ("FORCE.fx", ..., "SPRING.tension")
+  /// names of x ("dx COORDINATE", then "v COORDINATE", then "driver
+  /// NAME.position" and "driver NAME.velocity" of the driver inputs)
+  std::vector<std::string> states;
+  std::vector<std::string> inputs;   ///< names of u ("FORCE.fx", ..., "SPRING.tension", "DRIVER.acceleration")
   std::vector<std::string> outputs;  ///< names of y ("SENSOR.COMPONENT")
   VecX output_values;                ///< the outputs' values at the state (y is the deviation from them)
   double time = 0.0;                 ///< time of the state [s]

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "apps/flexmb/commands/analysis_support.h"
+#include "apps/flexmb/commands/lane_change.h"
 #include "flexmb/common/json_text.h"
 #include "flexmb/model_file/model_file.h"
 #include "flexmb/results/vtk_animation.h"
@@ -67,8 +68,16 @@ ModesResult ModesAnalysis(const ModesCommandOptions& opt) {
     if (opt.frames < 2) throw InputError("--frames must be at least 2");
     if (!(opt.amplitude > 0.0) || !std::isfinite(opt.amplitude)) throw InputError("--amplitude must be positive");
     VecX a;
-    const Model& m =
-        AnalysisLinearizationModel(opt.model_path, opt.model_text, opt.at, opt.time, opt.source, am, a, warnings);
+    // a lane-change file: the truck standing on its tires
+    const bool truck = !opt.source && opt.model_text.empty() && vehicle::IsLaneChangeFile(opt.model_path);
+    StandingTruck standing;
+    if (truck)
+      StandingTruckState(opt.model_path, opt.frame, opt.at, am, a, warnings, standing);
+    else if (!opt.frame.empty())
+      throw InputError("--frame is for lane-change (truck) files only");
+    const Model& m = truck ? *am.model
+                           : AnalysisLinearizationModel(opt.model_path, opt.model_text, opt.at, opt.time, opt.source,
+                                                        am, a, warnings);
     used = &m;
     if (opt.err)
       for (const std::string& w : warnings) std::fprintf(opt.err, "warning: %s\n", w.c_str());
@@ -83,8 +92,14 @@ ModesResult ModesAnalysis(const ModesCommandOptions& opt) {
         if (md.kind != ModeKind::kRigid) ++reported;
       }
     }
+    for (const SystemMode* md : modes) out.modes.push_back(*md);
+    if (truck) {
+      out.names = NameTruckModes(m, standing.handles, am.state, sys, out.modes, standing.data.elastic_frame.get());
+      if (standing.data.elastic_frame) out.frame_free_modes = FrameFreeModes(*standing.data.elastic_frame);
+    }
     // table and JSON
-    std::string csv = "mode,kind,frequency_hz,damped_frequency_hz,damping_ratio,eigenvalue_real,eigenvalue_imag\n";
+    std::string csv = "mode,kind,frequency_hz,damped_frequency_hz,damping_ratio,eigenvalue_real,eigenvalue_imag";
+    csv += truck ? ",name,energy_share\n" : "\n";
     std::string js = "{\n  \"model\": " + io::JsonString(opt.model_path) + ",\n  \"at\": " + io::JsonString(opt.at) +
                      ",\n  \"time\": " + io::JsonNumber(am.state.t) + ",\n  \"dof\": " + std::to_string(dof) +
                      ",\n  \"rigid_modes\": " + std::to_string(rigid) + ",\n  \"coordinates\": [";
@@ -96,15 +111,26 @@ ModesResult ModesAnalysis(const ModesCommandOptions& opt) {
                    m.name.c_str(), dof, rigid, "mode", "kind", "frequency [Hz]", "damped [Hz]", "damping");
     for (size_t k = 0; k < modes.size(); ++k) {
       const SystemMode& md = *modes[k];
-      std::snprintf(line, sizeof line, "%zu,%s,%.15g,%.15g,%.15g,%.15g,%.15g\n", k + 1, ModeKindName(md.kind),
+      std::snprintf(line, sizeof line, "%zu,%s,%.15g,%.15g,%.15g,%.15g,%.15g", k + 1, ModeKindName(md.kind),
                     md.frequency_hz, md.damped_frequency_hz, md.damping_ratio, md.eigenvalue.real(),
                     md.eigenvalue.imag());
       csv += line;
+      const std::string name = truck ? out.names[k].name : "";
+      if (truck) {
+        std::snprintf(line, sizeof line, ",%s,%.6g", name.c_str(), out.names[k].share);
+        csv += line;
+      }
+      csv += "\n";
       if (opt.info)
-        std::fprintf(opt.info, "%5zu  %-11s %16.9g %16.9g %12.6g\n", k + 1, ModeKindName(md.kind), md.frequency_hz,
-                     md.damped_frequency_hz, md.damping_ratio);
+        std::fprintf(opt.info, "%5zu  %-11s %16.9g %16.9g %12.6g%s%s\n", k + 1, ModeKindName(md.kind), md.frequency_hz,
+                     md.damped_frequency_hz, md.damping_ratio, truck ? "  " : "", name.c_str());
       js += std::string(k ? ",\n" : "") + "    {\"mode\": " + std::to_string(k + 1) +
             ", \"kind\": " + io::JsonString(ModeKindName(md.kind)) +
+            (truck ? ", \"name\": " + io::JsonString(out.names[k].name) +
+                         ", \"energy_share\": " + io::JsonNumber(out.names[k].share) +
+                         ", \"frame_strain_share\": " + io::JsonNumber(out.names[k].frame_strain_share) +
+                         ", \"frame_mode\": " + std::to_string(out.names[k].frame_mode)
+                   : std::string()) +
             ", \"frequency_hz\": " + io::JsonNumber(md.frequency_hz) +
             ", \"damped_frequency_hz\": " + io::JsonNumber(md.damped_frequency_hz) +
             ", \"damping_ratio\": " + io::JsonNumber(md.damping_ratio) +
@@ -112,10 +138,17 @@ ModesResult ModesAnalysis(const ModesCommandOptions& opt) {
             io::JsonNumber(md.eigenvalue.imag()) + "], \"shape\": " + ModesArray(md.shape) +
             ", \"shape_imag\": " + ModesArray(md.shape_imag) + "}";
     }
-    js += "\n  ]\n}\n";
+    js += "\n  ]";
+    if (!out.frame_free_modes.empty()) {
+      js += ",\n  \"frame_free_modes\": [";
+      for (size_t j = 0; j < out.frame_free_modes.size(); ++j)
+        js += std::string(j ? ", " : "") + "{\"frequency_hz\": " + io::JsonNumber(out.frame_free_modes[j].frequency_hz) +
+              ", \"kind\": " + io::JsonString(out.frame_free_modes[j].kind) + "}";
+      js += "]";
+    }
+    js += "\n}\n";
     out.model_name = m.name, out.time = am.state.t, out.dof = dof, out.rigid = rigid;
     for (int c = 0; c < m.nv; ++c) out.coordinates.push_back(VelocityCoordinateName(m, c));
-    for (const SystemMode* md : modes) out.modes.push_back(*md);
     if (!opt.out_dir.empty()) {
       WriteAnalysisFile((dir / "modes.csv").string(), csv);
       WriteAnalysisFile((dir / "modes.json").string(), js);
@@ -123,6 +156,13 @@ ModesResult ModesAnalysis(const ModesCommandOptions& opt) {
         for (size_t k = 0; k < modes.size(); ++k)
           if (modes[k]->kind != ModeKind::kRigid)
             ModesAnimation(m, am.state, *modes[k], opt, dir / ("mode_" + std::to_string(k + 1)));
+    }
+    if (opt.info && !out.frame_free_modes.empty()) {
+      std::fprintf(opt.info, "the elastic frame's free-free modes [Hz]:");
+      for (const FrameFreeMode& f : out.frame_free_modes)
+        if (f.frequency_hz < 2.0 * out.frame_free_modes.front().frequency_hz)
+          std::fprintf(opt.info, " %.3f (%s)", f.frequency_hz, f.kind.c_str());
+      std::fprintf(opt.info, "\n");
     }
     if (opt.info) std::fprintf(opt.info, "results in %s\n", opt.out_dir.c_str());
   } catch (const InputError& e) {

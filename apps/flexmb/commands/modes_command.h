@@ -7,13 +7,15 @@
 /// ratios, eigenvalues, kinds and shapes in the velocity coordinates, with
 /// the coordinates' names), DIR/summary.json and, unless switched off, one
 /// ParaView animation per vibration mode, DIR/mode_<k>/anim.pvd, over one
-/// period.
+/// period. A lane-change file (examples/truck_lane_change/truck.yaml) gives
+/// the modes of the truck standing on its tires, named (truck_modes.h).
 
 #include <cstdio>
 #include <string>
 #include <vector>
 
 #include "apps/flexmb/commands/analysis_support.h"
+#include "apps/flexmb/commands/truck_modes.h"
 #include "flexmb/solver/system_modes.h"
 
 namespace flexmb::cli {
@@ -30,6 +32,9 @@ struct ModesCommandOptions {
   int frames = 24;              ///< animation frames per period
   double amplitude = 0.1;       ///< animation amplitude: largest entry of the shape [m or rad]
   const AnalysisSource* source = nullptr;  ///< a model in simulation (at "current"), else the model file
+  /// Lane-change (truck) files only: the frame model, "rigid" or "elastic"
+  /// (empty: the file's); the truck stands on its tires (truck_modes.h).
+  std::string frame;
   std::FILE* info = nullptr;    ///< the frequency table (nullptr: silent)
   std::FILE* err = nullptr;     ///< warnings and errors (nullptr: silent)
 };
@@ -42,6 +47,13 @@ struct ModesResult : AnalysisOutcome {
   int rigid = 0;                         ///< rigid-body (zero) modes among them
   std::vector<std::string> coordinates;  ///< names of the velocity coordinates (rows of the shapes)
   std::vector<SystemMode> modes;         ///< the reported modes: rigid ones, then `count` vibration modes
+  /// Lane-change (truck) files: the name of each reported mode by its
+  /// dominant motion (NameTruckModes); empty for other models.
+  std::vector<TruckModeName> names;
+  /// Lane-change files with the elastic frame: the frame's free-free
+  /// flexible modes (FrameFreeModes), for comparison with the modes in the
+  /// vehicle; empty otherwise.
+  std::vector<FrameFreeMode> frame_free_modes;
 };
 
 /// The modal analysis of `flexmb modes`: the result, and the files of the
