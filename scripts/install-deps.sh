@@ -9,6 +9,8 @@ PACKAGES=(
   g++ cmake ninja-build make pkg-config
   # libFuzzer targets for the readers (make fuzz)
   clang
+  # LLVM linker: shorter links of the sanitizer and fuzz programs (CMakeLists.txt)
+  lld
   # numerics
   libeigen3-dev libsuitesparse-dev libopenblas-dev libspectra-dev
   # input / output / command line
