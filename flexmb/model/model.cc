@@ -99,6 +99,7 @@ void Model::Finalize() {
 int Model::FindBody(const std::string& n) const { return Find(body_index_, n); }
 int Model::FindMarker(const std::string& n) const { return Find(marker_index_, n); }
 int Model::FindJoint(const std::string& n) const { return Find(joint_index_, n); }
+int Model::FindForce(const std::string& n) const { return Find(force_index_, n); }
 
 State Model::InitialState() const {
   State s;

@@ -55,6 +55,7 @@ class Model {
   int FindBody(const std::string& name) const;
   int FindMarker(const std::string& name) const;
   int FindJoint(const std::string& name) const;
+  int FindForce(const std::string& name) const;
 
   /// Initial state from the bodies' initial coordinates (not yet assembled).
   State InitialState() const;

@@ -8,6 +8,8 @@
 //   point_force:              marker, force [3 numbers or functions of t], frame
 //   point_torque:             marker, torque [3 numbers or functions of t], frame
 //   joint_motor:              joint, coordinate, function, target, kp, kd
+//   plane_contact:            marker, point [3], normal [3], stiffness, damping, friction,
+//                             slip_velocity
 
 #include <array>
 #include <string>
@@ -16,6 +18,7 @@
 #include "flexmb/common/error.h"
 #include "flexmb/forces/bushing.h"
 #include "flexmb/forces/joint_motor.h"
+#include "flexmb/forces/plane_contact.h"
 #include "flexmb/forces/point_force.h"
 #include "flexmb/forces/point_torque.h"
 #include "flexmb/forces/rotational_spring_damper.h"
@@ -214,6 +217,24 @@ void AddPointTorque(const YAML::Node& node, const std::string& name, ParseContex
   AddPointLoad(node, name, true, ctx);
 }
 
+void AddPlaneContact(const YAML::Node& node, const std::string& name, ParseContext& ctx) {
+  ctx.CheckKeys(node, {"name", "type", "marker", "point", "normal", "stiffness", "damping", "friction",
+                       "slip_velocity"});
+  const int m = ctx.Marker(node, "marker");
+  PlaneContactLaw law;
+  law.point_W = ctx.Vector3(node, "point", Vec3::Zero());
+  law.normal_W = ctx.Vector3(node, "normal", Vec3::UnitZ());
+  if (!(law.normal_W.norm() > 0.0)) ctx.Fail(node["normal"], "'normal' must not be the zero vector");
+  if (!node["stiffness"]) ctx.Fail(node, "missing required key 'stiffness'");
+  law.stiffness = ctx.Double(node, "stiffness", 0.0);
+  if (!(law.stiffness > 0.0)) ctx.Fail(node["stiffness"], "'stiffness' must be > 0");
+  law.damping = NonNegative(node, "damping", ctx);
+  law.friction = NonNegative(node, "friction", ctx);
+  law.slip_velocity = ctx.Double(node, "slip_velocity", law.slip_velocity);
+  if (!(law.slip_velocity > 0.0)) ctx.Fail(node["slip_velocity"], "'slip_velocity' must be > 0");
+  ctx.Guard(node, [&] { ctx.model().AddForce(std::make_unique<PlaneContact>(name, law), m, -1); });
+}
+
 }  // namespace
 
 void RegisterForceTypes(ElementRegistry& r) {
@@ -223,6 +244,7 @@ void RegisterForceTypes(ElementRegistry& r) {
   r.Add(ElementKind::kForce, "point_force", AddPointForce);
   r.Add(ElementKind::kForce, "point_torque", AddPointTorque);
   r.Add(ElementKind::kForce, "joint_motor", AddJointMotor);
+  r.Add(ElementKind::kForce, "plane_contact", AddPlaneContact);
 }
 
 }  // namespace flexmb

@@ -32,6 +32,13 @@ int ParseContext::Joint(const YAML::Node& node, const char* key) const {
   return j;
 }
 
+int ParseContext::Force(const YAML::Node& node, const char* key) const {
+  const std::string name = String(node, key);
+  const int f = model_.FindForce(name);
+  if (f < 0) Fail(node[key], "there is no force element named '" + name + "' (in " + MarkerRefQuoted(key) + ")");
+  return f;
+}
+
 int ParseContext::Body(const YAML::Node& node, const char* key) const {
   const std::string name = String(node, key);
   const int b = model_.FindBody(name);

@@ -31,6 +31,8 @@ class ParseContext : public YamlContext {
   int Marker(const YAML::Node& node, const char* key) const;
   /// Index of the joint named at node[key].
   int Joint(const YAML::Node& node, const char* key) const;
+  /// Index of the force element named at node[key].
+  int Force(const YAML::Node& node, const char* key) const;
   /// Index of the body named at node[key].
   int Body(const YAML::Node& node, const char* key) const;
 

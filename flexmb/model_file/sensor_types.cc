@@ -15,6 +15,7 @@
 //   element_stress:      body (flexible), element (FE element id)
 //   node_stress:         body (flexible), node (FE node id)
 //   strain_energy:       body (flexible)
+//   force_element:       force
 
 #include "flexmb/common/error.h"
 
@@ -24,6 +25,7 @@
 #include "flexmb/bodies/flexible_body.h"
 #include "flexmb/sensors/body_sensors.h"
 #include "flexmb/sensors/flexible_sensors.h"
+#include "flexmb/sensors/force_sensors.h"
 #include "flexmb/sensors/joint_sensors.h"
 #include "flexmb/sensors/marker_sensors.h"
 
@@ -143,6 +145,13 @@ void ParseJointReactionEntry(const YAML::Node& node, const std::string& name, Pa
   AddSensorTo(node, ctx, std::move(sensor));
 }
 
+void ParseForceElementEntry(const YAML::Node& node, const std::string& name, ParseContext& ctx) {
+  std::unique_ptr<Sensor> sensor;
+  ctx.CheckKeys(node, {"name", "type", "force"});
+  sensor = std::make_unique<ForceElementSensor>(name, ctx.Force(node, "force"));
+  AddSensorTo(node, ctx, std::move(sensor));
+}
+
 void ParseBodyEnergyEntry(const YAML::Node& node, const std::string& name, ParseContext& ctx) {
   std::unique_ptr<Sensor> sensor;
   ctx.CheckKeys(node, {"name", "type", "body"});
@@ -256,6 +265,7 @@ void RegisterSensorTypes(ElementRegistry& r) {
   r.Add(ElementKind::kSensor, "node_stress", ParseNodeStressEntry);
   r.Add(ElementKind::kSensor, "strain_energy", ParseStrainEnergyEntry);
   r.Add(ElementKind::kSensor, "system_energy", ParseSystemEnergyEntry);
+  r.Add(ElementKind::kSensor, "force_element", ParseForceElementEntry);
 }
 
 }  // namespace flexmb

@@ -10,6 +10,7 @@
 #include "flexmb/common/error.h"
 #include "flexmb/forces/bushing.h"
 #include "flexmb/forces/joint_motor.h"
+#include "flexmb/forces/plane_contact.h"
 #include "flexmb/forces/point_force.h"
 #include "flexmb/forces/point_torque.h"
 #include "flexmb/forces/rotational_spring_damper.h"
@@ -127,6 +128,38 @@ TEST(ForceParser, ReportsBadInputAtItsLine) {
   ExpectError("  - {name: m, type: joint_motor, joint: pin, coordinate: translation, function: 1}\n",
               {"no coordinate 'translation'"});
   ExpectError("  - {name: m, type: joint_motor, joint: pin}\n", {"needs 'function'"});
+}
+
+TEST(ForceParser, PlaneContactAndItsSensor) {
+  auto m = LoadModelString(kBase +
+                               "  - {name: pad, type: plane_contact, marker: a.m, point: [0, 0, -1], normal: [0, 0, 2],\n"
+                               "     stiffness: 1.0e6, damping: 500, friction: 0.4}\n"
+                               "sensors:\n"
+                               "  - {name: load, type: force_element, force: pad}\n",
+                           "f.yaml");
+  const auto* c = dynamic_cast<const PlaneContact*>(m->forces.at(0).get());
+  ASSERT_NE(c, nullptr);
+  EXPECT_EQ(c->law().point_W, Vec3(0, 0, -1));
+  EXPECT_EQ(c->law().normal_W, Vec3(0, 0, 1));
+  EXPECT_EQ(c->law().stiffness, 1.0e6);
+  EXPECT_EQ(c->law().damping, 500.0);
+  EXPECT_EQ(c->law().friction, 0.4);
+  EXPECT_EQ(c->law().slip_velocity, 1e-3);
+  ASSERT_EQ(m->sensors.size(), 1u);
+  EXPECT_EQ(m->sensors[0]->Components().size(), 7u);
+  ExpectError("  - {name: pad, type: plane_contact, marker: a.m}\n", {"force 'pad'", "'stiffness'"});
+  ExpectError("  - {name: pad, type: plane_contact, marker: a.m, stiffness: 1, normal: [0, 0, 0]}\n",
+              {"'normal' must not be the zero vector"});
+  ExpectError("  - {name: pad, type: plane_contact, marker: a.m, stiffness: 1, slip_velocity: 0}\n",
+              {"'slip_velocity' must be > 0"});
+  try {
+    LoadModelString(kBase + "  - {name: pad, type: plane_contact, marker: a.m, stiffness: 1}\nsensors:\n"
+                            "  - {name: load, type: force_element, force: pda}\n",
+                    "f.yaml");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no force element named 'pda'"), std::string::npos) << e.what();
+  }
 }
 
 TEST(ForceParser, DuplicateNameReported) {

@@ -79,10 +79,11 @@ TEST(ElementRegistry, EveryKindHasItsTypesByName) {
                         "distance", "gear", "contact_patch"})
     EXPECT_NE(r.Find(ElementKind::kJoint, t), nullptr) << t;
   for (const char* t : {"spring_damper", "rotational_spring_damper", "bushing", "point_force", "point_torque",
-                        "joint_motor", "tire", "wheel_brake"})
+                        "joint_motor", "tire", "wheel_brake", "plane_contact"})
     EXPECT_NE(r.Find(ElementKind::kForce, t), nullptr) << t;
   EXPECT_NE(r.Find(ElementKind::kDriver, "coordinate"), nullptr);
-  EXPECT_EQ(r.Names(ElementKind::kSensor).size(), 16u);
+  EXPECT_EQ(r.Names(ElementKind::kSensor).size(), 17u);
+  EXPECT_NE(r.Find(ElementKind::kSensor, "force_element"), nullptr);
   // a name belongs to its kind only
   EXPECT_EQ(r.Find(ElementKind::kForce, "revolute"), nullptr);
 }
