@@ -2,7 +2,7 @@
 // forms: the static stretch of a hook block on n falls, the period of a
 // payload swinging on the elastic rope, the peak rope force of a lift-off
 // at constant hoisting speed, and a load dropped into the slack rope until
-// it snaps taut. Derivations and measured values: docs/validation.md,
+// it snaps taut, and the damping ratio from the damping time. Derivations and measured values: docs/validation.md,
 // "Hoisting rope".
 
 #include <gtest/gtest.h>
@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "example_model.h"
 #include "flexmb/solver/statics.h"
@@ -199,6 +200,47 @@ TEST(Rope, SlackThenSnapTaut) {
   EXPECT_LT(std::abs(fine - ref), std::abs(coarse - ref));
   EXPECT_NEAR(coarse, ref, 1e-3 * ref);
   EXPECT_NEAR(fine, ref, 1e-4 * ref);
+}
+
+// Material damping: on n falls with constant L0 the damping force on the
+// hook is n beta EA n dl/dt / L0 = beta k dl/dt with k = n^2 EA / L0, so
+// the hook is a mass-spring-damper c = beta k, damping ratio
+// zeta = c / (2 m w) = beta w / 2, w = sqrt(k / m). Released 1 mm below
+// the hanging equilibrium (less than the static stretch 2.45 mm: the rope
+// stays taut), rho_inf = 1 (no numerical damping); zeta from the
+// logarithmic decrement of the lower turning points over 4 periods.
+TEST(Rope, DampingTimeGivesDampingRatio) {
+  const double m = 1000.0, EA = 2e7, L0 = 20.0, beta = 1e-3;
+  const int n = 2;
+  const double k = n * n * EA / L0, w = std::sqrt(k / m);
+  const double z_eq = -(L0 / n + m * kRopeG * L0 / (n * n * EA));
+  auto model = LoadModelString(
+      RopeModel(m, "[0, 0, " + RopeNum(z_eq - 1e-3) + "]",
+                "axial_stiffness: 2e7, free_length: 20, falls: 2, damping_time: 0.001",
+                "solver: {t_end: 1, dt: 1e-4, rho_inf: 1}\n"),
+      "damping.yaml");
+  Simulator sim(*model);
+  sim.Initialize();
+  std::vector<double> lows;
+  double x1 = 0.0, x2 = 0.0;  // the two previous displacements
+  int samples = 0;
+  sim.Run(0.55, 0.0, [&](const State& s, const Workspace&) {
+    const double x = HookZ(*model, s) - z_eq;
+    if (samples >= 2 && x1 < x2 && x1 <= x) {
+      // a lower turning point: vertex of the parabola through 3 samples
+      const double c = 0.5 * (x2 + x) - x1, b = 0.5 * (x - x2);
+      lows.push_back(x1 - 0.25 * b * b / c);
+    }
+    x2 = x1;
+    x1 = x;
+    ++samples;
+  });
+  ASSERT_GE(lows.size(), 4u);
+  const int periods = static_cast<int>(lows.size()) - 1;
+  const double delta = std::log(lows.front() / lows.back()) / periods;
+  const double zeta = delta / std::sqrt(4.0 * std::numbers::pi * std::numbers::pi + delta * delta);
+  std::printf("rope damping: zeta %.8f from %d periods, beta w / 2 = %.8f\n", zeta, periods, 0.5 * beta * w);
+  EXPECT_NEAR(zeta, 0.5 * beta * w, 5e-3 * 0.5 * beta * w);
 }
 
 }  // namespace rope_test
