@@ -1,9 +1,9 @@
 // The hoisting rope (flexmb/forces/rope.h) in the engine, against closed
 // forms: the static stretch of a hook block on n falls, the period of a
 // payload swinging on the elastic rope, the peak rope force of a lift-off
-// at constant hoisting speed, and a load dropped into the slack rope until
-// it snaps taut, and the damping ratio from the damping time. Derivations and measured values: docs/validation.md,
-// "Hoisting rope".
+// at constant hoisting speed, a load dropped into the slack rope until it
+// snaps taut, and the damping ratio from the damping time. Derivations and
+// measured values: docs/validation.md, "Hoisting rope".
 
 #include <gtest/gtest.h>
 
