@@ -142,7 +142,8 @@ TEST(Rope, LiftOffPeakForce) {
   Simulator sim(*model);
   sim.Initialize();
   double peak = 0.0;
-  sim.Run(0.15, 0.0, [&](const State&, const Workspace& ws) { peak = std::max(peak, ws.forces[0].wrench(8)); });
+  sim.Run(0.15, 0.0,
+          [&](const State&, const Workspace& ws) { peak = std::max(peak, ws.forces[0].wrench(8)); });
   const double ref = m * kRopeG + v * std::sqrt(EA * m / L0);
   // the same hook with the shrinking free length L0 - v t kept:
   // m z'' = n EA (n (l0 - z) - L0 + v t) / (L0 - v t) - m g, by RK4
@@ -182,7 +183,8 @@ double DropPeak(double dt, long& rejected) {
   Simulator sim(*model);
   sim.Initialize();
   double peak = 0.0;
-  sim.Run(0.5, 0.0, [&](const State&, const Workspace& ws) { peak = std::max(peak, ws.forces[0].wrench(8)); });
+  sim.Run(0.5, 0.0,
+          [&](const State&, const Workspace& ws) { peak = std::max(peak, ws.forces[0].wrench(8)); });
   rejected = sim.stats().rejected;
   return peak;
 }

@@ -114,9 +114,9 @@ TEST(Rope, FreeLengthFromHoistSpeed) {
   // a trapezoidal manoeuvre (0 -> 2 m/s in 1 s, hold 3 s, down in 1 s):
   // 1 + 6 + 1 = 8 m reeled in
   RopeLaw trap = RopeTestLaw(1e6, 1, 0.0, 10.0);
-  trap.hoist_speed = std::make_shared<TableFunction>(std::vector<double>{0, 1, 4, 5},
-                                                     std::vector<double>{0, 2, 2, 0},
-                                                     TableFunction::Interpolation::kLinear, false);
+  trap.hoist_speed =
+      std::make_shared<TableFunction>(std::vector<double>{0, 1, 4, 5}, std::vector<double>{0, 2, 2, 0},
+                                      TableFunction::Interpolation::kLinear, false);
   const Rope hoist("h", trap);
   hoist.FreeLength(6.0, L0, L0dot);
   EXPECT_NEAR(L0, 2.0, 1e-12);
@@ -169,14 +169,15 @@ const char* const kRopeTestModel =
     "forces:\n";  // forces from line 12
 
 TEST(Rope, ModelFileEntry) {
-  auto m = LoadModelString(std::string(kRopeTestModel) +
-                               "  - {name: r, type: rope, i: ground.head, j: hook.top, axial_stiffness: 2e7,\n"
-                               "     falls: 4, damping_time: 0.01}\n"
-                               "  - {name: h, type: rope, i: ground.head, j: hook.top, axial_stiffness: 1e6,\n"
-                               "     free_length: 30, hoist_speed: {table: [[0, 0], [1, 0.5], [10, 0.5]]}}\n"
-                               "  - {name: f, type: rope, i: ground.head, j: hook.top, axial_stiffness: 1e6,\n"
-                               "     free_length: {expression: \"6 - 0.1*t\"}}\n",
-                           "r.yaml");
+  auto m =
+      LoadModelString(std::string(kRopeTestModel) +
+                          "  - {name: r, type: rope, i: ground.head, j: hook.top, axial_stiffness: 2e7,\n"
+                          "     falls: 4, damping_time: 0.01}\n"
+                          "  - {name: h, type: rope, i: ground.head, j: hook.top, axial_stiffness: 1e6,\n"
+                          "     free_length: 30, hoist_speed: {table: [[0, 0], [1, 0.5], [10, 0.5]]}}\n"
+                          "  - {name: f, type: rope, i: ground.head, j: hook.top, axial_stiffness: 1e6,\n"
+                          "     free_length: {expression: \"6 - 0.1*t\"}}\n",
+                      "r.yaml");
   ASSERT_EQ(m->forces.size(), 3u);
   const auto& r = dynamic_cast<const Rope&>(*m->forces[0]);
   EXPECT_EQ(r.law().falls, 4);
@@ -203,9 +204,10 @@ TEST(Rope, ModelFileEntry) {
   expect_error("  - {name: r, type: rope, i: ground.head, j: hook.top, axial_stiffness: 1e6, falls: 0}\n",
                "falls");
   expect_error("  - {name: r, type: rope, i: ground.head, j: hook.top}\n", "axial_stiffness");
-  expect_error("  - {name: r, type: rope, i: ground.head, j: hook.top, axial_stiffness: 1e6,\n"
-               "     free_length: {expression: \"t\"}, hoist_speed: 1}\n",
-               "free_length", "r.yaml:13: ");
+  expect_error(
+      "  - {name: r, type: rope, i: ground.head, j: hook.top, axial_stiffness: 1e6,\n"
+      "     free_length: {expression: \"t\"}, hoist_speed: 1}\n",
+      "free_length", "r.yaml:13: ");
 }
 
 }  // namespace
