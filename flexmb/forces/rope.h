@@ -38,6 +38,9 @@ struct RopeLaw {
 /// L0 is L0(t) as given, or free_length minus the exact integral of the
 /// hoisting speed (Gauss-Legendre, 5 points on panels of kHoistPanel fixed
 /// in time: exact for speeds polynomial of degree <= 9 on each panel).
+/// The partial sums of the hoisting speed are cached (results do not
+/// depend on the order of calls), so one Rope with a hoisting speed must not
+/// be evaluated from two threads at once.
 /// Not modelled: rope mass and sag, the rope running over the sheave to the
 /// drum (friction, bending), drum inertia.
 class Rope final : public ForceElement {
