@@ -10,6 +10,8 @@
 //   joint_motor:              joint, coordinate, function, target, kp, kd
 //   plane_contact:            marker, point [3], normal [3], stiffness, damping, friction,
 //                             slip_velocity
+//   rope:                     i, j, axial_stiffness, falls, damping_time,
+//                             free_length (number or function of t), hoist_speed
 
 #include <array>
 #include <string>
@@ -22,7 +24,9 @@
 #include "flexmb/forces/point_force.h"
 #include "flexmb/forces/point_torque.h"
 #include "flexmb/forces/rotational_spring_damper.h"
+#include "flexmb/forces/rope.h"
 #include "flexmb/forces/spring_damper.h"
+#include "flexmb/math/input_function.h"
 #include "flexmb/model_file/element_registry.h"
 #include "flexmb/model_file/parse_context.h"
 #include "flexmb/model/model.h"
@@ -209,6 +213,37 @@ void AddJointMotor(const YAML::Node& node, const std::string& name, ParseContext
   });
 }
 
+void AddRope(const YAML::Node& node, const std::string& name, ParseContext& ctx) {
+  ctx.CheckKeys(node, {"name", "type", "i", "j", "axial_stiffness", "falls", "damping_time",
+                       "free_length", "hoist_speed"});
+  const auto [i0, j0] = MarkerPair(node, ctx);
+  const int i = i0, j = j0;  // named copies: clang 14 cannot capture structured bindings
+  RopeLaw law;
+  law.axial_stiffness = ctx.Double(node, "axial_stiffness");
+  law.falls = ctx.Integer(node, "falls", 1);
+  law.damping_time = ctx.Double(node, "damping_time", 0.0);
+  if (node["hoist_speed"]) {
+    law.hoist_speed = ctx.Function(node, "hoist_speed", "t");
+    if (dynamic_cast<const InputFunction*>(law.hoist_speed.get()))
+      ctx.Fail(node["hoist_speed"], "a hoisting speed set by a script cannot be integrated in time: "
+                                    "give 'free_length' as {input: ...} instead");
+  }
+  const YAML::Node l0 = node["free_length"];
+  if (l0 && !l0.IsScalar()) {
+    if (law.hoist_speed)
+      ctx.Fail(l0, "with 'hoist_speed', 'free_length' is the initial free length: a number");
+    law.free_length_function = ctx.Function(node, "free_length", "t");
+  } else if (l0) {
+    law.free_length = ctx.Double(node, "free_length");
+  } else {
+    // unstretched at the start: all falls at the initial distance
+    const Model& model = ctx.model();
+    law.free_length = law.falls *
+                      (InitialMarker(model, j).p_WM - InitialMarker(model, i).p_WM).norm();
+  }
+  ctx.Guard(node, [&] { ctx.model().AddForce(std::make_unique<Rope>(name, law), i, j); });
+}
+
 void AddPointForce(const YAML::Node& node, const std::string& name, ParseContext& ctx) {
   AddPointLoad(node, name, false, ctx);
 }
@@ -245,6 +280,7 @@ void RegisterForceTypes(ElementRegistry& r) {
   r.Add(ElementKind::kForce, "point_torque", AddPointTorque);
   r.Add(ElementKind::kForce, "joint_motor", AddJointMotor);
   r.Add(ElementKind::kForce, "plane_contact", AddPlaneContact);
+  r.Add(ElementKind::kForce, "rope", AddRope);
 }
 
 }  // namespace flexmb

@@ -79,7 +79,7 @@ TEST(ElementRegistry, EveryKindHasItsTypesByName) {
                         "distance", "gear", "contact_patch"})
     EXPECT_NE(r.Find(ElementKind::kJoint, t), nullptr) << t;
   for (const char* t : {"spring_damper", "rotational_spring_damper", "bushing", "point_force", "point_torque",
-                        "joint_motor", "tire", "wheel_brake", "plane_contact"})
+                        "joint_motor", "tire", "wheel_brake", "plane_contact", "rope"})
     EXPECT_NE(r.Find(ElementKind::kForce, t), nullptr) << t;
   EXPECT_NE(r.Find(ElementKind::kDriver, "coordinate"), nullptr);
   EXPECT_EQ(r.Names(ElementKind::kSensor).size(), 17u);

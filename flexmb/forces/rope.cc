@@ -1,0 +1,131 @@
+#include "flexmb/forces/rope.h"
+
+#include <cmath>
+
+#include "flexmb/common/error.h"
+
+namespace flexmb {
+namespace {
+
+// 5-point Gauss-Legendre nodes and weights on [-1, 1]
+constexpr double kRopeGaussX[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
+                                   0.9061798459386640};
+constexpr double kRopeGaussW[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
+                                   0.4786286704993665, 0.2369268850561891};
+
+/// Integral of f over [a, b] by 5-point Gauss-Legendre.
+double RopeGauss(const ScalarFunction& f, double a, double b) {
+  const double c = 0.5 * (a + b), h = 0.5 * (b - a);
+  double s = 0.0;
+  for (int k = 0; k < 5; ++k) s += kRopeGaussW[k] * f.Value(c + h * kRopeGaussX[k]);
+  return h * s;
+}
+
+}  // namespace
+
+Rope::Rope(std::string name, RopeLaw law) : ForceElement(std::move(name)), law_(std::move(law)) {
+  const ErrorContext ctx{"", 0, "force '" + this->name() + "'"};
+  if (!std::isfinite(law_.axial_stiffness) || law_.axial_stiffness <= 0.0)
+    throw InputError("axial_stiffness (EA) must be finite and > 0, got " +
+                         std::to_string(law_.axial_stiffness), ctx);
+  if (law_.falls < 1) throw InputError("falls must be >= 1, got " + std::to_string(law_.falls), ctx);
+  if (!std::isfinite(law_.damping_time) || law_.damping_time < 0.0)
+    throw InputError("damping_time must be finite and >= 0, got " + std::to_string(law_.damping_time), ctx);
+  if (law_.free_length_function && law_.hoist_speed)
+    throw InputError("give the free length as a function of time or a hoisting speed, not both", ctx);
+  if (!std::isfinite(law_.free_length))
+    throw InputError("free_length must be finite", ctx);
+  double L0, L0dot;
+  FreeLength(0.0, L0, L0dot);  // throws for L0(0) <= 0
+}
+
+double Rope::PanelIntegral(long k) const {
+  return RopeGauss(*law_.hoist_speed, static_cast<double>(k) * kHoistPanel,
+                   static_cast<double>(k + 1) * kHoistPanel);
+}
+
+double Rope::HoistedLength(double t) const {
+  const long k = static_cast<long>(std::floor(t / kHoistPanel));
+  if (k < 0) {
+    // before t = 0: the panels between t and 0, summed downwards
+    double s = 0.0;
+    for (long p = -1; p > k; --p) s -= PanelIntegral(p);
+    return s - RopeGauss(*law_.hoist_speed, t, static_cast<double>(k + 1) * kHoistPanel);
+  }
+  if (k < panel_) {
+    // behind the shortcut (a rejected step): the same sum again from 0
+    panel_ = 0;
+    panel_integral_ = 0.0;
+  }
+  for (; panel_ < k; ++panel_) panel_integral_ += PanelIntegral(panel_);
+  const double a = static_cast<double>(k) * kHoistPanel;
+  return panel_integral_ + (t > a ? RopeGauss(*law_.hoist_speed, a, t) : 0.0);
+}
+
+void Rope::FreeLength(double t, double& L0, double& L0dot) const {
+  if (law_.free_length_function) {
+    L0 = law_.free_length_function->Value(t);
+    L0dot = law_.free_length_function->Derivative(t);
+  } else if (law_.hoist_speed) {
+    L0 = law_.free_length - HoistedLength(t);
+    L0dot = -law_.hoist_speed->Value(t);
+  } else {
+    L0 = law_.free_length;
+    L0dot = 0.0;
+  }
+  if (!(L0 > 0.0) || !std::isfinite(L0dot))
+    throw InputError("the free length of the rope is " + std::to_string(L0) + " m at t = " +
+                         std::to_string(t) + " s; it must stay > 0 (the winch would be empty)",
+                     {"", 0, "force '" + name() + "'"});
+}
+
+void Rope::Evaluate(const MarkerState& mi, const MarkerState& mj, double t, ForceEval& e) const {
+  double L0, L0dot;
+  FreeLength(t, L0, L0dot);
+  const Vec3 d = mj.p_WM - mi.p_WM;
+  const double l = d.norm();
+  if (!(l > 1e-12 * L0))
+    throw NumericalError("the marker origins coincide: the rope direction is undefined",
+                         {"", 0, "force '" + name() + "'"});
+  e.wrench.setZero();
+  e.K.setZero();
+  e.C.setZero();
+  const double n = law_.falls, EA = law_.axial_stiffness, beta = law_.damping_time;
+  const Vec3 u = d / l;
+  const Vec3 vrel = mj.v_WM - mi.v_WM;
+  const double ldot = u.dot(vrel);
+  const double eps = n * l / L0 - 1.0;
+  if (!(eps > 0.0)) return;  // slack: no force
+  const double eps_dot = n * ldot / L0 - n * l * L0dot / (L0 * L0);
+  const double T = EA * (eps + beta * eps_dot);
+  if (!(T > 0.0)) return;  // the damping may relieve the rope, never push
+  // F = n T and its derivatives with respect to l and ldot
+  const double F = n * T;
+  const double dFdl = n * EA * (n / L0 - beta * n * L0dot / (L0 * L0));
+  const double dFdv = n * beta * EA * n / L0;
+  e.wrench.segment<3>(0) = F * u;
+  e.wrench.segment<3>(6) = -F * u;
+
+  // d(F u)/dd with du/dd = P / l and dldot/dd = P vrel / l, P = I - u u^T
+  const Mat3 P = (Mat3::Identity() - u * u.transpose()) / l;
+  const Vec3 dFdd = dFdl * u + dFdv * (P * vrel);
+  const Mat3 A = u * dFdd.transpose() + F * P;
+  const Mat3 Cv = dFdv * u * u.transpose();  // d(F u)/dvrel
+  e.K.block<3, 3>(0, 0) = -A;
+  e.K.block<3, 3>(0, 6) = A;
+  e.K.block<3, 3>(6, 0) = A;
+  e.K.block<3, 3>(6, 6) = -A;
+  e.C.block<3, 3>(0, 0) = -Cv;
+  e.C.block<3, 3>(0, 6) = Cv;
+  e.C.block<3, 3>(6, 0) = Cv;
+  e.C.block<3, 3>(6, 6) = -Cv;
+}
+
+double Rope::PotentialEnergy(const MarkerState& mi, const MarkerState& mj, double t) const {
+  double L0, L0dot;
+  FreeLength(t, L0, L0dot);
+  const double eps = law_.falls * (mj.p_WM - mi.p_WM).norm() / L0 - 1.0;
+  return eps > 0.0 ? 0.5 * law_.axial_stiffness * L0 * eps * eps : 0.0;
+}
+
+}  // namespace flexmb
