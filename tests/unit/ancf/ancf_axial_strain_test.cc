@@ -143,7 +143,7 @@ void ExpectUniformStretch(const El& el, AxialStrainMeasure m, const VecD& p0, co
     SCOPED_TRACE("lambda " + std::to_string(lambda));
     const double eps = AxialTestStrain(m, lambda);
     const typename El::Vec e = AxialTestStretched(el, p0, dir, lambda);
-    for (double xi : {0.0, 0.21, 0.5, 0.88, 1.0}) EXPECT_NEAR(el.AxialStrain(e, xi), eps, 1e-15);
+    for (double xi : {0.0, 0.21, 0.5, 0.88, 1.0}) EXPECT_NEAR(el.AxialStrain(e, xi), eps, 1e-14);
     EXPECT_NEAR(el.StrainEnergy(e), 0.5 * s.E * s.A * L * eps * eps, 1e-12 * s.E * s.A * L);
     // stretching at rate lambda_dot: damping power -beta EA L eps_dot^2
     const double lambda_dot = 0.8;
@@ -181,7 +181,7 @@ TEST(AncfAxialStrain, UniformStretchBeam3d) {
       e.segment<3>(7) = e.segment<3>(0) + lambda * L * R0.col(0);
       e.segment<3>(10) = lambda * R0.col(0);
       const double eps = AxialTestStrain(m, lambda);
-      for (double xi : {0.0, 0.3, 1.0}) EXPECT_NEAR(el.StrainsAt(e, xi)(0), eps, 1e-15);
+      for (double xi : {0.0, 0.3, 1.0}) EXPECT_NEAR(el.StrainsAt(e, xi)(0), eps, 1e-14);
       EXPECT_NEAR(el.StrainEnergy(e), 0.5 * s.E * s.A * L * eps * eps, 1e-12 * s.E * s.A * L);
     }
   }
@@ -194,7 +194,7 @@ TEST(AncfAxialStrain, MeasuresAgreeToFirstOrderInTheStrain) {
     const auto e = AxialTestStretched(eng, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 0, 1), lambda);
     const auto qe = test_util::Forces(eng, e, AncfCable3d::Vec::Zero());
     const auto qg = test_util::Forces(gl, e, AncfCable3d::Vec::Zero());
-    EXPECT_LT((qg - 0.5 * lambda * (lambda + 1.0) * qe).norm(), 1e-10 * qe.norm()) << lambda;
+    EXPECT_LT((qg - 0.5 * lambda * (lambda + 1.0) * qe).norm(), 1e-8 * qe.norm()) << lambda;
   }
 }
 
