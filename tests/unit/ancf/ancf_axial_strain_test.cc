@@ -136,7 +136,7 @@ double AxialTestStrain(AxialStrainMeasure m, double lambda) {
 }
 
 template <class El, class VecD>
-void ExpectUniformStretch(const El& el, AxialStrainMeasure m, const VecD& p0, const VecD& dir) {
+void ExpectAxialUniformStretch(const El& el, AxialStrainMeasure m, const VecD& p0, const VecD& dir) {
   const BeamSection& s = el.section();
   const double L = el.length();
   for (double lambda : {0.7, 0.999, 1.0, 1.001, 1.3}) {
@@ -160,9 +160,9 @@ void ExpectUniformStretch(const El& el, AxialStrainMeasure m, const VecD& p0, co
 TEST(AncfAxialStrain, UniformStretchGivesExactStrainEnergyAndDamping) {
   for (AxialStrainMeasure m : {kAxialEng, kAxialGL}) {
     SCOPED_TRACE(m == kAxialGL ? "green-lagrange" : "engineering");
-    ExpectUniformStretch(AncfBeam2d(0.4, AxialTestSection(m, 0.01)), m, Eigen::Vector2d(0.1, -0.2),
+    ExpectAxialUniformStretch(AncfBeam2d(0.4, AxialTestSection(m, 0.01)), m, Eigen::Vector2d(0.1, -0.2),
                          Eigen::Vector2d(0.6, 0.8));
-    ExpectUniformStretch(AncfCable3d(0.4, AxialTestSection(m, 0.01)), m, Eigen::Vector3d(0.1, -0.2, 0.3),
+    ExpectAxialUniformStretch(AncfCable3d(0.4, AxialTestSection(m, 0.01)), m, Eigen::Vector3d(0.1, -0.2, 0.3),
                          Eigen::Vector3d(0.48, 0.6, 0.64));
   }
 }
