@@ -3,8 +3,9 @@
 /// Planar ANCF Euler-Bernoulli beam element (Shabana; Berzeri & Shabana 2000;
 /// strain measures after Gerstmayr & Irschik 2008): nodal coordinates
 /// (x, y, dx/ds, dy/ds) at each of its two nodes, cubic Hermite shape
-/// functions, 8 coordinates. Axial strain |r'| - 1 and bending strain
-/// (r' x r'') / |r'|^2 of the centre line; see line_element.h.
+/// functions, 8 coordinates. Axial strain |r'| - 1 (or Green-Lagrange,
+/// AxialStrainMeasure) and bending strain (r' x r'') / |r'|^2 of the centre
+/// line; see line_element.h.
 
 #include <Eigen/Core>
 

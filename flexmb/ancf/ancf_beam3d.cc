@@ -191,6 +191,7 @@ BeamSection Beam3dLineSection(const Beam3dSection& s) {
   b.I = s.Iy;
   b.rho = s.rho;
   b.damping = s.damping;
+  b.axial_strain = s.axial_strain;
   return b;
 }
 
@@ -296,14 +297,7 @@ double AncfBeam3d::AxialTerms(const Vec& e, double xi, Vec& d1, Mat& d2) const {
   const auto Sx = line_.ShapeSlope(xi);
   Eigen::Matrix<double, 3, kDof> B = Eigen::Matrix<double, 3, kDof>::Zero();
   for (int i = 0; i < 12; ++i) B.col(kBeam3dCableIndex[i]) = Sx.col(i);
-  const Vec3d a = B * e;
-  const double l = a.norm();
-  if (!(l > 0.0)) throw NumericalError("ANCF beam slope r' vanished (element collapsed)");
-  const Vec Ba = B.transpose() * a;
-  d1 = Ba / l;
-  d2.noalias() = B.transpose() * B / l;
-  d2.noalias() -= Ba * Ba.transpose() / (l * l * l);
-  return l - 1.0;
+  return AncfAxialStrainTerms<3, kDof>(section_.axial_strain, B, e, d1, d2);
 }
 
 AncfBeam3d::Vec3d AncfBeam3d::CurvatureTerms(const Vec& e, double xi, Eigen::Matrix<double, kDof, 3>& d1,

@@ -13,7 +13,7 @@
 /// start frame) and Rmin(t0 -> t) the rotation by the smallest angle about
 /// t0 x t that takes t0 into t (singular only at t = -t0).
 /// Strains (line strains, per reference length):
-///   axial   eps = |r'| - 1
+///   axial   eps = |r'| - 1, or (|r'|^2 - 1) / 2 (Beam3dSection::axial_strain)
 ///   bending kappa_2 = d2 . kv, kappa_3 = d3 . kv with kv = (r' x r'') / |r'|^2
 ///   torsion kappa_1 = phi' + tau_min, tau_min = -t0 . kv / (1 + t0 . t)
 ///           (the twist rate of the minimal-rotation frame along s, so that
@@ -44,6 +44,7 @@ struct Beam3dSection {
   double J = 0.0;        ///< torsion constant [m^4]
   double rho = 0.0;      ///< density [kg/m^3]
   double damping = 0.0;  ///< stiffness-proportional damping time beta [s]
+  AxialStrainMeasure axial_strain = AxialStrainMeasure::kEngineering;  ///< measure of the axial strain eps
 };
 
 /// 3D ANCF beam element with torsion; see the file comment.
@@ -87,7 +88,7 @@ class AncfBeam3d {
   Vec3d Position(const Vec& e, double xi) const;
   /// Cross-section frame [t, d2, d3] at xi (see the file comment).
   Mat3d SectionFrame(const Vec& e, double xi) const;
-  /// Strains (eps, kappa_1, kappa_2, kappa_3) [-, 1/m] at xi.
+  /// Strains (eps, kappa_1, kappa_2, kappa_3) [-, 1/m] at xi (eps in the section's measure).
   Strains StrainsAt(const Vec& e, double xi) const;
 
   /// Strain energy [J] at e.

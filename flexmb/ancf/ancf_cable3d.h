@@ -2,9 +2,9 @@
 /// \file ancf_cable3d.h
 /// 3D ANCF cable element (Gerstmayr & Shabana 2006): position r and slope r'
 /// at each of two nodes, cubic Hermite shape functions, 12 coordinates. Axial
-/// strain |r'| - 1 and bending strain vector (r' x r'') / |r'|^2 with energy
-/// 1/2 EI |kappa|^2 (isotropic section, straight in the reference state, no
-/// torsion); see line_element.h.
+/// strain |r'| - 1 (or Green-Lagrange, AxialStrainMeasure) and bending
+/// strain vector (r' x r'') / |r'|^2 with energy 1/2 EI |kappa|^2 (isotropic
+/// section, straight in the reference state, no torsion); see line_element.h.
 
 #include <Eigen/Core>
 

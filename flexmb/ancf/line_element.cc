@@ -135,7 +135,9 @@ typename LineElement<D>::ShapeMat LineElement<D>::ShapeCurvature(double x) const
 
 template <int D>
 double LineElement<D>::AxialStrain(const Vec& e, double xi) const {
-  return (ShapeSlope(xi) * e).norm() - 1.0;
+  const double l = (ShapeSlope(xi) * e).norm();
+  if (section_.axial_strain == AxialStrainMeasure::kGreenLagrange) return 0.5 * (l * l - 1.0);
+  return l - 1.0;
 }
 
 template <int D>
@@ -145,19 +147,6 @@ typename LineElement<D>::VecK LineElement<D>::Curvature(const Vec& e, double xi)
   VecK k;
   for (int c = 0; c < kCurv; ++c) k(c) = a.dot(CrossMatrix<D>(c) * b) / a.squaredNorm();
   return k;
-}
-
-template <int D>
-void LineElement<D>::AxialTerms(const ShapeMat& Sx, const Vec& e, double& eps, Vec& deps,
-                                Mat& ddeps) const {
-  const VecD a = Sx * e;
-  const double l = a.norm();
-  if (!(l > 0.0)) throw NumericalError("ANCF element slope r' vanished (element collapsed)");
-  eps = l - 1.0;
-  const Vec Sa = Sx.transpose() * a;
-  deps = Sa / l;
-  ddeps.noalias() = Sx.transpose() * Sx / l;
-  ddeps.noalias() -= Sa * Sa.transpose() / (l * l * l);
 }
 
 template <int D>
@@ -230,7 +219,7 @@ void LineElement<D>::AddInternalForces(const Vec& e, const Vec& edot, Vec& Q, Ma
   Vec d1;
   Mat d2;
   ForEachAxialPoint([&](double xi, double EA) {
-    AxialTerms(ShapeSlope(xi), e, val, d1, d2);
+    val = AncfAxialStrainTerms<D, kDof>(section_.axial_strain, ShapeSlope(xi), e, d1, d2);
     AddStrainTerm(EA, val, d1, d2, edot, Q, dQde, dQdedot);
   });
   ForEachBendingPoint([&](double xi, double EI) {

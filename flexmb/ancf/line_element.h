@@ -4,7 +4,9 @@
 /// 3D cable): cubic Hermite interpolation of the centre line in reference arc
 /// length s, nodal coordinates e = (r_0, r'_0, r_1, r'_1) in world components
 /// (D = 2 or 3 per vector, 4 D in all). Structural ("line") strain measures:
-///   axial   eps   = |r'| - 1                     (Biot, per reference length)
+///   axial   eps   = |r'| - 1                     (engineering (Biot), per reference
+///                                                 length; the default) or
+///           eps   = (|r'|^2 - 1) / 2             (Green-Lagrange), AxialStrainMeasure
 ///   bending kappa = (r' x r'') / |r'|^2          (rate of turn of the tangent per
 ///                                                 reference length; a scalar in 2D,
 ///                                                 a vector in 3D)
@@ -21,7 +23,19 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flexmb/common/error.h"
+
 namespace flexmb::ancf {
+
+/// Measure eps of the axial strain of the ANCF elements, in the stretch
+/// lambda = |r'| of the centre line (reference arc length s). The axial
+/// energy is 1/2 EA eps^2 per reference length with either, so the two are
+/// two materials that agree to first order in lambda - 1: the axial force
+/// EA eps deps/dlambda is EA (lambda - 1) resp. EA lambda (lambda^2 - 1) / 2.
+enum class AxialStrainMeasure {
+  kEngineering,    ///< eps = lambda - 1 (Biot; the default)
+  kGreenLagrange,  ///< eps = (lambda^2 - 1) / 2 (Berzeri and Shabana 2000)
+};
 
 /// Cross section and material of a line element (SI units).
 struct BeamSection {
@@ -30,7 +44,29 @@ struct BeamSection {
   double I = 0.0;        ///< second moment of area for bending [m^4]
   double rho = 0.0;      ///< density [kg/m^3]
   double damping = 0.0;  ///< stiffness-proportional damping time beta [s]: stress += beta E * strain rate
+  AxialStrainMeasure axial_strain = AxialStrainMeasure::kEngineering;  ///< measure of the axial strain
 };
+
+/// Axial strain eps of the slope a = B e (B = dr'/de, D x N) in the given
+/// measure, its gradient d1 = deps/de and Hessian d2 = d^2 eps/de^2 (exact;
+/// Green-Lagrange: d1 = B^T a, d2 = B^T B). Throws NumericalError if the
+/// slope vanishes under the engineering measure (not differentiable there).
+template <int D, int N>
+double AncfAxialStrainTerms(AxialStrainMeasure measure, const Eigen::Matrix<double, D, N>& B,
+                            const Eigen::Matrix<double, N, 1>& e, Eigen::Matrix<double, N, 1>& d1,
+                            Eigen::Matrix<double, N, N>& d2) {
+  const Eigen::Matrix<double, D, 1> a = B * e;
+  d1.noalias() = B.transpose() * a;
+  d2.noalias() = B.transpose() * B;
+  const double g = a.squaredNorm();
+  if (measure == AxialStrainMeasure::kGreenLagrange) return 0.5 * (g - 1.0);
+  const double l = std::sqrt(g);
+  if (!(l > 0.0)) throw NumericalError("ANCF element slope r' vanished (element collapsed)");
+  d2 /= l;
+  d2.noalias() -= d1 * d1.transpose() / (l * l * l);
+  d1 /= l;
+  return l - 1.0;
+}
 
 /// Quadrature orders of the element integrals (Gauss-Legendre points, 1..6).
 /// The default integrates the axial energy with 2 points (selective reduced
@@ -138,7 +174,7 @@ class LineElement {
   /// Slope r'(xi) (dimensionless).
   VecD Slope(const Vec& e, double xi) const { return ShapeSlope(xi) * e; }
 
-  /// Axial strain |r'| - 1 at xi.
+  /// Axial strain at xi in the section's measure: |r'| - 1 or (|r'|^2 - 1) / 2.
   double AxialStrain(const Vec& e, double xi) const;
   /// Bending strain (r' x r'') / |r'|^2 at xi [1/m].
   VecK Curvature(const Vec& e, double xi) const;
@@ -164,8 +200,7 @@ class LineElement {
   VecK kappa0_ = VecK::Zero();
 
  private:
-  // strains and their first and second derivatives at one point
-  void AxialTerms(const ShapeMat& Sx, const Vec& e, double& eps, Vec& deps, Mat& ddeps) const;
+  // bending strain and its first and second derivatives at one point
   void BendingTerms(const ShapeMat& Sx, const ShapeMat& Sxx, const Vec& e, int k, double& kap,
                     Vec& dkap, Mat& ddkap) const;
   // calls f(xi, EA w) at every point of the axial rules (weights include

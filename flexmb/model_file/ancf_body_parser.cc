@@ -2,8 +2,8 @@
 // "ANCF beams"): name, type, length, elements, section {area, inertia} |
 // {diameter}, material {E, rho}, start [3], direction [3] (ancf_cable: or
 // end [3]), normal [3], damping, curvature (ancf_beam), angular_velocity [3]
-// (ancf_cable), load_per_length [3], markers [{name, node | end, position,
-// orientation}]; ancf_beam3d: section {area, Iy, Iz, J}, material {E, G | nu,
+// (ancf_cable), load_per_length [3], axial_strain (engineering |
+// green_lagrange), markers [{name, node | end, position, orientation}]; ancf_beam3d: section {area, Iy, Iz, J}, material {E, G | nu,
 // rho}, radius instead of curvature
 #include "flexmb/model_file/ancf_body_parser.h"
 
@@ -30,7 +30,18 @@ std::string BodyName(const YAML::Node& node, ParseContext& ctx) {
   return name;
 }
 
-// element count, section, material and damping
+// `axial_strain: engineering | green_lagrange` (default engineering)
+ancf::AxialStrainMeasure ParseAxialStrainMeasure(const YAML::Node& node, ParseContext& ctx) {
+  if (!node["axial_strain"]) return ancf::AxialStrainMeasure::kEngineering;
+  const std::string measure = ctx.String(node, "axial_strain");
+  if (measure == "engineering") return ancf::AxialStrainMeasure::kEngineering;
+  if (measure == "green_lagrange") return ancf::AxialStrainMeasure::kGreenLagrange;
+  ctx.Fail(node["axial_strain"],
+           "unknown 'axial_strain' " + Quoted(measure) + " (allowed: engineering, green_lagrange)");
+  return ancf::AxialStrainMeasure::kEngineering;
+}
+
+// element count, section, material, damping and axial strain measure
 void ParseLine(const YAML::Node& node, ParseContext& ctx, int& elements, ancf::BeamSection& section) {
   if (!node["elements"]) ctx.Fail(node, "missing key 'elements' (number of ANCF elements)");
   elements = ctx.Integer(node, "elements", 0);
@@ -55,6 +66,7 @@ void ParseLine(const YAML::Node& node, ParseContext& ctx, int& elements, ancf::B
   section.rho = ctx.Positive(mat, "rho");
   section.damping = ctx.Double(node, "damping", 0.0);
   if (section.damping < 0.0) ctx.Fail(node["damping"], "'damping' must not be negative");
+  section.axial_strain = ParseAxialStrainMeasure(node, ctx);
 }
 
 // markers on nodes 0..nodes-1: `node: k` or `end: start|end`
@@ -86,7 +98,8 @@ void ParseNodeMarkers(const YAML::Node& node, int body, int nodes, ParseContext&
 
 void ParseCable(const YAML::Node& node, ParseContext& ctx, std::map<std::string, int>& lines) {
   ctx.CheckKeys(node, {"name", "type", "length", "elements", "section", "material", "start", "direction",
-                       "end", "normal", "damping", "angular_velocity", "load_per_length", "markers"});
+                       "end", "normal", "damping", "angular_velocity", "load_per_length", "axial_strain",
+                       "markers"});
   const std::string name = BodyName(node, ctx);
   const std::string entity = "body '" + name + "'";
   ctx.SetEntity(entity);
@@ -119,7 +132,7 @@ void ParseCable(const YAML::Node& node, ParseContext& ctx, std::map<std::string,
 // 3D beam with torsion: section {area, Iy, Iz, J}, material {E, G | nu, rho}
 void ParseBeam3d(const YAML::Node& node, ParseContext& ctx, std::map<std::string, int>& lines) {
   ctx.CheckKeys(node, {"name", "type", "length", "elements", "section", "material", "start", "direction",
-                       "normal", "radius", "damping", "load_per_length", "markers"});
+                       "normal", "radius", "damping", "load_per_length", "axial_strain", "markers"});
   const std::string name = BodyName(node, ctx);
   const std::string entity = "body '" + name + "'";
   ctx.SetEntity(entity);
@@ -153,6 +166,7 @@ void ParseBeam3d(const YAML::Node& node, ParseContext& ctx, std::map<std::string
   }
   d.section.damping = ctx.Double(node, "damping", 0.0);
   if (d.section.damping < 0.0) ctx.Fail(node["damping"], "'damping' must not be negative");
+  d.section.axial_strain = ParseAxialStrainMeasure(node, ctx);
   d.radius = ctx.Double(node, "radius", 0.0);
   if (d.radius < 0.0) ctx.Fail(node["radius"], "'radius' must not be negative (0: straight)");
   d.start_W = ctx.Vector3(node, "start", Vec3::Zero());
@@ -173,7 +187,7 @@ void ParseAncfBody(const YAML::Node& node, ParseContext& ctx, std::map<std::stri
   if (node["type"].Scalar() == "ancf_cable") return ParseCable(node, ctx, lines);
   if (node["type"].Scalar() == "ancf_beam3d") return ParseBeam3d(node, ctx, lines);
   ctx.CheckKeys(node, {"name", "type", "length", "elements", "section", "material", "start", "direction",
-                       "normal", "damping", "curvature", "load_per_length", "markers"});
+                       "normal", "damping", "curvature", "load_per_length", "axial_strain", "markers"});
   const std::string name = BodyName(node, ctx);
   const std::string entity = "body '" + name + "'";
   ctx.SetEntity(entity);
