@@ -159,7 +159,7 @@ const char* kSmall =
     "5 6 7 8\n";                    // 19
 
 // kSmall with the first occurrence of `from` replaced by `to`
-std::string Small(const std::string& from, const std::string& to) { return testing::Replace(kSmall, from, to); }
+std::string VtkMeshSmall(const std::string& from, const std::string& to) { return testing::Replace(kSmall, from, to); }
 
 TEST(VtkMesh, SmallFileReads) {
   const Mesh m = ReadVtk(WriteScratch("small.vtk", kSmall));
@@ -174,22 +174,22 @@ TEST(VtkMesh, SmallFileReads) {
 TEST(VtkMesh, BadInputNamesFileLineAndEntity) {
   testing::ExpectBadFiles(
       {
-          {"binary.vtk", Small("ASCII", "BINARY"), ":3: ", {"binary VTK not supported, save as ASCII"}},
-          {"magic.vtk", Small("# vtk DataFile", "# VTK File"), ":1: ", {"not a legacy VTK file"}},
-          {"dataset.vtk", Small("UNSTRUCTURED_GRID", "POLYDATA"), ":4: ", {"only DATASET UNSTRUCTURED_GRID"}},
-          {"celltype.vtk", Small("10\n3\n", "7\n3\n"), ":11: cell 0 (element 1): ",
+          {"binary.vtk", VtkMeshSmall("ASCII", "BINARY"), ":3: ", {"binary VTK not supported, save as ASCII"}},
+          {"magic.vtk", VtkMeshSmall("# vtk DataFile", "# VTK File"), ":1: ", {"not a legacy VTK file"}},
+          {"dataset.vtk", VtkMeshSmall("UNSTRUCTURED_GRID", "POLYDATA"), ":4: ", {"only DATASET UNSTRUCTURED_GRID"}},
+          {"celltype.vtk", VtkMeshSmall("10\n3\n", "7\n3\n"), ":11: cell 0 (element 1): ",
            {"VTK cell type 7 is not supported"}},
-          {"range.vtk", Small("2 0 1\n", "2 0 4\n"), ":12: cell 1 (element 2): ", {"point index 4 does not exist"}},
-          {"count.vtk", Small("CELLS 2 8\n4 0 1 2 3\n2 0 1\n", "CELLS 2 8\n3 0 1 2\n3 0 1 2\n"),
+          {"range.vtk", VtkMeshSmall("2 0 1\n", "2 0 4\n"), ":12: cell 1 (element 2): ", {"point index 4 does not exist"}},
+          {"count.vtk", VtkMeshSmall("CELLS 2 8\n4 0 1 2 3\n2 0 1\n", "CELLS 2 8\n3 0 1 2\n3 0 1 2\n"),
            ":11: cell 0 (element 1): ", {"has 4 points, got 3"}},
-          {"size.vtk", Small("CELLS 2 8", "CELLS 2 9"), ":12: ", {"the CELLS size says 9"}},
-          {"dupid.vtk", Small("5 6 7 8", "5 6 5 8"), ":8: node 5: ", {"duplicate node id"}},
-          {"inf.vtk", Small("0 1 0\n", "0 inf 0\n"), ":8: point 2: ", {"y must be finite"}},
-          {"short.vtk", Small("0 0 1\n", "0 0\n"), ":10: point 3: ", {"expected a number for z, got 'CELLS'"}},
-          {"idvalue.vtk", Small("5 6 7 8", "5 6 7.5 8"), ":19: ", {"must be a whole number"}},
-          {"types.vtk", Small("CELL_TYPES 2", "CELL_TYPES 3"), ":13: ", {"CELL_TYPES 3 does not match the 2 cells"}},
-          {"keyword.vtk", Small("POINT_DATA 4", "POINT_DATUM 4"), ":16: ", {"unexpected 'POINT_DATUM'"}},
-          {"pointdata.vtk", Small("POINT_DATA 4", "POINT_DATA 5"), ":16: ", {"POINT_DATA 5 does not match"}},
+          {"size.vtk", VtkMeshSmall("CELLS 2 8", "CELLS 2 9"), ":12: ", {"the CELLS size says 9"}},
+          {"dupid.vtk", VtkMeshSmall("5 6 7 8", "5 6 5 8"), ":8: node 5: ", {"duplicate node id"}},
+          {"inf.vtk", VtkMeshSmall("0 1 0\n", "0 inf 0\n"), ":8: point 2: ", {"y must be finite"}},
+          {"short.vtk", VtkMeshSmall("0 0 1\n", "0 0\n"), ":10: point 3: ", {"expected a number for z, got 'CELLS'"}},
+          {"idvalue.vtk", VtkMeshSmall("5 6 7 8", "5 6 7.5 8"), ":19: ", {"must be a whole number"}},
+          {"types.vtk", VtkMeshSmall("CELL_TYPES 2", "CELL_TYPES 3"), ":13: ", {"CELL_TYPES 3 does not match the 2 cells"}},
+          {"keyword.vtk", VtkMeshSmall("POINT_DATA 4", "POINT_DATUM 4"), ":16: ", {"unexpected 'POINT_DATUM'"}},
+          {"pointdata.vtk", VtkMeshSmall("POINT_DATA 4", "POINT_DATA 5"), ":16: ", {"POINT_DATA 5 does not match"}},
           {"empty.vtk", "", ":1: ", {"empty file"}},
       },
       [](const std::string& path) { ReadVtk(path); });
