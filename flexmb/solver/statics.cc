@@ -193,8 +193,14 @@ class StaticsSolver {
       AssembleIterationMatrix(m_, s_, ws_, MatrixCoefficients{0.0, 0.0, 1.0, m_.solver.geometric_stiffness});
       if (!lu.Factorize(ws_.S)) {
         singular_ = lu.singular_column();
+        // directions without stiffness: held by the damping, if any (file comment)
+        const bool held = set_.damping_hold_time > 0.0 && [&] {
+          AssembleIterationMatrix(m_, s_, ws_, MatrixCoefficients{0.0, 1.0 / set_.damping_hold_time, 1.0,
+                                                                   m_.solver.geometric_stiffness});
+          return lu.Factorize(ws_.S);
+        }();
         // at a converged equilibrium (first iteration of an increment): a mechanism
-        return it == 0 ? StaticsNewton::kSingular : StaticsNewton::kFailed;
+        if (!held) return it == 0 ? StaticsNewton::kSingular : StaticsNewton::kFailed;
       }
       ws_.rhs = -r_;
       lu.Solve(ws_.rhs);

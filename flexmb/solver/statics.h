@@ -23,7 +23,16 @@
 ///   while the full step is corrected by the next iteration (measured on
 ///   the 16-element slender elastica, PL^2/EI = 10, full load at once:
 ///   9 iterations with full steps, 1871 with the line search;
-///   docs/design.md, "Engine statics").
+///   docs/design.md, "Engine statics");
+/// - directions held by damping only: where the tangent stiffness K_t is
+///   singular, the iteration matrix becomes K_t + C / tau (C the damping
+///   tangent, tau = StaticsSettings::damping_hold_time). A load standing on
+///   the ground is held sideways only by its (regularized) friction, a
+///   vehicle on its tires by their slip damping: as at rest in reality, the
+///   damping keeps these directions where they are while the stiff ones
+///   settle. The residual stays the true one, so an equilibrium found is an
+///   equilibrium; a direction with neither stiffness nor damping is still
+///   reported as a free motion.
 
 #include <functional>
 
@@ -49,6 +58,9 @@ struct StaticsSettings {
   double initial_increment = 1.0;  ///< first load-factor increment (1: the full load at once)
   double min_increment = 1e-5;     ///< smallest load-factor increment before giving up
   bool line_search = false;   ///< line search on s(a) (see the file comment); false: full Newton steps
+  /// Time tau [s] of the damping that holds directions without stiffness
+  /// (see the file comment); 0: none (a singular K_t is an error at once).
+  double damping_hold_time = 1.0;
   /// Called after every converged load increment with the load factor
   /// reached (in (0, 1]), the Newton iterations of that increment and the
   /// statistics so far; the state passed to SolveStatics then holds that

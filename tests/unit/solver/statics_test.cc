@@ -7,6 +7,7 @@
 
 #include "flexmb/bodies/rigid_body.h"
 #include "flexmb/common/error.h"
+#include "flexmb/forces/plane_contact.h"
 #include "flexmb/joints/revolute.h"
 #include "flexmb/solver/initial_conditions.h"
 
@@ -101,6 +102,66 @@ TEST(Statics, FreeBodyIsNamed) {
     FAIL() << "expected a NumericalError";
   } catch (const NumericalError& e) {
     EXPECT_NE(std::string(e.what()).find("floating_box"), std::string::npos) << e.what();
+  }
+}
+
+// A block standing on four ground contacts: vertical, roll and pitch have
+// contact stiffness, but only the friction (damping, at rest) holds it
+// sideways and in yaw. Statics settles it at the penetration m g / (4 k)
+// without moving it sideways; without friction and with the hold switched
+// off, the sideways freedom is a free motion, named.
+void StaticsBlockOnGround(Model& m, double mu) {
+  RigidBodyData d;
+  d.mass = 400.0;
+  d.inertia_C = Mat3::Identity() * 50.0;
+  d.p_WB = Vec3(0.3, -0.2, 0.2499);
+  const int b = m.AddBody(std::make_unique<RigidBody>("block", d));
+  PlaneContactLaw law;
+  law.stiffness = 2e6;
+  law.damping = 1e4;
+  law.friction = mu;
+  int n = 0;
+  for (const double x : {-0.5, 0.5})
+    for (const double y : {-0.5, 0.5}) {
+      const std::string name = "c" + std::to_string(n++);
+      m.AddForce(std::make_unique<PlaneContact>(name, law), m.AddMarker(b, name, Vec3(x, y, -0.25), Mat3::Identity()),
+                 -1);
+    }
+  m.Finalize();
+}
+
+TEST(Statics, DampingHoldsDirectionsWithoutStiffness) {
+  Model m;
+  StaticsBlockOnGround(m, 0.5);
+  State s = m.InitialState();
+  Workspace ws;
+  MakeConsistent(m, s, ws);
+  SolveStatics(m, s, ws);
+  const double g = -m.gravity_W.z();
+  EXPECT_NEAR(s.q(2), 0.25 - 400.0 * g / (4 * 2e6), 1e-12);
+  EXPECT_NEAR(s.q(0), 0.3, 1e-12);
+  EXPECT_NEAR(s.q(1), -0.2, 1e-12);
+
+  // no friction: nothing holds it sideways
+  Model free;
+  StaticsBlockOnGround(free, 0.0);
+  State s2 = free.InitialState();
+  Workspace ws2;
+  MakeConsistent(free, s2, ws2);
+  EXPECT_THROW(SolveStatics(free, s2, ws2), NumericalError);
+  // friction, but the hold switched off
+  Model off_model;
+  StaticsBlockOnGround(off_model, 0.5);
+  State s3 = off_model.InitialState();
+  Workspace ws3;
+  MakeConsistent(off_model, s3, ws3);
+  StaticsSettings off;
+  off.damping_hold_time = 0.0;
+  try {
+    SolveStatics(off_model, s3, ws3, off);
+    FAIL() << "expected a NumericalError";
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("block"), std::string::npos) << e.what();
   }
 }
 
