@@ -1,0 +1,169 @@
+#!/usr/bin/python3
+"""Metrics and plots of the example crane's work cycle (results.csv of
+`flexmb run crane.yaml`): lift-off of the grounded load, then a 90 degree
+slew with the load swinging.
+
+Usage: /usr/bin/python3 plot.py RUN_DIR [--out DIR] [--mass 5000]
+
+Writes DIR/crane_metrics.json and the plots rope_force.png,
+hook_height.png, swing.png, slewing.png, boom_deflection.png and
+boom_stress.png (DIR defaults to RUN_DIR/plots). Metrics:
+- phi_2: the dynamic factor of hoisting a grounded load (EN 13001-2 /
+  ISO 8686-1): the largest hoist load during lift-off over the load's
+  weight (the hoist load is the rope's pull on the boom head, all falls);
+- lift_off_time_s: when the block leaves the ground (hook 1 mm above its
+  start height);
+- the largest swing of the rope from the vertical during and after the
+  slew (radial: in the boom's plane; tangential: across it) and its
+  residual swing after the slew stops;
+- the largest slewing torque, the deflection of the boom head from its
+  undeformed place (radial, lateral, vertical; the platform and the
+  cylinder are rigid, so it is the boom's), and the
+  largest von Mises stress of the two flange elements beyond the
+  cylinder eye.
+"""
+import argparse
+import csv
+import json
+import math
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+G = 9.81
+
+
+def load(run_dir):
+    with open(os.path.join(run_dir, "results.csv")) as f:
+        rows = list(csv.DictReader(f))
+    return {k: [float(r[k]) for r in rows] for k in rows[0]}
+
+
+def window(t, y, t0, t1):
+    return [v for s, v in zip(t, y) if t0 <= s <= t1]
+
+
+def swing_angles(c):
+    """Radial and tangential rope angles from the vertical [deg]: the
+    head-to-hook vector in the frame turned with the slewing angle."""
+    rad, tan = [], []
+    for k in range(len(c["time"])):
+        dx = c["hook.x"][k] - c["head.x"][k]
+        dy = c["hook.y"][k] - c["head.y"][k]
+        dz = c["head.z"][k] - c["hook.z"][k]
+        a = c["slew.value"][k]
+        r = math.cos(a) * dx + math.sin(a) * dy
+        s = -math.sin(a) * dx + math.cos(a) * dy
+        rad.append(math.degrees(math.atan2(r, dz)))
+        tan.append(math.degrees(math.atan2(s, dz)))
+    return rad, tan
+
+
+# the boom head sheave pin of the undeformed boom (crane.yaml: foot pin at
+# x = 1 m, z = 3.2 m, 18 m luffed 40 degrees), in the slewing frame
+HEAD_RADIUS = 1.0 + 18.0 * math.cos(math.radians(40.0))
+HEAD_HEIGHT = 3.2 + 18.0 * math.sin(math.radians(40.0))
+
+
+def head_deflection(c):
+    """Deflection of the boom head from its undeformed place [m], in the
+    frame turned with the slewing angle: radial (outwards), lateral (across
+    the boom's plane) and vertical. The platform and the luffing cylinder
+    are rigid, so this is the boom's elastic deflection (with the local
+    give of the foot and eye connections)."""
+    dr, dy, dz = [], [], []
+    for k in range(len(c["time"])):
+        a = c["slew.value"][k]
+        x, y = c["head.x"][k], c["head.y"][k]
+        dr.append(math.cos(a) * x + math.sin(a) * y - HEAD_RADIUS)
+        dy.append(-math.sin(a) * x + math.cos(a) * y)
+        dz.append(c["head.z"][k] - HEAD_HEIGHT)
+    return dr, dy, dz
+
+
+def metrics(c, mass):
+    t = c["time"]
+    weight = mass * G
+    z0 = c["hook.z"][0]
+    lift = next((s for s, z in zip(t, c["hook.z"]) if z > z0 + 1e-3), None)
+    slew = [s for s, a in zip(t, c["slew.value"]) if a > 1e-6]
+    slew_start = slew[0] if slew else t[-1]
+    slew_end = next((s for s, a in zip(t, c["slew.value"]) if a > math.pi / 2 - 1e-6), t[-1])
+    rad, tan = swing_angles(c)
+    head_dr, head_dy, head_dz = head_deflection(c)
+    vm = [k for k in c if k.endswith("_von_mises") and ("top_flange" in k or "bottom_flange" in k)]
+    return {
+        "load_weight_N": weight,
+        "phi_2": max(window(t, c["rope.f"], 0.0, slew_start)) / weight,
+        "lift_off_time_s": lift,
+        "hoist_load_static_N": sum(window(t, c["rope.f"], slew_start - 0.5, slew_start)) /
+        max(1, len(window(t, c["rope.f"], slew_start - 0.5, slew_start))),
+        "swing_radial_max_deg": max(abs(v) for v in window(t, rad, slew_start, t[-1])),
+        "swing_tangential_max_deg": max(abs(v) for v in window(t, tan, slew_start, t[-1])),
+        "swing_residual_deg": max(math.hypot(a, b) for a, b in zip(window(t, rad, slew_end, t[-1]),
+                                                                     window(t, tan, slew_end, t[-1]))),
+        "slewing_torque_max_Nm": max(abs(v) for v in c["slew_torque.mz"]),
+        "boom_head_lateral_max_m": max(abs(v) for v in head_dy),
+        "boom_head_vertical_range_m": [min(head_dz), max(head_dz)],
+        "boom_head_radial_range_m": [min(head_dr), max(head_dr)],
+        "flange_von_mises_max_Pa": max(max(c[k]) for k in vm) if vm else None,
+        "slew_start_s": slew_start,
+        "slew_end_s": slew_end,
+    }
+
+
+def plot(out, name, t, series, ylabel, title):
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    for label, y in series:
+        ax.plot(t, y, label=label)
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.grid(True, alpha=0.3)
+    if len(series) > 1:
+        ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, name), dpi=110)
+    plt.close(fig)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("run_dir")
+    ap.add_argument("--out", default=None)
+    ap.add_argument("--mass", type=float, default=5000.0, help="payload with hook block [kg]")
+    a = ap.parse_args()
+    out = a.out or os.path.join(a.run_dir, "plots")
+    os.makedirs(out, exist_ok=True)
+    c = load(a.run_dir)
+    m = metrics(c, a.mass)
+    with open(os.path.join(out, "crane_metrics.json"), "w") as f:
+        json.dump(m, f, indent=2)
+    print(json.dumps(m, indent=2))
+    t = c["time"]
+    plot(out, "rope_force.png", t, [("hoist load (rope pull on the boom head)", [v / 1e3 for v in c["rope.f"]]),
+                                    ("load weight", [m["load_weight_N"] / 1e3] * len(t))],
+         "force [kN]", "Hoist load: lift-off (phi_2 = %.3f) and slewing" % m["phi_2"])
+    plot(out, "hook_height.png", t, [("hook", c["hook.z"])], "height [m]", "Hook height")
+    rad, tan = swing_angles(c)
+    plot(out, "swing.png", t, [("radial (in the boom plane)", rad), ("tangential (across)", tan)],
+         "rope angle from vertical [deg]", "Load swing")
+    plot(out, "slewing.png", t, [("slewing angle [deg]", [math.degrees(v) for v in c["slew.value"]]),
+                                 ("slewing torque [kN m]", [v / 1e3 for v in c["slew_torque.mz"]])],
+         "", "Slewing drive")
+    dr, dy, dz = head_deflection(c)
+    plot(out, "boom_deflection.png", t,
+         [("vertical", [v * 1e3 for v in dz]), ("lateral", [v * 1e3 for v in dy]),
+          ("radial", [v * 1e3 for v in dr])],
+         "deflection [mm]", "Boom head from its undeformed place (slewing frame)")
+    vm = [k for k in c if k.endswith("_von_mises") and ("top_flange" in k or "bottom_flange" in k)]
+    plot(out, "boom_stress.png", t, [(k, [v / 1e6 for v in c[k]]) for k in vm], "von Mises [MPa]",
+         "Boom flanges beyond the cylinder eye")
+    print("plots in", out)
+
+
+if __name__ == "__main__":
+    main()
