@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/validation/sampled_path.h"
 #include "flexmb/ancf/ancf_beam2d_body.h"
 #include "flexmb/ancf/ancf_beam3d_body.h"
 #include "flexmb/ancf/ancf_cable3d_body.h"
@@ -27,6 +28,8 @@
 
 namespace flexmb::ancf {
 namespace ancf_axial_strain_test {
+
+using flexmb::testing::SampledPathDistance;
 
 constexpr AxialStrainMeasure kEng = AxialStrainMeasure::kEngineering;
 constexpr AxialStrainMeasure kGL = AxialStrainMeasure::kGreenLagrange;
@@ -203,17 +206,6 @@ AxialPendulumRun SimulateAxialPendulum(AxialStrainMeasure m, double E, int eleme
   return r;
 }
 
-// largest distance between two sampled tip paths [m] (NaN if a sample is missing)
-double AxialPathDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
-  double e = 0.0;
-  for (size_t k = 0; k < a.size(); ++k) {
-    const double d = (a[k] - b[k]).norm();
-    if (!std::isfinite(d)) return NAN;
-    e = std::max(e, d);
-  }
-  return e;
-}
-
 TEST(AncfAxialStrain, SoftPendulumGreenLagrange) {
   const AxialPendulumRun coarse = SimulateAxialPendulum(kGL, 0.7e6, 4, 2e-3, 1.0);
   const AxialPendulumRun fine = SimulateAxialPendulum(kGL, 0.7e6, 4, 1e-3, 1.0);
@@ -245,7 +237,7 @@ TEST(AncfAxialStrain, PendulumMeasuresAgreeAtSmallStrain) {
   const AxialPendulumRun eng = SimulateAxialPendulum(kEng, 0.7e9, 8, 1e-3, t_end);
   const AxialPendulumRun gl_soft = SimulateAxialPendulum(kGL, 0.7e6, 8, 1e-3, t_end);
   const AxialPendulumRun eng_soft = SimulateAxialPendulum(kEng, 0.7e6, 8, 1e-3, t_end);
-  const double d_stiff = AxialPathDistance(gl.path, eng.path), d_soft = AxialPathDistance(gl_soft.path, eng_soft.path);
+  const double d_stiff = SampledPathDistance(gl.path, eng.path), d_soft = SampledPathDistance(gl_soft.path, eng_soft.path);
   std::printf("pendulum tip paths, t <= %.1f s, |GL - engineering|: E = 0.7 GPa %.3e m (stretch %.2e), "
               "E = 0.7 MPa %.3e m (stretch %.2e)\n",
               t_end, d_stiff, gl.max_stretch - 1.0, d_soft, gl_soft.max_stretch - 1.0);

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/validation/sampled_path.h"
 #include "flexmb/ancf/ancf_beam2d_body.h"
 #include "flexmb/ancf/ancf_cable3d_body.h"
 #include "flexmb/common/error.h"
@@ -27,6 +28,8 @@
 
 namespace flexmb::ancf {
 namespace ancf_pendulum_test {
+
+using flexmb::testing::SampledPathDistance;
 
 std::string PendulumModel(int elements, double dt) {
   return "name: ancf_pendulum\n"
@@ -112,17 +115,6 @@ std::vector<Vec3> PendulumTipPath(int elements, double dt, double t_end) {
   return path;
 }
 
-// largest distance between two sampled paths [m] (NaN if a sample is missing)
-double PendulumPathDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
-  double e = 0.0;
-  for (size_t k = 0; k < a.size(); ++k) {
-    const double d = (a[k] - b[k]).norm();
-    if (!std::isfinite(d)) return NAN;
-    e = std::max(e, d);
-  }
-  return e;
-}
-
 TEST(AncfPendulum, BerzeriShabanaTipPathConverges) {
   // tip path over the first 0.3 s: from about 0.38 s on the tip whips
   // (curvature up to 20 1/m at 0.48 s) and the path converges slowly, see
@@ -133,12 +125,12 @@ TEST(AncfPendulum, BerzeriShabanaTipPathConverges) {
   const std::vector<Vec3> ref = PendulumTipPath(32, 2.5e-4, t_end);
   const std::vector<Vec3> p4 = PendulumTipPath(4, 2.5e-4, t_end), p8 = PendulumTipPath(8, 2.5e-4, t_end),
                           p16 = PendulumTipPath(16, 2.5e-4, t_end);
-  const double e4 = PendulumPathDistance(p4, ref), e8 = PendulumPathDistance(p8, ref),
-               e16 = PendulumPathDistance(p16, ref);
+  const double e4 = SampledPathDistance(p4, ref), e8 = SampledPathDistance(p8, ref),
+               e16 = SampledPathDistance(p16, ref);
   // in the time step, 16 elements: dt = 2e-3 and 1e-3 against 5e-4
   const std::vector<Vec3> fine = PendulumTipPath(16, 5e-4, t_end);
-  const double d2 = PendulumPathDistance(PendulumTipPath(16, 2e-3, t_end), fine);
-  const double d1 = PendulumPathDistance(PendulumTipPath(16, 1e-3, t_end), fine);
+  const double d2 = SampledPathDistance(PendulumTipPath(16, 2e-3, t_end), fine);
+  const double d1 = SampledPathDistance(PendulumTipPath(16, 1e-3, t_end), fine);
   std::printf("pendulum tip path, t <= 0.3 s, against 32 elements: N = 4 %.3e, 8 %.3e, 16 %.3e m; "
               "16 elements against dt = 5e-4: dt = 2e-3 %.3e, 1e-3 %.3e m\n",
               e4, e8, e16, d2, d1);
