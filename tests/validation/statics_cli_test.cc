@@ -17,6 +17,7 @@
 
 #include "cli_runner.h"
 #include "json_reader.h"
+#include "results_csv.h"
 
 namespace statics_cli_test {
 
@@ -27,38 +28,8 @@ using flexmb::testing::ReadFile;
 using flexmb::testing::RunCli;
 using flexmb::testing::WriteFile;
 
-// results.csv: header and rows of numbers
-struct StaticsCsv {
-  std::vector<std::string> header;
-  std::vector<std::vector<double>> rows;
-  double At(size_t row, const std::string& col) const {
-    for (size_t c = 0; c < header.size(); ++c)
-      if (header[c] == col) return rows.at(row).at(c);
-    ADD_FAILURE() << "no column " << col;
-    return NAN;
-  }
-};
-
-StaticsCsv ReadStaticsCsv(const fs::path& p) {
-  StaticsCsv t;
-  std::istringstream in(ReadFile(p));
-  std::string line;
-  bool first = true;
-  while (std::getline(in, line)) {
-    std::istringstream ls(line);
-    std::string cell;
-    std::vector<double> row;
-    while (std::getline(ls, cell, ',')) {
-      if (first)
-        t.header.push_back(cell);
-      else
-        row.push_back(std::stod(cell));
-    }
-    if (!first) t.rows.push_back(row);
-    first = false;
-  }
-  return t;
-}
+using StaticsCsv = flexmb::testing::ResultsCsv;
+using flexmb::testing::ReadResultsCsv;
 
 class StaticsCli : public flexmb::testing::CliTest {
  protected:
@@ -96,7 +67,7 @@ TEST_F(StaticsCli, CantileverSmallLoadMatchesBeamTheory) {
   const double P = 1e-4;
   const Json s = Statics(StaticsCantilever(1.0, 8, 1e-2, 8.333333333333333e-6, 1.2e5, P));
   EXPECT_EQ(s["load_factor"].number, 1.0);
-  const StaticsCsv t = ReadStaticsCsv(dir_ / "res" / "results.csv");
+  const StaticsCsv t = ReadResultsCsv(dir_ / "res" / "results.csv");
   ASSERT_GE(t.rows.size(), 1u);
   ASSERT_EQ(t.header[0], "load_factor");
   const double w = -t.At(t.rows.size() - 1, "tip.y");
@@ -111,7 +82,7 @@ TEST_F(StaticsCli, SlenderElasticaMatchesMattiasson) {
   EXPECT_EQ(s["load_factor"].number, 1.0);
   EXPECT_GT(s["newton_iterations"].number, 3);
   EXPECT_LT(s["residual"].number, 1e-6);
-  const StaticsCsv t = ReadStaticsCsv(dir_ / "res" / "results.csv");
+  const StaticsCsv t = ReadResultsCsv(dir_ / "res" / "results.csv");
   ASSERT_EQ(static_cast<double>(t.rows.size()), s["load_steps"].number);
   const size_t last = t.rows.size() - 1;
   EXPECT_EQ(t.At(last, "load_factor"), 1.0);
@@ -151,7 +122,7 @@ TEST_F(StaticsCli, JibWithHangingPayloadMatchesHandCalculation) {
   const double sa = H / std::hypot(L, H), ca = L / std::hypot(L, H);
   const double T = g * (0.5 * mj + mp) / sa;
   Statics(StaticsJib("dynamics"));
-  const StaticsCsv t = ReadStaticsCsv(dir_ / "res" / "results.csv");
+  const StaticsCsv t = ReadResultsCsv(dir_ / "res" / "results.csv");
   ASSERT_GE(t.rows.size(), 1u);
   const size_t last = t.rows.size() - 1;
   std::printf("jib: tie force (%.9f, %.9f) N, hand calculation (%.9f, %.9f) N\n", t.At(last, "tie.fx"),
@@ -169,7 +140,7 @@ TEST_F(StaticsCli, AnalysisKeyOfTheModelFile) {
   WriteFile(dir_ / "statics.yaml", StaticsJib("statics"));
   CliResult r = RunCli(dir_, "run statics.yaml --out a --quiet");
   ASSERT_EQ(r.code, 0) << r.err;
-  StaticsCsv t = ReadStaticsCsv(dir_ / "a" / "results.csv");
+  StaticsCsv t = ReadResultsCsv(dir_ / "a" / "results.csv");
   ASSERT_FALSE(t.header.empty());
   EXPECT_EQ(t.header[0], "load_factor");
   EXPECT_NEAR(t.At(t.rows.size() - 1, "load.x"), 4.0, 1e-9);
@@ -177,7 +148,7 @@ TEST_F(StaticsCli, AnalysisKeyOfTheModelFile) {
   WriteFile(dir_ / "settled.yaml", StaticsJib("statics_then_dynamics"));
   r = RunCli(dir_, "run settled.yaml --out b --quiet");
   ASSERT_EQ(r.code, 0) << r.err;
-  t = ReadStaticsCsv(dir_ / "b" / "results.csv");
+  t = ReadResultsCsv(dir_ / "b" / "results.csv");
   ASSERT_EQ(t.rows.size(), 11u);
   for (size_t k = 0; k < t.rows.size(); ++k) {
     EXPECT_NEAR(t.At(k, "load.x"), 4.0, 1e-8) << "t = " << t.At(k, "time");
@@ -187,7 +158,7 @@ TEST_F(StaticsCli, AnalysisKeyOfTheModelFile) {
   WriteFile(dir_ / "swing.yaml", StaticsJib("dynamics"));
   r = RunCli(dir_, "run swing.yaml --out c --quiet");
   ASSERT_EQ(r.code, 0) << r.err;
-  t = ReadStaticsCsv(dir_ / "c" / "results.csv");
+  t = ReadResultsCsv(dir_ / "c" / "results.csv");
   EXPECT_NEAR(t.At(0, "load.yaw"), 0.3, 1e-9);
   // a bad value is an error naming the key
   WriteFile(dir_ / "bad.yaml", StaticsJib("quasistatics"));
