@@ -1,0 +1,91 @@
+// The example crane (examples/crane) end to end, as `make demo` runs it:
+// the boom's FE model written by make_boom.py as Nastran bulk data, reduced
+// by `flexmb reduce`, the work cycle run by `flexmb run` (static
+// equilibrium with the load on the ground, then lift-off). Checked against
+// closed forms (docs/validation.md, "Example crane"):
+// - after lift-off the mean hoist load (the rope's pull on the boom head,
+//   both falls) equals the load's weight m g;
+// - the peak hoist load at lift-off against a load lifted by a spring at
+//   constant speed: m g + v sqrt(k m), with v = v_h / n the hook speed and k
+//   the rope (n^2 EA / L0) in series with the boom head's vertical
+//   stiffness, measured in the same run from its static deflection under
+//   the load (the boom's mass and the load's swing are not in the closed
+//   form: 1 %).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli_runner.h"
+#include "results_csv.h"
+
+namespace crane_example_test {
+
+using flexmb::testing::ReadResultsCsv;
+using flexmb::testing::ResultsCsv;
+using flexmb::testing::RunCli;
+
+// the example's values (examples/crane/crane.yaml)
+constexpr double kLoadMass = 5000.0, kG = 9.81, kFalls = 2.0, kEA = 1.7e7, kFreeLength = 26.04;
+constexpr double kHoistSpeed = 0.3;  // m/s, reached at 0.7 s after a ramp from 0.2 s
+
+// free length of the rope at time t [m] (hoisting from 0.2 s, ramp to 0.7 s)
+double CraneFreeLength(double t) {
+  if (t <= 0.2) return kFreeLength;
+  if (t <= 0.7) return kFreeLength - 0.5 * kHoistSpeed * (t - 0.2) * (t - 0.2) / 0.5;
+  return kFreeLength - kHoistSpeed * (0.25 + (t - 0.7));
+}
+
+class CraneExample : public flexmb::testing::CliTest {
+ protected:
+  CraneExample() : CliTest("crane_example_") {}
+};
+
+TEST_F(CraneExample, LiftOffMatchesTheSpringClosedForm) {
+  const std::string src = FLEXMB_SOURCE_DIR;
+  std::filesystem::copy_file(src + "/examples/crane/crane.yaml", dir_ / "crane.yaml");
+  const std::string gen = "cd '" + dir_.string() + "' && /usr/bin/python3 '" + src +
+                          "/examples/crane/make_boom.py' --out boom.bdf > make_boom.txt";
+  ASSERT_EQ(std::system(gen.c_str()), 0);
+  auto r = RunCli(dir_, "reduce boom.bdf --interface 1,2,3 --modes 20 -o boom.h5");
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = RunCli(dir_, "run crane.yaml --out run --t-end 6 --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const ResultsCsv t = ReadResultsCsv(dir_ / "run" / "results.csv");
+  ASSERT_GT(t.rows.size(), 100u);
+  const std::vector<double> time = t.Values("time"), f = t.Values("rope.f"), fz = t.Values("rope.fz"),
+                            hook = t.Values("hook.z"), head = t.Values("head.z");
+  // lift-off: the hook 1 mm above its height on the ground
+  size_t lift = 0;
+  while (lift < hook.size() && hook[lift] < hook[0] + 1e-3) ++lift;
+  ASSERT_LT(lift, hook.size()) << "the load never left the ground";
+  const double t_lift = time[lift];
+  // the bouncing after lift-off: its mean is the static state
+  double f_mean = 0, fz_mean = 0, head_mean = 0, peak = 0;
+  int n = 0;
+  for (size_t k = 0; k < time.size(); ++k) {
+    if (time[k] <= t_lift + 1.0) peak = std::max(peak, f[k]);
+    if (time[k] < t_lift + 1.0) continue;
+    f_mean += f[k], fz_mean += -fz[k], head_mean += head[k], ++n;
+  }
+  ASSERT_GT(n, 50);
+  f_mean /= n, fz_mean /= n, head_mean /= n;
+  const double weight = kLoadMass * kG;
+  const double k_boom = fz_mean / (head[0] - head_mean);
+  const double k_rope = kFalls * kFalls * kEA / CraneFreeLength(t_lift);
+  const double k = 1.0 / (1.0 / k_boom + 1.0 / k_rope);
+  const double v = kHoistSpeed / kFalls;
+  const double closed = weight + v * std::sqrt(k * kLoadMass);
+  std::printf("lift-off at %.2f s; mean hoist load %.1f N (m g = %.1f N); boom head %.4g N/m, rope %.4g N/m; "
+              "peak %.1f N against %.1f N: phi_2 %.4f against %.4f\n",
+              t_lift, f_mean, weight, k_boom, k_rope, peak, closed, peak / weight, closed / weight);
+  EXPECT_NEAR(f_mean / weight, 1.0, 5e-3);  // measured 2.3e-3
+  EXPECT_NEAR(peak / closed, 1.0, 1e-2);    // measured 5.9e-3
+}
+
+}  // namespace crane_example_test
