@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "flexmb/common/error.h"
+#include "flexmb/forces/line_force.h"
 
 namespace flexmb {
 namespace {
@@ -103,22 +104,7 @@ void Rope::Evaluate(const MarkerState& mi, const MarkerState& mj, double t, Forc
   const double F = n * T;
   const double dFdl = n * EA * (n / L0 - beta * n * L0dot / (L0 * L0));
   const double dFdv = n * beta * EA * n / L0;
-  e.wrench.segment<3>(0) = F * u;
-  e.wrench.segment<3>(6) = -F * u;
-
-  // d(F u)/dd with du/dd = P / l and dldot/dd = P vrel / l, P = I - u u^T
-  const Mat3 P = (Mat3::Identity() - u * u.transpose()) / l;
-  const Vec3 dFdd = dFdl * u + dFdv * (P * vrel);
-  const Mat3 A = u * dFdd.transpose() + F * P;
-  const Mat3 Cv = dFdv * u * u.transpose();  // d(F u)/dvrel
-  e.K.block<3, 3>(0, 0) = -A;
-  e.K.block<3, 3>(0, 6) = A;
-  e.K.block<3, 3>(6, 0) = A;
-  e.K.block<3, 3>(6, 6) = -A;
-  e.C.block<3, 3>(0, 0) = -Cv;
-  e.C.block<3, 3>(0, 6) = Cv;
-  e.C.block<3, 3>(6, 0) = Cv;
-  e.C.block<3, 3>(6, 6) = -Cv;
+  SetLineForce(u, l, vrel, F, dFdl, dFdv, e);
 }
 
 double Rope::PotentialEnergy(const MarkerState& mi, const MarkerState& mj, double t) const {

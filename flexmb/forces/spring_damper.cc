@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "flexmb/common/error.h"
+#include "flexmb/forces/line_force.h"
 
 namespace flexmb {
 SpringDamper::SpringDamper(std::string name, SpringDamperLaw law)
@@ -43,25 +44,7 @@ void SpringDamper::Evaluate(const MarkerState& mi, const MarkerState& mj, double
     F += law_.damping * ldot;
     dFdv = law_.damping;
   }
-  e.wrench.setZero();
-  e.wrench.segment<3>(0) = F * u;
-  e.wrench.segment<3>(6) = -F * u;
-
-  // d(F u)/dd with du/dd = P / l and dldot/dd = P vrel / l, P = I - u u^T
-  const Mat3 P = (Mat3::Identity() - u * u.transpose()) / l;
-  const Vec3 dFdd = dFdx * u + dFdv * (P * vrel);
-  const Mat3 A = u * dFdd.transpose() + F * P;
-  const Mat3 Cv = dFdv * u * u.transpose();  // d(F u)/dvrel
-  e.K.setZero();
-  e.K.block<3, 3>(0, 0) = -A;
-  e.K.block<3, 3>(0, 6) = A;
-  e.K.block<3, 3>(6, 0) = A;
-  e.K.block<3, 3>(6, 6) = -A;
-  e.C.setZero();
-  e.C.block<3, 3>(0, 0) = -Cv;
-  e.C.block<3, 3>(0, 6) = Cv;
-  e.C.block<3, 3>(6, 0) = Cv;
-  e.C.block<3, 3>(6, 6) = -Cv;
+  SetLineForce(u, l, vrel, F, dFdx, dFdv, e);
 }
 
 double SpringDamper::PotentialEnergy(const MarkerState& mi, const MarkerState& mj, double) const {
