@@ -1,6 +1,7 @@
 #include "flexmb/forces/rope.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "flexmb/common/error.h"
 #include "flexmb/forces/line_force.h"
@@ -74,10 +75,12 @@ void Rope::FreeLength(double t, double& L0, double& L0dot) const {
     L0 = law_.free_length;
     L0dot = 0.0;
   }
-  if (!(L0 > 0.0) || !std::isfinite(L0dot))
-    throw InputError("the free length of the rope is " + std::to_string(L0) + " m at t = " +
-                         std::to_string(t) + " s; it must stay > 0 (the winch would be empty)",
-                     {"", 0, "force '" + name() + "'"});
+  if (!(L0 > 0.0) || !std::isfinite(L0dot)) {
+    char what[160];
+    std::snprintf(what, sizeof what, "the free length of the rope is %.6g m at t = %.6g s; it must stay > 0 "
+                  "(the winch would be empty)", L0, t);
+    throw InputError(what, {"", 0, "force '" + name() + "'"});
+  }
 }
 
 void Rope::Evaluate(const MarkerState& mi, const MarkerState& mj, double t, ForceEval& e) const {
