@@ -58,6 +58,12 @@ int Model::AddForce(std::unique_ptr<ForceElement> force, int marker_i, int marke
   return idx;
 }
 
+int Model::AddForce(std::unique_ptr<ForceElement> force, const std::vector<int>& m) {
+  if (m.empty()) throw InputError("force element without markers", {"", 0, "force '" + force->name() + "'"});
+  force->more_markers.assign(m.size() > 2 ? m.begin() + 2 : m.end(), m.end());
+  return AddForce(std::move(force), m[0], m.size() > 1 ? m[1] : -1);
+}
+
 int Model::AddSensor(std::unique_ptr<Sensor> sensor) {
   const int idx = static_cast<int>(sensors.size());
   CheckUnique(sensor_index_, "sensor", sensor->name(), idx);
@@ -92,6 +98,13 @@ void Model::Finalize() {
     const ErrorContext ctx{"", 0, "force '" + f->name() + "'"};
     if (f->marker_i < 0 || f->marker_i >= n_markers || f->marker_j >= n_markers)
       throw InputError("force element on a marker that does not exist", ctx);
+    if (f->NumMarkers() > kMaxForceMarkers)
+      throw InputError("force element on " + std::to_string(f->NumMarkers()) + " markers (at most " +
+                           std::to_string(kMaxForceMarkers) + ")",
+                       ctx);
+    for (int mk : f->more_markers)
+      if (mk < 0 || mk >= n_markers || f->marker_j < 0)
+        throw InputError("force element on a marker that does not exist", ctx);
   }
   finalized_ = true;
 }

@@ -43,6 +43,9 @@ class Model {
   int AddJoint(std::unique_ptr<Joint> joint, int marker_i, int marker_j);
   /// Adds a force element on markers i and (optionally, -1) j.
   int AddForce(std::unique_ptr<ForceElement> force, int marker_i, int marker_j);
+  /// Adds a force element on markers[0] (i), markers[1] (j) and, for an
+  /// element on more than two markers, the rest (ForceElement::more_markers).
+  int AddForce(std::unique_ptr<ForceElement> force, const std::vector<int>& markers);
   /// Adds a sensor.
   int AddSensor(std::unique_ptr<Sensor> sensor);
 

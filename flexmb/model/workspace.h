@@ -51,11 +51,14 @@ struct Workspace {
   /// Per body: offset in `slots` of the nv column starts of its diagonal
   /// block (dense bodies; -1 for sparse bodies and bodies without velocities).
   std::vector<int> body_slots;
-  /// Per force element, 4 entries: offset in `slots` of the column starts of
-  /// the coupling block of its markers (a, b) at 2 a + b, rows marker a's
-  /// columns, columns marker b's columns (-1 if empty or absent).
+  /// Per force element k with n markers (ForceElement::NumMarkers), n^2
+  /// entries from force_slot_begin[k]: offset in `slots` of the column
+  /// starts of the coupling block of its markers (a, b) at n a + b, rows
+  /// marker a's columns, columns marker b's columns (-1 if empty).
   std::vector<int> force_slots;
-  /// Per joint, 5 entries: the 4 coupling offsets as force_slots, then the
+  std::vector<int> force_slot_begin;  ///< per force element, see force_slots
+  /// Per joint, 5 entries: the 4 coupling offsets of its two markers as
+  /// force_slots (2 a + b), then the
   /// offset in `slots` of its constraint rows: for each active equation and
   /// each of its markers with columns (count c), the c positions in S of the
   /// B row, the position in S of the first entry of the B^T column, and the
@@ -63,6 +66,7 @@ struct Workspace {
   std::vector<int> joint_slots;
 
   // scratch
+  std::vector<const MarkerState*> force_markers;  ///< marker states of one force element
   Mat12 H;        ///< geometric stiffness of one joint
   MatX G, GtK;    ///< scratch for marker Jacobian products
   MatX twist_dq;  ///< scratch: d(J v)/dx of one marker (6 x nv)

@@ -10,8 +10,9 @@
 //   joint_motor:              joint, coordinate, function, target, kp, kd
 //   plane_contact:            marker, point [3], normal [3], stiffness, damping, friction,
 //                             slip_velocity
-//   rope:                     i, j, axial_stiffness, falls, damping_time,
-//                             free_length (number or function of t), hoist_speed
+//   rope:                     i, j | path [markers], drum {joint, radius}, axial_stiffness,
+//                             falls, damping_time, free_length (number or function of t),
+//                             hoist_speed
 
 #include <array>
 #include <string>
@@ -24,6 +25,7 @@
 #include "flexmb/forces/point_force.h"
 #include "flexmb/forces/point_torque.h"
 #include "flexmb/forces/rotational_spring_damper.h"
+#include "flexmb/forces/reeved_rope.h"
 #include "flexmb/forces/rope.h"
 #include "flexmb/forces/spring_damper.h"
 #include "flexmb/math/input_function.h"
@@ -213,15 +215,47 @@ void AddJointMotor(const YAML::Node& node, const std::string& name, ParseContext
   });
 }
 
+// the path of a reeved rope: `path` (a list of marker names) or i, j
+std::vector<int> RopePath(const YAML::Node& node, ParseContext& ctx) {
+  const YAML::Node path = node["path"];
+  if (!path) {
+    const auto [i, j] = MarkerPair(node, ctx);
+    return {i, j};
+  }
+  if (node["i"] || node["j"]) ctx.Fail(path, "give the rope's markers as 'path' or as 'i' and 'j', not both");
+  if (!path.IsSequence() || path.size() < 2)
+    ctx.Fail(path, "'path' must list at least two markers: where the rope leaves the winch, the sheaves, "
+                   "the hook block");
+  std::vector<int> markers;
+  for (size_t k = 0; k < path.size(); ++k) {
+    YAML::Node entry;
+    entry["path"] = path[k];
+    markers.push_back(ctx.Marker(entry, "path"));
+  }
+  return markers;
+}
+
 void AddRope(const YAML::Node& node, const std::string& name, ParseContext& ctx) {
-  ctx.CheckKeys(node, {"name", "type", "i", "j", "axial_stiffness", "falls", "damping_time",
+  ctx.CheckKeys(node, {"name", "type", "i", "j", "path", "drum", "axial_stiffness", "falls", "damping_time",
                        "free_length", "hoist_speed"});
-  const auto [i0, j0] = MarkerPair(node, ctx);
-  const int i = i0, j = j0;  // named copies: clang 14 cannot capture structured bindings
+  std::vector<int> markers = RopePath(node, ctx);
+  const int path_markers = static_cast<int>(markers.size());
   RopeLaw law;
   law.axial_stiffness = ctx.Double(node, "axial_stiffness");
   law.falls = ctx.Integer(node, "falls", 1);
   law.damping_time = ctx.Double(node, "damping_time", 0.0);
+  RopeDrum drum;
+  if (const YAML::Node d = node["drum"]) {
+    ctx.CheckKeys(d, {"joint", "radius"});
+    const int jd = ctx.Joint(d, "joint");
+    drum.joint = ctx.model().joints[jd].get();
+    drum.radius = ctx.Double(d, "radius");
+    if (node["hoist_speed"])
+      ctx.Fail(node["hoist_speed"], "with a 'drum' the drum pays the rope out: no 'hoist_speed' (drive the "
+                                    "drum's joint with a joint_motor or a motion driver)");
+    markers.push_back(drum.joint->marker_i);
+    markers.push_back(drum.joint->marker_j);
+  }
   if (node["hoist_speed"]) {
     law.hoist_speed = ctx.Function(node, "hoist_speed", "t");
     if (dynamic_cast<const InputFunction*>(law.hoist_speed.get()))
@@ -232,16 +266,23 @@ void AddRope(const YAML::Node& node, const std::string& name, ParseContext& ctx)
   if (l0 && !l0.IsScalar()) {
     if (law.hoist_speed)
       ctx.Fail(l0, "with 'hoist_speed', 'free_length' is the initial free length: a number");
+    if (drum.joint) ctx.Fail(l0, "with a 'drum', 'free_length' is the free length at drum angle 0: a number");
     law.free_length_function = ctx.Function(node, "free_length", "t");
   } else if (l0) {
     law.free_length = ctx.Double(node, "free_length");
   } else {
-    // unstretched at the start: all falls at the initial distance
+    // unstretched at the start: the path, the last segment on all falls
     const Model& model = ctx.model();
-    law.free_length = law.falls *
-                      (InitialMarker(model, j).p_WM - InitialMarker(model, i).p_WM).norm();
+    for (int s = 0; s + 1 < path_markers; ++s)
+      law.free_length += (s + 2 == path_markers ? law.falls : 1) *
+                         (InitialMarker(model, markers[s + 1]).p_WM - InitialMarker(model, markers[s]).p_WM).norm();
   }
-  ctx.Guard(node, [&] { ctx.model().AddForce(std::make_unique<Rope>(name, law), i, j); });
+  ctx.Guard(node, [&] {
+    if (path_markers == 2 && !drum.joint)
+      ctx.model().AddForce(std::make_unique<Rope>(name, law), markers[0], markers[1]);
+    else
+      ctx.model().AddForce(std::make_unique<ReevedRope>(name, law, path_markers, drum), markers);
+  });
 }
 
 void AddPointForce(const YAML::Node& node, const std::string& name, ParseContext& ctx) {

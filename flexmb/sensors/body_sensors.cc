@@ -35,7 +35,13 @@ void SystemEnergySensor::Evaluate(const Model& model, const State& state, const 
   }
   // force elements: stored energy
   static const MarkerState kNoMarker{};
+  const MarkerState* more[kMaxForceMarkers] = {nullptr};
   for (const auto& f : model.forces) {
+    if (f->NumMarkers() > 2) {
+      for (int a = 0; a < f->NumMarkers(); ++a) more[a] = &ws.markers[f->MarkerAt(a)];
+      potential += f->PotentialEnergyMarkers(more, state.t);
+      continue;
+    }
     const MarkerState& mi = ws.markers[f->marker_i];
     const MarkerState& mj = f->marker_j >= 0 ? ws.markers[f->marker_j] : kNoMarker;
     potential += f->PotentialEnergy(mi, mj, state.t);

@@ -82,6 +82,14 @@ void AddCoupling(SparseMat& S, const int* starts, const MarkerState& ma, const C
   AddBlockAtSlots(S.valuePtr(), starts, b, scale);
 }
 
+/// Block (a, b) of a force element's wrench tangent (K or C, fixed 12 x 12
+/// for two markers or 6 n x 6 n), without a copy.
+using ForceBlock = Eigen::Ref<const Eigen::Matrix<double, 6, 6>, 0, Eigen::OuterStride<>>;
+template <typename Tangent>
+ForceBlock ForceTangentBlock(const Tangent& T, int a, int b) {
+  return T.template block<6, 6>(6 * a, 6 * b);
+}
+
 /// Checks Body::BlockPattern's contract for the sparse body k: its mass
 /// block at the initial state and its force derivatives there, at rest
 /// velocities and at a perturbed velocity, are zero outside the declared
@@ -134,18 +142,26 @@ void BuildAssemblySlots(const Model& model, Workspace& ws) {
       for (int b = 0; b < nm; ++b) {
         const Cols& ca = ws.marker_cols[mk[a]];
         const Cols& cb = ws.marker_cols[mk[b]];
-        out[2 * a + b] = -1;
+        out[nm * a + b] = -1;
         if (ca.second == 0 || cb.second == 0) continue;
-        out[2 * a + b] = static_cast<int>(ws.slots.size());
+        out[nm * a + b] = static_cast<int>(ws.slots.size());
         AppendSlotColumnStarts(ws.S, ws.markers[mk[a]].v_offset + ca.first, ws.markers[mk[b]].v_offset + cb.first,
                            cb.second, ws.slots);
       }
   };
-  ws.force_slots.assign(4 * model.forces.size(), -1);
+  ws.force_slot_begin.assign(model.forces.size(), 0);
+  int n_force_slots = 0;
+  for (size_t k = 0; k < model.forces.size(); ++k) {
+    ws.force_slot_begin[k] = n_force_slots;
+    n_force_slots += model.forces[k]->NumMarkers() * model.forces[k]->NumMarkers();
+  }
+  ws.force_slots.assign(n_force_slots, -1);
+  std::vector<int> force_mk;
   for (size_t k = 0; k < model.forces.size(); ++k) {
     const ForceElement& f = *model.forces[k];
-    const int mk[2] = {f.marker_i, f.marker_j};
-    pairs(mk, f.marker_j >= 0 ? 2 : 1, &ws.force_slots[4 * k]);
+    force_mk.resize(f.NumMarkers());
+    for (int a = 0; a < f.NumMarkers(); ++a) force_mk[a] = f.MarkerAt(a);
+    pairs(force_mk.data(), f.NumMarkers(), &ws.force_slots[ws.force_slot_begin[k]]);
   }
   ws.joint_slots.assign(5 * model.joints.size(), -1);
   for (size_t k = 0; k < model.joints.size(); ++k) {
@@ -196,6 +212,16 @@ void InitWorkspace(const Model& model, Workspace& ws, const std::vector<int>& re
     ws.joints[k].D.setZero(n, 12);
   }
   ws.forces.assign(model.forces.size(), ForceEval{});
+  size_t max_markers = 2;
+  for (size_t k = 0; k < model.forces.size(); ++k) {
+    const int n = model.forces[k]->NumMarkers();
+    max_markers = std::max(max_markers, static_cast<size_t>(n));
+    if (n <= 2) continue;
+    ws.forces[k].wrench_n.setZero(6 * n);
+    ws.forces[k].K_n.setZero(6 * n, 6 * n);
+    ws.forces[k].C_n.setZero(6 * n, 6 * n);
+  }
+  ws.force_markers.assign(max_markers, nullptr);
   ws.mass.resize(nb);
   ws.dQdq.resize(nb);
   ws.dQdv.resize(nb);
@@ -258,13 +284,9 @@ void InitWorkspace(const Model& model, Workspace& ws, const std::vector<int>& re
     const Cols& cb = ws.marker_cols[mb];
     PatternBlock(ts, A.v_offset + ca.first, ca.second, Bb.v_offset + cb.first, cb.second);
   };
-  for (const auto& f : model.forces) {
-    couple(f->marker_i, f->marker_i);
-    if (f->marker_j < 0) continue;
-    couple(f->marker_i, f->marker_j);
-    couple(f->marker_j, f->marker_i);
-    couple(f->marker_j, f->marker_j);
-  }
+  for (const auto& f : model.forces)
+    for (int a = 0; a < f->NumMarkers(); ++a)
+      for (int b = 0; b < f->NumMarkers(); ++b) couple(f->MarkerAt(a), f->MarkerAt(b));
   for (const auto& j : model.joints) {
     for (int a : {j->marker_i, j->marker_j})
       for (int b : {j->marker_i, j->marker_j}) couple(a, b);
@@ -378,15 +400,24 @@ void EvaluateForces(const Model& model, const State& s, Workspace& ws, bool tang
       e.K.setZero();
       e.C.setZero();
     }
-    f.Evaluate(mi, mj, s.t, e);
-    const Cols& ci = ws.marker_cols[f.marker_i];
-    if (ci.second > 0)
-      ws.Q.segment(mi.v_offset + ci.first, ci.second).noalias() +=
-          mi.J.middleCols(ci.first, ci.second).transpose() * e.wrench.head<6>();
-    if (f.marker_j >= 0 && ws.marker_cols[f.marker_j].second > 0) {
-      const Cols& cj = ws.marker_cols[f.marker_j];
-      ws.Q.segment(mj.v_offset + cj.first, cj.second).noalias() +=
-          mj.J.middleCols(cj.first, cj.second).transpose() * e.wrench.tail<6>();
+    const int n = f.NumMarkers();
+    if (n <= 2) {
+      f.Evaluate(mi, mj, s.t, e);
+    } else {
+      for (int a = 0; a < n; ++a) ws.force_markers[a] = &ws.markers[f.MarkerAt(a)];
+      e.wrench_n.setZero();
+      if (tangents) {
+        e.K_n.setZero();
+        e.C_n.setZero();
+      }
+      f.EvaluateMarkers(ws.force_markers.data(), s.t, e);
+    }
+    for (int a = 0; a < n; ++a) {
+      const Cols& ca = ws.marker_cols[f.MarkerAt(a)];
+      if (ca.second == 0) continue;
+      const MarkerState& ma = ws.markers[f.MarkerAt(a)];
+      ws.Q.segment(ma.v_offset + ca.first, ca.second).noalias() +=
+          ma.J.middleCols(ca.first, ca.second).transpose() * MarkerWrench(e, n, a);
     }
   }
 }
@@ -434,43 +465,43 @@ void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
   for (size_t k = 0; k < model.forces.size() && (c.damping != 0.0 || c.stiffness != 0.0); ++k) {
     const ForceElement& f = *model.forces[k];
     const ForceEval& e = ws.forces[k];
-    const int nm = f.marker_j >= 0 ? 2 : 1;
-    const int mk[2] = {f.marker_i, f.marker_j};
-    const int* fs = &ws.force_slots[4 * k];
+    const int nm = f.NumMarkers();
+    const int* fs = &ws.force_slots[ws.force_slot_begin[k]];
     for (int a = 0; a < nm; ++a) {
-      const MarkerState& ma = ws.markers[mk[a]];
-      const Cols& ca = ws.marker_cols[mk[a]];
-      const Marker& marker = model.markers[mk[a]];
+      const int mka = f.MarkerAt(a);
+      const MarkerState& ma = ws.markers[mka];
+      const Cols& ca = ws.marker_cols[mka];
+      const Marker& marker = model.markers[mka];
       const Body& body = *model.bodies[marker.body];
       if (ca.second > 0 && c.stiffness != 0.0) {
         // the body adds only to its marker's column range: zero and copy that
         auto full = ws.GtK.topLeftCorner(ma.nv, ma.nv);
         auto blk = full.block(ca.first, ca.first, ca.second, ca.second);
         blk.setZero();
-        const Vec6 w = e.wrench.segment<6>(6 * a);
+        const Vec6 w = MarkerWrench(e, nm, a);
         body.AddMarkerWrenchTangent(s.q.data() + body.q_offset, marker, w, full);
-        AddBlockAtSlots(S.valuePtr(), ws.slots.data() + fs[3 * a], blk, -c.stiffness);
+        AddBlockAtSlots(S.valuePtr(), ws.slots.data() + fs[(nm + 1) * a], blk, -c.stiffness);
       }
       for (int b = 0; b < nm; ++b) {
-        const MarkerState& mb = ws.markers[mk[b]];
-        const Cols& cb = ws.marker_cols[mk[b]];
-        if (fs[2 * a + b] < 0) continue;
-        const int* starts = ws.slots.data() + fs[2 * a + b];
+        const int mkb = f.MarkerAt(b);
+        const MarkerState& mb = ws.markers[mkb];
+        const Cols& cb = ws.marker_cols[mkb];
+        if (fs[nm * a + b] < 0) continue;
+        const int* starts = ws.slots.data() + fs[nm * a + b];
+        const ForceBlock Kab = nm <= 2 ? ForceTangentBlock(e.K, a, b) : ForceTangentBlock(e.K_n, a, b);
+        const ForceBlock Cab = nm <= 2 ? ForceTangentBlock(e.C, a, b) : ForceTangentBlock(e.C_n, a, b);
         // zero blocks (springs without damping, dampers without stiffness)
         // would add only zeros: skipped
-        const bool zero_k = e.K.block<6, 6>(6 * a, 6 * b).isZero(0.0);
-        const bool zero_c = e.C.block<6, 6>(6 * a, 6 * b).isZero(0.0);
-        if (!zero_k)
-          AddCoupling(S, starts, ma, ca, cb, mb.J, e.K.block<6, 6>(6 * a, 6 * b), -c.stiffness, ws.G, ws.GtK);
-        if (zero_c) continue;
-        AddCoupling(S, starts, ma, ca, cb, mb.J, e.C.block<6, 6>(6 * a, 6 * b), -c.damping, ws.G, ws.GtK);
+        if (!Kab.isZero(0.0)) AddCoupling(S, starts, ma, ca, cb, mb.J, Kab, -c.stiffness, ws.G, ws.GtK);
+        if (Cab.isZero(0.0)) continue;
+        AddCoupling(S, starts, ma, ca, cb, mb.J, Cab, -c.damping, ws.G, ws.GtK);
         if (mb.nv == 0 || c.stiffness == 0.0) continue;
         // dampers: the twist of marker b turns with its body at fixed v
-        const Marker& mkb = model.markers[mk[b]];
-        const Body& bb = *model.bodies[mkb.body];
+        const Marker& markerb = model.markers[mkb];
+        const Body& bb = *model.bodies[markerb.body];
         auto td = ws.twist_dq.leftCols(mb.nv);
-        bb.MarkerTwistTangent(s.q.data() + bb.q_offset, s.v.data() + bb.v_offset, mkb, td);
-        AddCoupling(S, starts, ma, ca, cb, td, e.C.block<6, 6>(6 * a, 6 * b), -c.stiffness, ws.G, ws.GtK);
+        bb.MarkerTwistTangent(s.q.data() + bb.q_offset, s.v.data() + bb.v_offset, markerb, td);
+        AddCoupling(S, starts, ma, ca, cb, td, Cab, -c.stiffness, ws.G, ws.GtK);
       }
     }
   }

@@ -47,13 +47,12 @@ std::vector<ResidualShare> LargestResidualShares(const Model& m, const Workspace
   for (int k = 0; k < nf; ++k) {
     const ForceElement& f = *m.forces[k];
     const ForceEval& e = ws.forces[k];
-    for (int side = 0; side < 2; ++side) {
-      const int mk = side == 0 ? f.marker_i : f.marker_j;
-      if (mk < 0) continue;
+    for (int side = 0; side < f.NumMarkers(); ++side) {
+      const int mk = f.MarkerAt(side);
       const MarkerState& ms = ws.markers[mk];
       const std::pair<int, int>& cols = ws.marker_cols[mk];
       if (cols.second <= 0) continue;
-      const Vec6 w = side == 0 ? Vec6(e.wrench.head<6>()) : Vec6(e.wrench.tail<6>());
+      const Vec6 w = MarkerWrench(e, f.NumMarkers(), side);
       const VecX q = -(ms.J.middleCols(cols.first, cols.second).transpose() * w);
       for (int c = 0; c < cols.second; ++c) {
         const int row = ms.v_offset + cols.first + c;
