@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <fmt/format.h>
+
 #include "flexmb/common/error.h"
 #include "flexmb/math/rotation.h"
 
@@ -21,7 +23,7 @@ ReevedRope::ReevedRope(std::string name, RopeLaw law, int path_markers, RopeDrum
   if (path_ < 2) throw InputError("a rope path needs at least two markers, got " + std::to_string(path_), ctx);
   if (!drum_.joint) return;
   if (!(drum_.radius > 0.0) || !std::isfinite(drum_.radius))
-    throw InputError("the drum radius must be finite and > 0, got " + std::to_string(drum_.radius) + " m", ctx);
+    throw InputError(fmt::format("the drum radius must be finite and > 0, got {:g} m", drum_.radius), ctx);
   if (drum_.joint->NumCoordinates() < 1 || !drum_.joint->CoordinateIsAngle(0))
     throw InputError(std::string("the drum joint '") + drum_.joint->name() + "' (" + drum_.joint->type() +
                          ") has no angle coordinate: the drum turns in a revolute joint",

@@ -15,6 +15,8 @@
 #include "flexmb/common/error.h"
 #include "flexmb/joints/revolute.h"
 #include "flexmb/math/rotation.h"
+#include "flexmb/model_file/model_file.h"
+#include "flexmb/solver/simulator.h"
 #include "tests/unit/forces/force_test_util.h"
 
 namespace flexmb {
@@ -224,6 +226,69 @@ TEST(ReevedRope, BadInputIsNamed) {
   ms[1].p_WM = Vec3(0, 0, -3.0);
   ms[3].R_WM = ExpSO3(Vec3(0, 0, -2.5));
   EXPECT_NE(message([&] { ReevedEval(rope, ms, 0.0); }).find("drum would be empty"), std::string::npos);
+}
+
+constexpr const char* kReevedTestModel =
+    "ground:\n"
+    "  markers:\n"
+    "    - {name: exit, position: [-4, 0, 1]}\n"
+    "    - {name: sheave, position: [0, 0, 10]}\n"
+    "    - {name: axle, position: [-4, 0, 0.8], orientation: {z_axis: [0, 1, 0]}}\n"
+    "bodies:\n"
+    "  - name: drum\n"
+    "    mass: 100\n"
+    "    inertia: [5, 5, 5]\n"
+    "    position: [-4, 0, 0.8]\n"
+    "    markers: [{name: axle, orientation: {z_axis: [0, 1, 0]}}]\n"
+    "  - name: hook\n"
+    "    mass: 100\n"
+    "    inertia: [1, 1, 1]\n"
+    "    position: [0, 0, 4]\n"
+    "    markers: [{name: top}]\n"
+    "joints:\n"
+    "  - {name: winch, type: revolute, i: ground.axle, j: drum.axle}\n"
+    "  - {name: slide, type: prismatic, i: ground.sheave, j: hook.top}\n"
+    "forces:\n";
+
+TEST(ReevedRope, ModelFileEntry) {
+  auto m = LoadModelString(std::string(kReevedTestModel) +
+                               "  - {name: r, type: rope, path: [ground.exit, ground.sheave, hook.top], falls: 2,\n"
+                               "     drum: {joint: winch, radius: 0.3}, axial_stiffness: 2e7}\n",
+                           "r.yaml");
+  const auto& r = dynamic_cast<const ReevedRope&>(*m->forces[0]);
+  EXPECT_EQ(r.path_markers(), 3);
+  EXPECT_EQ(r.drum().radius, 0.3);
+  EXPECT_EQ(r.NumMarkers(), 5);
+  EXPECT_EQ(r.MarkerAt(3), m->joints[0]->marker_i);
+  // unstretched at the start (free length sqrt(4^2 + 9^2) + 2 * 6 m): no force
+  Simulator sim(*m);
+  sim.Initialize();
+  sim.RefreshWorkspace();
+  EXPECT_EQ(sim.workspace().forces[0].wrench_n.cwiseAbs().maxCoeff(), 0.0);
+
+  auto expect_error = [](const std::string& force, const char* part, const char* line = "r.yaml:21: ") {
+    try {
+      LoadModelString(std::string(kReevedTestModel) + force, "r.yaml");
+      ADD_FAILURE() << "no error for " << force;
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind(line, 0), 0u) << what;
+      EXPECT_NE(what.find(part), std::string::npos) << what;
+    }
+  };
+  expect_error("  - {name: r, type: rope, path: [ground.exit], axial_stiffness: 1e6}\n", "at least two markers");
+  expect_error("  - {name: r, type: rope, path: [ground.exit, hook.nothing], axial_stiffness: 1e6}\n",
+               "no marker named 'nothing'");
+  expect_error("  - {name: r, type: rope, path: [ground.exit, hook.top], i: ground.exit, axial_stiffness: 1e6}\n",
+               "not both");
+  expect_error("  - {name: r, type: rope, path: [ground.exit, hook.top], drum: {joint: slide, radius: 0.3},\n"
+               "     axial_stiffness: 1e6}\n", "no angle coordinate");
+  expect_error("  - {name: r, type: rope, path: [ground.exit, hook.top], drum: {joint: winch, radius: 0},\n"
+               "     axial_stiffness: 1e6}\n", "drum radius must be finite and > 0, got 0 m");
+  expect_error("  - {name: r, type: rope, path: [ground.exit, hook.top], drum: {joint: winch, radius: 0.3},\n"
+               "     hoist_speed: 0.5, axial_stiffness: 1e6}\n", "hoist_speed", "r.yaml:22: ");
+  expect_error("  - {name: r, type: rope, path: [ground.exit, hook.top], drum: {joint: none, radius: 0.3},\n"
+               "     axial_stiffness: 1e6}\n", "no joint named 'none'");
 }
 
 }  // namespace
