@@ -29,7 +29,7 @@ for ex in andrews_squeezer four_bar_2; do
     cat "$out/$ex/summary.json"; echo
   fi
 done
-echo "== crane: lift-off of a grounded load and a 90 degree slew (examples/crane, draft)"
+echo "== crane: lift-off of a grounded load by the winch and a 90 degree slew (examples/crane)"
 crane="$out/crane"
 mkdir -p "$crane"
 cp examples/crane/crane.yaml "$crane/"
@@ -41,5 +41,5 @@ sed -n 1,3p "$crane/reduce.txt"
 cat "$crane/plots/crane_metrics.json"; echo
 echo "results in $out: truck_rigid/, truck_elastic/ (results.csv, summary.json; frame.h5, the reduced"
 echo "frame; animation/anim.pvd, the whole truck with the deformed, stress-coloured frame for ParaView), truck_plots/ (PNG: rigid against elastic, frame deflection and stress), and the examples'"
-echo "folders (results.csv, summary.json, anim.pvd for ParaView); crane/run (results.csv, anim.pvd: boom deformed 20x and stress-coloured, platform, load)"
-echo "and crane/plots (crane_metrics.json: phi_2, swing, slewing torque, boom deflection and stress; PNGs)"
+echo "folders (results.csv, summary.json, anim.pvd for ParaView); crane/run (results.csv, anim.pvd: boom deformed 20x and stress-coloured, platform, drum, luffing cylinder, load)"
+echo "and crane/plots (crane_metrics.json: phi_2, swing, slewing torque, winch torque, cylinder force, boom deflection and stress; PNGs)"

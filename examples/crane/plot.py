@@ -3,16 +3,17 @@
 `flexmb run crane.yaml`): lift-off of the grounded load, then a 90 degree
 slew with the load swinging.
 
-Usage: /usr/bin/python3 plot.py RUN_DIR [--out DIR] [--mass 5000]
+Usage: /usr/bin/python3 plot.py RUN_DIR [--out DIR] [--mass 5000] [--falls 2]
 
 Writes DIR/crane_metrics.json and the plots rope_force.png,
-hook_height.png, swing.png, slewing.png, boom_deflection.png and
-boom_stress.png (DIR defaults to RUN_DIR/plots). Metrics:
+hook_height.png, swing.png, slewing.png, winch_and_cylinder.png,
+boom_deflection.png and boom_stress.png (DIR defaults to RUN_DIR/plots).
+Metrics:
 - phi_2: the dynamic factor of hoisting a grounded load (EN 13001-2 /
   ISO 8686-1): the largest hoist load from the start to one second after
-  lift-off over the load's weight (the hoist load is the rope's pull on
-  the boom head, all falls); the largest hoist load up to the slew, the
-  winch's stop included, is reported beside it;
+  lift-off over the load's weight (the hoist load is the load on the
+  hook: the rope tension times the falls); the largest hoist load up to
+  the slew, the winch's stop included, is reported beside it;
 - lift_off_time_s: when the block leaves the ground (hook 1 mm above its
   start height);
 - the largest swing of the rope from the vertical during and after the
@@ -22,7 +23,9 @@ boom_stress.png (DIR defaults to RUN_DIR/plots). Metrics:
   undeformed place (radial, lateral, vertical; the platform and the
   cylinder are rigid, so it is the boom's), and the
   largest von Mises stress of the two flange elements beyond the
-  cylinder eye.
+  cylinder eye;
+- the largest winch drum torque (the hoisting drive's reaction) and
+  luffing cylinder force (the cylinder length driver's reaction).
 """
 import argparse
 import csv
@@ -90,8 +93,15 @@ def head_deflection(c):
     return dr, dy, dz
 
 
-def metrics(c, mass):
+def hoist_load(c, falls):
+    """Load on the hook [N]: the rope tension at the winch times the falls
+    (one tension along the reeved rope)."""
+    return [falls * v for v in c["rope.f"]]
+
+
+def metrics(c, mass, falls=2):
     t = c["time"]
+    hoist = hoist_load(c, falls)
     weight = mass * G
     z0 = c["hook.z"][0]
     lift = next((s for s, z in zip(t, c["hook.z"]) if z > z0 + 1e-3), None)
@@ -105,12 +115,16 @@ def metrics(c, mass):
         "load_weight_N": weight,
         # the peak while the load leaves the ground: up to one second (more
         # than the first bounce, 0.85 s here) after lift-off
-        "phi_2": max(window(t, c["rope.f"], 0.0, (lift if lift is not None else t[-1]) + 1.0)) / weight,
+        "phi_2": max(window(t, hoist, 0.0, (lift if lift is not None else t[-1]) + 1.0)) / weight,
         # including the stop of the winch (brake) before the slew
-        "hoist_load_max_before_slew_N": max(window(t, c["rope.f"], 0.0, slew_start)),
+        "hoist_load_max_before_slew_N": max(window(t, hoist, 0.0, slew_start)),
         "lift_off_time_s": lift,
         # mean over the bouncing between lift-off and the slew: the static hoist load
-        "hoist_load_mean_N": mean(window(t, c["rope.f"], (lift or 0.0) + 1.0, slew_start)),
+        "hoist_load_mean_N": mean(window(t, hoist, (lift or 0.0) + 1.0, slew_start)),
+        "rope_tension_max_N": max(c["rope.f"]),
+        "winch_torque_max_Nm": max(abs(v) for v in c["winch_torque.mz"]),
+        "cylinder_force_max_N": max(math.sqrt(a * a + b * b + d * d) for a, b, d in
+                                    zip(c["cylinder.fx"], c["cylinder.fy"], c["cylinder.fz"])),
         "swing_radial_max_deg": max(abs(v) for v in window(t, rad, slew_start, t[-1])),
         "swing_tangential_max_deg": max(abs(v) for v in window(t, tan, slew_start, t[-1])),
         "swing_residual_deg": max(math.hypot(a, b) for a, b in zip(window(t, rad, slew_end, t[-1]),
@@ -145,16 +159,17 @@ def main():
     ap.add_argument("run_dir")
     ap.add_argument("--out", default=None)
     ap.add_argument("--mass", type=float, default=5000.0, help="payload with hook block [kg]")
+    ap.add_argument("--falls", type=int, default=2, help="parts of line the hook block hangs on")
     a = ap.parse_args()
     out = a.out or os.path.join(a.run_dir, "plots")
     os.makedirs(out, exist_ok=True)
     c = load(a.run_dir)
-    m = metrics(c, a.mass)
+    m = metrics(c, a.mass, a.falls)
     with open(os.path.join(out, "crane_metrics.json"), "w") as f:
         json.dump(m, f, indent=2)
     print(json.dumps(m, indent=2))
     t = c["time"]
-    plot(out, "rope_force.png", t, [("hoist load (rope pull on the boom head)", [v / 1e3 for v in c["rope.f"]]),
+    plot(out, "rope_force.png", t, [("hoist load (on the hook)", [v / 1e3 for v in hoist_load(c, a.falls)]),
                                     ("load weight", [m["load_weight_N"] / 1e3] * len(t))],
          "force [kN]", "Hoist load: lift-off (phi_2 = %.3f) and slewing" % m["phi_2"])
     plot(out, "hook_height.png", t, [("hook", c["hook.z"])], "height [m]", "Hook height")
@@ -164,6 +179,11 @@ def main():
     plot(out, "slewing.png", t, [("slewing angle [deg]", [math.degrees(v) for v in c["slew.value"]]),
                                  ("slewing torque [kN m]", [v / 1e3 for v in c["slew_torque.mz"]])],
          "", "Slewing drive")
+    plot(out, "winch_and_cylinder.png", t,
+         [("winch drum torque [kN m]", [v / 1e3 for v in c["winch_torque.mz"]]),
+          ("luffing cylinder force [10 kN]", [math.sqrt(a * a + b * b + d * d) / 1e4 for a, b, d in
+                                              zip(c["cylinder.fx"], c["cylinder.fy"], c["cylinder.fz"])])],
+         "", "Hoisting winch and luffing cylinder")
     dr, dy, dz = head_deflection(c)
     plot(out, "boom_deflection.png", t,
          [("vertical", [v * 1e3 for v in dz]), ("lateral", [v * 1e3 for v in dy]),

@@ -3,14 +3,14 @@
 // by `flexmb reduce`, the work cycle run by `flexmb run` (static
 // equilibrium with the load on the ground, then lift-off). Checked against
 // closed forms (docs/validation.md, "Example crane"):
-// - after lift-off the mean hoist load (the rope's pull on the boom head,
-//   both falls) equals the load's weight m g;
+// - after lift-off the mean hoist load (the rope tension at the winch times
+//   the falls) equals the load's weight m g;
 // - the peak hoist load at lift-off against a load lifted by a spring at
 //   constant speed: m g + v sqrt(k m), with v = v_h / n the hook speed and k
-//   the rope (n^2 EA / L0) in series with the boom head's vertical
-//   stiffness, measured in the same run from its static deflection under
-//   the load (the boom's mass and the load's swing are not in the closed
-//   form: 1 %).
+//   the rope (n^2 EA / L0, L0 from the drum over the sheave to the hook) in
+//   series with the boom head, whose compliance at the hook is measured in
+//   the same run from its static deflection under the load (the boom's mass
+//   and the load's swing are not in the closed form: 1 %).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -31,10 +31,11 @@ using flexmb::testing::ResultsCsv;
 using flexmb::testing::RunCli;
 
 // the example's values (examples/crane/crane.yaml)
-constexpr double kLoadMass = 5000.0, kG = 9.81, kFalls = 2.0, kEA = 1.7e7, kFreeLength = 26.04;
+constexpr double kLoadMass = 5000.0, kG = 9.81, kFalls = 2.0, kEA = 1.7e7, kFreeLength = 46.198017;
 constexpr double kHoistSpeed = 0.3;  // m/s, reached at 0.7 s after a ramp from 0.2 s
 
-// free length of the rope at time t [m] (hoisting from 0.2 s, ramp to 0.7 s)
+// free length of the rope from the drum to the hook at time t [m] (hoisting
+// from 0.2 s, ramp to 0.7 s)
 double CraneFreeLength(double t) {
   if (t <= 0.2) return kFreeLength;
   if (t <= 0.7) return kFreeLength - 0.5 * kHoistSpeed * (t - 0.2) * (t - 0.2) / 0.5;
@@ -58,25 +59,33 @@ TEST_F(CraneExample, LiftOffMatchesTheSpringClosedForm) {
   ASSERT_EQ(r.code, 0) << r.err;
   const ResultsCsv t = ReadResultsCsv(dir_ / "run" / "results.csv");
   ASSERT_GT(t.rows.size(), 100u);
-  const std::vector<double> time = t.Values("time"), f = t.Values("rope.f"), fz = t.Values("rope.fz"),
-                            hook = t.Values("hook.z"), head = t.Values("head.z");
+  const std::vector<double> time = t.Values("time"), tension = t.Values("rope.f"), hook = t.Values("hook.z"),
+                            head = t.Values("head.z"), head_x = t.Values("head.x"),
+                            exit_x = t.Values("winch_exit.x"), exit_z = t.Values("winch_exit.z");
+  std::vector<double> f(tension.size());
+  for (size_t k = 0; k < f.size(); ++k) f[k] = kFalls * tension[k];  // the hoist load
   // lift-off: the hook 1 mm above its height on the ground
   size_t lift = 0;
   while (lift < hook.size() && hook[lift] < hook[0] + 1e-3) ++lift;
   ASSERT_LT(lift, hook.size()) << "the load never left the ground";
   const double t_lift = time[lift];
   // the bouncing after lift-off: its mean is the static state
-  double f_mean = 0, fz_mean = 0, head_mean = 0, peak = 0;
+  double f_mean = 0, head_mean = 0, head_x_mean = 0, peak = 0;
   int n = 0;
   for (size_t k = 0; k < time.size(); ++k) {
     if (time[k] <= t_lift + 1.0) peak = std::max(peak, f[k]);
     if (time[k] < t_lift + 1.0) continue;
-    f_mean += f[k], fz_mean += -fz[k], head_mean += head[k], ++n;
+    f_mean += f[k], head_mean += head[k], head_x_mean += head_x[k], ++n;
   }
   ASSERT_GT(n, 50);
-  f_mean /= n, fz_mean /= n, head_mean /= n;
+  f_mean /= n, head_mean /= n, head_x_mean /= n;
   const double weight = kLoadMass * kG;
-  const double k_boom = fz_mean / (head[0] - head_mean);
+  // the head's give at the hook: with l = span + n (z_head - z_hook) at a
+  // fixed rope strain, the hook drops by dz_head + d(span) / n, d(span) the
+  // head's move along the span from the winch (the span pulls the head too)
+  const double sx = head_x[0] - exit_x[0], sz = head[0] - exit_z[0], sl = std::hypot(sx, sz);
+  const double d_span = ((head_x_mean - head_x[0]) * sx + (head_mean - head[0]) * sz) / sl;
+  const double k_boom = f_mean / -((head_mean - head[0]) + d_span / kFalls);
   const double k_rope = kFalls * kFalls * kEA / CraneFreeLength(t_lift);
   const double k = 1.0 / (1.0 / k_boom + 1.0 / k_rope);
   const double v = kHoistSpeed / kFalls;
