@@ -38,9 +38,10 @@ extern "C" void OnInterrupt(int sig) {
 }
 
 int Run(const std::string& model, const std::string& out, std::optional<double> t_end,
-        std::optional<double> dt, bool animation, bool quiet) {
+        std::optional<double> dt, const std::string& manoeuvre, bool animation, bool quiet) {
   flexmb::RunOptions opt;
   opt.model_path = model;
+  opt.manoeuvre = manoeuvre;
   opt.out_dir = out;
   opt.t_end = t_end;
   opt.dt = dt;
@@ -92,6 +93,8 @@ int main(int argc, char** argv) {
   run->add_option("--out,-o", out, "output directory")->required();
   run->add_option("--t-end", t_end, "end time [s] (overrides solver.t_end)");
   run->add_option("--dt", dt, "step size [s] (overrides solver.dt)");
+  std::string manoeuvre;
+  run->add_option("--manoeuvre", manoeuvre, "model files only: the entry of the file's 'manoeuvres' to run");
   run->add_flag("--animation", animation, "write anim.pvd and frames/ (as output.animation)");
   run->add_flag("--quiet,-q", quiet, "no progress bar, no summary lines");
   std::optional<double> speed;
@@ -284,6 +287,12 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (study->parsed()) return flexmb::cli::StudyCommand(study->remaining(), argv[0]);
+  if (run->parsed() && !manoeuvre.empty() &&
+      (flexmb::vehicle::IsLaneChangeFile(model) || flexmb::cli::ModelAsksForStatics(model))) {
+    std::fprintf(stderr, "error: --manoeuvre %s: only for a model file run in time (this is a %s file)\n",
+                 manoeuvre.c_str(), flexmb::vehicle::IsLaneChangeFile(model) ? "lane-change" : "statics");
+    return 2;
+  }
   if (run->parsed() && flexmb::vehicle::IsLaneChangeFile(model)) {
     return Guarded([&] {
       flexmb::vehicle::LaneChangeOptions o{model, out, speed, frame, dt, false, quiet ? nullptr : stdout};
@@ -303,7 +312,7 @@ int main(int argc, char** argv) {
     o.err = stderr;
     return flexmb::cli::StaticsCommand(o);
   }
-  if (run->parsed()) return Run(model, out, t_end, dt, animation, quiet);
+  if (run->parsed()) return Run(model, out, t_end, dt, manoeuvre, animation, quiet);
   if (statics->parsed()) {
     statics_opt.info = statics_quiet ? nullptr : stdout;
     statics_opt.err = stderr;

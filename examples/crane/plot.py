@@ -110,6 +110,10 @@ def metrics(c, mass, falls=2):
     slew_end = next((s for s, a in zip(t, c["slew.value"]) if a > math.pi / 2 - 1e-6), t[-1])
     rad, tan = swing_angles(c)
     head_dr, head_dy, head_dz = head_deflection(c)
+    # the head's undeformed place is that of the 40 degree boom: not
+    # reported when the manoeuvre luffs (the cylinder's length changes)
+    stroke = c.get("cylinder_length.value", [0.0])
+    luffs = max(stroke) - min(stroke) > 1e-3
     vm = [k for k in c if k.endswith("_von_mises") and ("top_flange" in k or "bottom_flange" in k)]
     return {
         "load_weight_N": weight,
@@ -129,10 +133,13 @@ def metrics(c, mass, falls=2):
         "swing_tangential_max_deg": max(abs(v) for v in window(t, tan, slew_start, t[-1])),
         "swing_residual_deg": max(math.hypot(a, b) for a, b in zip(window(t, rad, slew_end, t[-1]),
                                                                      window(t, tan, slew_end, t[-1]))),
+        "swing_max_deg": max(math.hypot(a, b) for a, b in zip(rad, tan)),
         "slewing_torque_max_Nm": max(abs(v) for v in c["slew_torque.mz"]),
-        "boom_head_lateral_max_m": max(abs(v) for v in head_dy),
-        "boom_head_vertical_range_m": [min(head_dz), max(head_dz)],
-        "boom_head_radial_range_m": [min(head_dr), max(head_dr)],
+        "hoist_load_max_N": max(hoist),
+        "cylinder_stroke_range_m": max(stroke) - min(stroke),
+        "boom_head_lateral_max_m": None if luffs else max(abs(v) for v in head_dy),
+        "boom_head_vertical_range_m": None if luffs else [min(head_dz), max(head_dz)],
+        "boom_head_radial_range_m": None if luffs else [min(head_dr), max(head_dr)],
         "flange_von_mises_max_Pa": max(max(c[k]) for k in vm) if vm else None,
         "slew_start_s": slew_start,
         "slew_end_s": slew_end,

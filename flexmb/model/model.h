@@ -32,6 +32,7 @@ class Model {
   Vec3 gravity_W = Vec3(0, 0, -9.81);   ///< gravity in world [m/s^2]
   SolverSettings solver;                ///< integrator settings
   OutputSettings output;                ///< output settings
+  std::string manoeuvre;                ///< the model file's manoeuvre it was loaded for ("" if none)
 
   /// Adds a body; returns its index. Throws InputError on a duplicate name.
   int AddBody(std::unique_ptr<Body> body);

@@ -58,6 +58,9 @@ std::optional<SettingsProblem> FindSolverSettingsProblem(const SolverSettings& s
 struct SolverOverrides {
   std::optional<double> t_end;  ///< end time [s] (--t-end)
   std::optional<double> dt;     ///< (initial) step size [s] (--dt)
+  /// Entry of the model file's `manoeuvres` to run (--manoeuvre); empty:
+  /// the file's `manoeuvre`, or the file as written.
+  std::string manoeuvre;
 };
 
 /// Applies `o` to `s`, then checks `s` by FindSolverSettingsProblem; throws

@@ -65,11 +65,75 @@ void ParseOutput(const YAML::Node& node, ParseContext& ctx) {
     ctx.Fail(node["deformation_scale"], "'deformation_scale' must be a finite number >= 0");
 }
 
-void BuildModel(const YAML::Node& root, ParseContext& ctx, const SolverOverrides& overrides) {
+// the entry named `name` of the top-level list root[key] (a driver, a force)
+YAML::Node NamedEntry(const YAML::Node& root, const char* key, const std::string& name) {
+  const YAML::Node list = root[key];
+  if (list && list.IsSequence())
+    for (const YAML::Node& e : list)
+      if (e.IsMap() && e["name"] && e["name"].IsScalar() && e["name"].Scalar() == name) return e;
+  return YAML::Node(YAML::NodeType::Undefined);
+}
+
+// Applies the selected entry of `manoeuvres` (docs/model-file.md,
+// "Manoeuvres") to the file's own entries, in place: solver keys, driver
+// functions, keys of force entries. Returns the manoeuvre's name ("" if none).
+std::string ApplyManoeuvre(YAML::Node& root, const std::string& requested, ParseContext& ctx) {
+  ctx.SetEntity("manoeuvres");
+  const YAML::Node all = root["manoeuvres"];
+  if (all && !all.IsMap()) ctx.Fail(all, "expected 'manoeuvres' as a map of named manoeuvres");
+  std::string name = requested;
+  if (name.empty() && root["manoeuvre"]) name = ctx.String(root, "manoeuvre");
+  if (name.empty()) return "";
+  std::string names;
+  if (all)
+    for (const auto& kv : all) names += (names.empty() ? "" : ", ") + kv.first.Scalar();
+  if (!all || !all[name]) {
+    const std::string msg = "no manoeuvre named '" + name + "' in the file (" +
+                            (names.empty() ? std::string("it defines none") : "defined: " + names) + ")";
+    if (requested.empty()) ctx.Fail(root["manoeuvre"], msg);
+    throw InputError("--manoeuvre " + name + ": " + msg, {ctx.file(), 0, ""});
+  }
+  const YAML::Node m = all[name];
+  ctx.SetEntity("manoeuvre '" + name + "'");
+  if (m.IsNull()) return name;  // the file as written
+  ctx.CheckKeys(m, {"description", "solver", "drivers", "forces"});
+  if (const YAML::Node solver = m["solver"]) {
+    if (!solver.IsMap()) ctx.Fail(solver, "expected 'solver' as a map of solver keys");
+    if (!root["solver"]) root["solver"] = YAML::Node(YAML::NodeType::Map);
+    YAML::Node target = root["solver"];
+    for (const auto& kv : solver) target[kv.first.Scalar()] = kv.second;
+  }
+  if (const YAML::Node drivers = m["drivers"]) {
+    if (!drivers.IsMap()) ctx.Fail(drivers, "expected 'drivers' as a map: driver name -> its function");
+    for (const auto& kv : drivers) {
+      YAML::Node d = NamedEntry(root, "drivers", kv.first.Scalar());
+      if (!d) ctx.Fail(kv.first, "the file has no driver named '" + kv.first.Scalar() + "'");
+      d["function"] = kv.second;
+    }
+  }
+  if (const YAML::Node forces = m["forces"]) {
+    if (!forces.IsMap()) ctx.Fail(forces, "expected 'forces' as a map: force name -> keys to replace");
+    for (const auto& kv : forces) {
+      YAML::Node f = NamedEntry(root, "forces", kv.first.Scalar());
+      if (!f) ctx.Fail(kv.first, "the file has no force element named '" + kv.first.Scalar() + "'");
+      if (!kv.second.IsMap()) ctx.Fail(kv.second, "expected the keys of force '" + kv.first.Scalar() + "' to replace");
+      for (const auto& key : kv.second) {
+        if (key.first.Scalar() == "name" || key.first.Scalar() == "type")
+          ctx.Fail(key.first, "a manoeuvre replaces a force's values, not its '" + key.first.Scalar() + "'");
+        f[key.first.Scalar()] = key.second;
+      }
+    }
+  }
+  return name;
+}
+
+void BuildModel(YAML::Node& root, ParseContext& ctx, const SolverOverrides& overrides) {
   if (!root || root.IsNull()) ctx.Fail(root, "the model file is empty");
   ctx.CheckKeys(root, {"name", "gravity", "ground", "bodies", "joints", "drivers", "forces", "sensors",
-                       "solver", "output"});
+                       "solver", "output", "manoeuvres", "manoeuvre"});
   Model& model = ctx.model();
+  model.manoeuvre = ApplyManoeuvre(root, overrides.manoeuvre, ctx);
+  ctx.SetEntity("");
   model.name = ctx.String(root, "name", model.name);
   model.gravity_W = ctx.Vector3(root, "gravity", model.gravity_W);
   if (root["ground"]) ParseGround(root["ground"], ctx);

@@ -10,6 +10,7 @@
 #include "flexmb/common/error.h"
 #include "flexmb/common/log.h"
 #include "flexmb/durability/modal_history.h"
+#include "flexmb/forces/reeved_rope.h"
 #include "flexmb/model_file/model_file.h"
 #include "flexmb/results/progress.h"
 #include "flexmb/results/results_writer.h"
@@ -79,8 +80,9 @@ void WriteSummaryFile(const std::string& path, const RunSummary& s) {
 // the simulation itself; throws on any fault, statistics go to s as it runs
 void Simulate(const RunOptions& opt, RunSummary& s, std::unique_ptr<Model>& model,
               std::unique_ptr<Simulator>& sim, Clock::time_point& t_start) {
-  model = LoadModelFile(opt.model_path, SolverOverrides{opt.t_end, opt.dt});
+  model = LoadModelFile(opt.model_path, SolverOverrides{opt.t_end, opt.dt, opt.manoeuvre});
   s.model_name = model->name;
+  s.manoeuvre = model->manoeuvre;
   if (model->solver.analysis == Analysis::kStatics)
     throw InputError("solver.analysis is 'statics': a static solve, not a time integration (flexmb statics)");
   const double t_end = model->solver.t_end;
@@ -91,8 +93,16 @@ void Simulate(const RunOptions& opt, RunSummary& s, std::unique_ptr<Model>& mode
   durability::ModelModalHistory modal(dir.string(), *model);
   const OutputSettings& out = model->output;
   std::unique_ptr<VtkAnimationWriter> anim;
-  if (out.animation || opt.animation)
+  if (out.animation || opt.animation) {
     anim = std::make_unique<VtkAnimationWriter>(dir.string(), *model);
+    // ropes as lines along their path (the falls of a hook block as one)
+    for (const auto& f : model->forces) {
+      if (std::string(f->type()) != "rope") continue;
+      const auto* reeved = dynamic_cast<const ReevedRope*>(f.get());
+      const int path = reeved ? reeved->path_markers() : 2;
+      for (int a = 0; a + 1 < path; ++a) anim->AddLink(f->MarkerAt(a), f->MarkerAt(a + 1));
+    }
+  }
 
   // consistent initial state; warnings are collected, then printed
   t_start = Clock::now();
@@ -236,6 +246,7 @@ std::string SummaryJson(const RunSummary& s) {
   add("message", JsonString(s.message));
   add("model", JsonString(s.model));
   add("model_name", JsonString(s.model_name));
+  add("manoeuvre", JsonString(s.manoeuvre));
   add("t_end_requested", JsonNumber(s.t_end_requested));
   add("t_end", JsonNumber(s.t_end));
   add("steps", std::to_string(s.steps));

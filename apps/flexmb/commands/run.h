@@ -19,6 +19,7 @@ struct RunOptions {
   std::string out_dir;           ///< output directory (created if missing)
   std::optional<double> t_end;   ///< overrides solver.t_end [s]
   std::optional<double> dt;      ///< overrides solver.dt [s]
+  std::string manoeuvre;         ///< the file's manoeuvre to run ("": the file's `manoeuvre`, or none)
   bool animation = false;        ///< write the animation even if output.animation is off
   bool progress = false;         ///< draw a progress bar on `err`
   std::FILE* info = nullptr;     ///< DOF count and file names (nullptr: silent)
@@ -39,6 +40,7 @@ struct RunSummary {
   std::string message;            ///< error message with context (empty if ok)
   std::string model;              ///< model file path
   std::string model_name;         ///< Model::name ("" if not loaded)
+  std::string manoeuvre;          ///< the manoeuvre run ("" if none)
   double t_end_requested = 0.0;   ///< end time asked for [s]
   double t_end = 0.0;             ///< simulated time reached [s]
   long steps = 0;                 ///< accepted steps
