@@ -72,9 +72,10 @@ PYBIND11_MODULE(_core, m) {
   });
 
   m.def("run_file", [](const std::string& model, const std::string& out_dir, std::optional<double> t_end,
-                       std::optional<double> dt, bool animation) {
+                       std::optional<double> dt, bool animation, const std::string& manoeuvre) {
     flexmb::RunOptions o;
     o.model_path = model;
+    o.manoeuvre = manoeuvre;
     o.out_dir = out_dir;
     o.t_end = t_end;
     o.dt = dt;
@@ -86,7 +87,7 @@ PYBIND11_MODULE(_core, m) {
     }
     return py::make_tuple(flexmb::SummaryJson(s), static_cast<int>(s.status));
   }, py::arg("model"), py::arg("out_dir"), py::arg("t_end") = py::none(), py::arg("dt") = py::none(),
-        py::arg("animation") = false,
+        py::arg("animation") = false, py::arg("manoeuvre") = "",
         "`flexmb run`: runs a model file, writes results.csv and summary.json to out_dir; returns the "
         "summary as JSON text and the status (0 ok, 1 input error, 2 numerical error, 3 interrupted, 4 other).");
   m.def("check_report", [](const std::string& model) {

@@ -54,12 +54,14 @@ bool PyOutputGrid::Due(double t) {
   return true;
 }
 
-std::unique_ptr<PySimulation> PySimulation::FromFile(const std::string& path) {
+std::unique_ptr<PySimulation> PySimulation::FromFile(const std::string& path, const std::string& manoeuvre) {
   auto s = std::make_unique<PySimulation>();
   s->path = path;
   {
     InputScope scope(s->inputs);
-    s->model = LoadModelFile(path);
+    SolverOverrides o;
+    o.manoeuvre = manoeuvre;
+    s->model = LoadModelFile(path, o);
   }
   s->SetUp();
   return s;
@@ -222,7 +224,8 @@ void BindSimulation(py::module_& m) {
 
   using S = PySimulation;
   py::class_<S>(m, "Simulation", "A model in simulation (see docs/python.md).")
-      .def_static("from_file", &S::FromFile, py::arg("path"), "Loads a YAML model file.")
+      .def_static("from_file", &S::FromFile, py::arg("path"), py::arg("manoeuvre") = "",
+                  "Loads a YAML model file (with one of its `manoeuvres`, if named).")
       .def_static("from_string", &S::FromString, py::arg("yaml"), py::arg("name") = "<string>",
                   "Loads model-file text; `name` stands for the file in error messages.")
       .def_readonly("path", &S::path)

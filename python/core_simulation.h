@@ -36,7 +36,7 @@ class PyOutputGrid {
 class PySimulation {
  public:
   /// Loads a model file (errors as the command line reports them).
-  static std::unique_ptr<PySimulation> FromFile(const std::string& path);
+  static std::unique_ptr<PySimulation> FromFile(const std::string& path, const std::string& manoeuvre = "");
   /// Loads model-file text; `name` stands for the file in messages.
   static std::unique_ptr<PySimulation> FromString(const std::string& yaml, const std::string& name);
 

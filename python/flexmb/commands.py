@@ -9,11 +9,12 @@ from . import _core
 from .results import read_results
 
 
-def run_file(model, out_dir, t_end=None, dt=None, animation=False):
-    """`flexmb run MODEL -o OUT_DIR`: writes results.csv and summary.json and
-    returns them as Results (summary in .summary). Raises InputError or
-    NumericalError with the command's message if the run failed."""
-    text, status = _core.run_file(os.fspath(model), os.fspath(out_dir), t_end, dt, animation)
+def run_file(model, out_dir, t_end=None, dt=None, animation=False, manoeuvre=None):
+    """`flexmb run MODEL -o OUT_DIR [--manoeuvre NAME]`: writes results.csv
+    and summary.json and returns them as Results (summary in .summary).
+    Raises InputError or NumericalError with the command's message if the
+    run failed."""
+    text, status = _core.run_file(os.fspath(model), os.fspath(out_dir), t_end, dt, animation, manoeuvre or "")
     if status != 0:
         summary = json.loads(text)
         kind = {1: _core.InputError, 2: _core.NumericalError}.get(status, _core.Error)

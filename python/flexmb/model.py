@@ -7,9 +7,10 @@ from . import _core
 from .results import Results
 
 
-def load(path):
-    """Loads a YAML model file; returns a Simulation (errors as `flexmb run`)."""
-    return _core.Simulation.from_file(str(path))
+def load(path, manoeuvre=None):
+    """Loads a YAML model file, with one of its `manoeuvres` if named;
+    returns a Simulation (errors as `flexmb run`)."""
+    return _core.Simulation.from_file(str(path), manoeuvre or "")
 
 
 def from_yaml(text, name="<string>"):

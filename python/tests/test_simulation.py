@@ -271,3 +271,19 @@ def test_ctrl_c_interrupts_long_run(source_dir):
         sim.run()
     timer.join()
     assert 0 < sim.t < 2000
+
+
+def test_manoeuvre_as_on_the_command_line(cli, source_dir, tmp_path):
+    # a manoeuvre of the A01 pendulum that runs it 2 s instead of the file's
+    # t_end: the CLI's --manoeuvre, flexmb.load and run_file agree
+    text = open(pendulum(source_dir)).read() + "\nmanoeuvres:\n  short: {solver: {t_end: 2.0}}\n"
+    model = tmp_path / "pendulum.yaml"
+    model.write_text(text)
+    subprocess.run([cli, "run", str(model), "-o", str(tmp_path / "cli"), "--manoeuvre", "short", "-q"], check=True)
+    sim = flexmb.load(model, manoeuvre="short")
+    assert sim.t_end == 2.0
+    back = flexmb.run_file(model, tmp_path / "rf", manoeuvre="short")
+    assert back.summary["manoeuvre"] == "short" and back.time[-1] == 2.0
+    assert (tmp_path / "rf" / "results.csv").read_bytes() == (tmp_path / "cli" / "results.csv").read_bytes()
+    with pytest.raises(flexmb.InputError, match="no manoeuvre named 'long'"):
+        flexmb.load(model, manoeuvre="long")
