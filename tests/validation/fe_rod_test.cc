@@ -61,7 +61,7 @@ std::string Num(double v) {
 }
 
 // writes `text` to dir/name and reads it with io::ReadNastran
-Mesh ReadDeck(const std::filesystem::path& dir, const std::string& name, const std::string& text) {
+Mesh RodReadDeck(const std::filesystem::path& dir, const std::string& name, const std::string& text) {
   std::ofstream(dir / name) << text;
   return io::ReadNastran((dir / name).string());
 }
@@ -71,7 +71,7 @@ std::string Grid(int id, const Vec3& x) {
 }
 
 // nodal load vector (6 per node) with force f at the node of id `id`
-void AddForce(const Mesh& mesh, int id, const Vec3& f, Eigen::VectorXd& load) {
+void RodAddForce(const Mesh& mesh, int id, const Vec3& f, Eigen::VectorXd& load) {
   load.segment<3>(6 * mesh.NodeIndex(id)) += f;
 }
 
@@ -89,12 +89,12 @@ TEST(FeRod, TripodFromNastranDeckDeflectionAndStress) {
   deck += "CONROD,2,2,4,1," + Num(A) + "\n";
   deck += "PTUBE,30,1," + Num(od) + "," + Num(t) + "\nCTUBE,3,30,3,4\n";
   deck += "SPC1,1,123,1,2,3\n";
-  const Mesh mesh = ReadDeck(dir.path, "tripod.bdf", deck);
+  const Mesh mesh = RodReadDeck(dir.path, "tripod.bdf", deck);
 
   const double L = std::hypot(R, H), cphi = H / L, sphi = R / L;
   const double P = 2.0e4, Hx = 3.0e3;
   Eigen::VectorXd f = Eigen::VectorXd::Zero(6 * mesh.nodes.size());
-  AddForce(mesh, 4, Vec3(0.0, 0.0, -P), f);
+  RodAddForce(mesh, 4, Vec3(0.0, 0.0, -P), f);
   const Eigen::VectorXd u = SolveStatic(mesh, f);
   const int apex = mesh.NodeIndex(4);
   const double dz = P * L / (3.0 * kRodE * A * cphi * cphi);
@@ -113,7 +113,7 @@ TEST(FeRod, TripodFromNastranDeckDeflectionAndStress) {
 
   // horizontal stiffness of the symmetric tripod: 3/2 E A / L sin^2 phi
   f.setZero();
-  AddForce(mesh, 4, Vec3(Hx, 0.0, 0.0), f);
+  RodAddForce(mesh, 4, Vec3(Hx, 0.0, 0.0), f);
   const Eigen::VectorXd uh = SolveStatic(mesh, f);
   const double dx = Hx / (1.5 * kRodE * A / L * sphi * sphi);
   EXPECT_NEAR(uh(6 * apex), dx, 1e-10 * dx);
@@ -130,7 +130,7 @@ std::vector<double> BarFrequencies(int n, double L, double A, double nsm, MassFo
   for (int k = 0; k < n; ++k) deck += "CROD," + std::to_string(k + 1) + ",1," + std::to_string(k + 1) + "," +
                                       std::to_string(k + 2) + "\n";
   deck += "SPC1,1,123,1\nSPC1,1,23,2,THRU," + std::to_string(n + 1) + "\n";
-  const Mesh mesh = ReadDeck(dir.path, "bar.bdf", deck);
+  const Mesh mesh = RodReadDeck(dir.path, "bar.bdf", deck);
   const ModalResult r = SolveMeshModes(mesh, count, form);
   return std::vector<double>(r.frequencies_hz.data(), r.frequencies_hz.data() + count);
 }
@@ -218,10 +218,10 @@ std::map<int, Vec3> ParseCcxDisplacements(const std::filesystem::path& dat) {
 TEST(FeRod, TowerStaticsEqualCalculixT3D2) {
   if (!flexmb::testing::HaveCcx()) GTEST_SKIP() << "ccx (CalculiX) is not installed";
   CcxScratchDir dir("rod_tower");
-  const Mesh mesh = ReadDeck(dir.path, "tower.bdf", TowerDeck(true));
+  const Mesh mesh = RodReadDeck(dir.path, "tower.bdf", TowerDeck(true));
   const Vec3 loads[3] = {Vec3(4.0e3, -1.0e3, -2.0e4), Vec3(-2.5e3, 3.0e3, -1.0e4), Vec3(1.0e3, 2.0e3, 5.0e3)};
   Eigen::VectorXd f = Eigen::VectorXd::Zero(6 * mesh.nodes.size());
-  for (int k = 0; k < 3; ++k) AddForce(mesh, k + 4, loads[k], f);
+  for (int k = 0; k < 3; ++k) RodAddForce(mesh, k + 4, loads[k], f);
   const Eigen::VectorXd u = SolveStatic(mesh, f);
 
   io::WriteAbaqus(mesh, (dir.path / "model.inp").string());
@@ -246,7 +246,7 @@ TEST(FeRod, TowerStaticsEqualCalculixT3D2) {
 TEST(FeRod, TowerCraigBamptonFreeFreeRitzBounds) {
   CcxScratchDir dir("rod_tower_cb");
   FeModel model;
-  model.mesh = ReadDeck(dir.path, "tower_free.bdf", TowerDeck(false));
+  model.mesh = RodReadDeck(dir.path, "tower_free.bdf", TowerDeck(false));
   // full model: 18 translational DOF (no rotations), dense eigenproblem:
   // six rigid-body modes, 12 flexible
   const AssembledModel full = Assemble(model.mesh);
