@@ -238,7 +238,7 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
   // active slots from elements and masses
   std::vector<uint8_t> active(nn, 0);
   for (const Element& e : mesh.elements) {
-    const uint8_t mask = DofsPerNode(e.type) == 6 ? 0b111111 : 0b000111;
+    const uint8_t mask = DofsPerNode(e.type) == 6 && !Traits(e.type).translations_only ? 0b111111 : 0b000111;
     for (int n : e.nodes) active[n] |= mask;
   }
   for (size_t k = 0; k < mesh.point_masses.size(); ++k) {
@@ -391,8 +391,13 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
   for (int e = 0; e < ne; ++e) {
     const Element& el = mesh.elements[e];
     const int dpn = DofsPerNode(el.type);
+    // rods: rotational terms only where all rotations of all its nodes are active
+    bool rotations = true;
+    if (Traits(el.type).translations_only)
+      for (int n : el.nodes)
+        for (int c = 3; c < 6; ++c) rotations = rotations && dm.full[n][c] >= 0;
     for (int n : el.nodes) {
-      for (int c = 0; c < dpn; ++c) block_full.push_back(dm.full[n][c]);
+      for (int c = 0; c < dpn; ++c) block_full.push_back(c < 3 || rotations ? dm.full[n][c] : -1);
     }
     block_ptr[e + 1] = static_cast<int>(block_full.size());
   }

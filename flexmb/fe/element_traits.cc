@@ -4,6 +4,7 @@
 
 #include "flexmb/common/error.h"
 #include "flexmb/fe/elements/beam2.h"
+#include "flexmb/fe/elements/rod2.h"
 #include "flexmb/fe/elements/shell_quad4.h"
 #include "flexmb/fe/elements/shell_tria3.h"
 #include "flexmb/fe/elements/solid_hex20.h"
@@ -38,6 +39,16 @@ void TraitsBeam2Geometric(const ElementInput& in, const Eigen::VectorXd& u, MatX
   Beam2GeometricStiffness(in, N, KG);
 }
 
+// the rod's prestress is its axial force
+void TraitsRod2Geometric(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG, double* axial_force) {
+  MatX S;
+  Eigen::Matrix3d axes;
+  Rod2SectionForces(in, S, axes);
+  const double N = S.row(0).dot(u);
+  if (axial_force != nullptr) *axial_force = N;
+  Rod2GeometricStiffness(in, N, KG);
+}
+
 void TraitsHex8Matrices(const ElementInput& in, MatX& K, MatX& M) { SolidHex8Matrices(in, K, M); }
 void TraitsWedge6Matrices(const ElementInput& in, MatX& K, MatX& M) { SolidWedge6Matrices(in, K, M); }
 void TraitsWedge15Matrices(const ElementInput& in, MatX& K, MatX& M) { SolidWedge15Matrices(in, K, M); }
@@ -55,6 +66,7 @@ constexpr const char* kTraitsCbar[] = {"CBAR", "CBEAM"};
 constexpr const char* kTraitsCtetra[] = {"CTETRA"};
 constexpr const char* kTraitsChexa[] = {"CHEXA"};
 constexpr const char* kTraitsCpenta[] = {"CPENTA"};
+constexpr const char* kTraitsCrod[] = {"CROD", "CONROD", "CTUBE"};
 
 // Abaqus names
 constexpr AbaqusName kTraitsS4[] = {{"S4"}, {"S4R"}, {"S4R5"}};
@@ -75,6 +87,7 @@ constexpr AbaqusName kTraitsC3D6[] = {{"C3D6"}};
 constexpr AbaqusName kTraitsC3D15[] = {{"C3D15"}};
 constexpr AbaqusName kTraitsC3D20[] = {{"C3D20"}};
 constexpr AbaqusName kTraitsC3D20R[] = {{"C3D20R"}};
+constexpr AbaqusName kTraitsT3D2[] = {{"T3D2"}};
 
 // Abaqus faces (element-based surfaces); a shell's both sides are all its nodes
 constexpr AbaqusFace kTraitsQuadFaces[] = {
@@ -291,6 +304,20 @@ constexpr ElementTraits kTraitsRows[] = {
      .stress = TraitsSolidStress<SolidHex20Stress>,
      .corner_stress = SolidHex20CornerStress,
      .geometric_stiffness = TraitsGeometric<SolidHex20GeometricStiffness>},
+    {.type = kRod2,
+     .name = "rod2",
+     .description = "2-node rod",
+     .nodes = 2,
+     .corners = 2,
+     .family = ElementFamily::kBeam,
+     .nastran_cards = kTraitsCrod,
+     .abaqus = kTraitsT3D2,
+     .vtk_code = 3,
+     .body_file_code = 10,
+     .matrices = Rod2Matrices,
+     .stress = Rod2SectionForces,
+     .geometric_stiffness = TraitsRod2Geometric,
+     .translations_only = true},
 };
 
 constexpr bool TraitsRowsInIdOrder() {

@@ -85,6 +85,11 @@ struct ElementTraits {
   void (*geometric_stiffness)(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG,
                               double* axial_force) = nullptr;
 
+  /// Rods (fe/elements/rod2.h): 6 DOF per node, but only the translations
+  /// of its nodes are activated by it; its rotational terms are assembled
+  /// only where both nodes' rotations are all active (fe/assembly.h).
+  bool translations_only = false;
+
   /// Nodal DOF: 6 for shells and beams, 3 for solids.
   int DofsPerNode() const { return family == ElementFamily::kSolid ? 3 : 6; }
 };

@@ -9,6 +9,7 @@
 #include "flexmb/fe/element_matrices.h"
 #include "flexmb/fe/element_traits.h"
 #include "flexmb/fe/elements/element_common.h"
+#include "flexmb/fe/elements/rod2.h"
 #include "flexmb/reduction/element_input.h"
 #include "flexmb/reduction/parallel_rows.h"
 
@@ -99,7 +100,9 @@ StressTable BeamFibreTable(const fe::Mesh& mesh, const StressTable& beam) {
     const int e = beam.elements[kb];
     const fe::BeamSection& sec = mesh.beam_sections[mesh.elements[e].property];
     const double det = sec.Iy * sec.Iz - sec.Iyz * sec.Iyz;
-    if (!(sec.A > 0.0) || !(det > 0.0))
+    // a rod section carries no bending moments: sigma = N / A at every point
+    const bool rod = fe::IsRodSection(sec);
+    if (!(sec.A > 0.0) || !(rod || det > 0.0))
       throw InputError("beam fibre stress: section " + std::to_string(sec.id) + " of element " +
                        std::to_string(mesh.elements[e].id) + " needs A > 0 and Iy Iz > Iyz^2");
     t.elements.push_back(e);
@@ -109,6 +112,10 @@ StressTable BeamFibreTable(const fe::Mesh& mesh, const StressTable& beam) {
       for (size_t p = 0; p < most; ++p) {
         const auto& [y, z] = sec.stress_points[std::min(p, sec.stress_points.size() - 1)];
         const int l = end * static_cast<int>(most) + static_cast<int>(p);
+        if (rod) {
+          t.modes.row(t.Row(static_cast<int>(i), l, 0)) = beam.modes.row(beam.Row(kb, end, 0)) / sec.A;
+          continue;
+        }
         t.modes.row(t.Row(static_cast<int>(i), l, 0)) =
             beam.modes.row(beam.Row(kb, end, 0)) / sec.A +
             (z * sec.Iz - y * sec.Iyz) / det * beam.modes.row(beam.Row(kb, end, 4)) +
@@ -241,6 +248,7 @@ void ElementVonMisesOfValues(const StressTable& table, const Eigen::Ref<const Ve
 double BeamNormalStress(const Eigen::Matrix<double, 6, 1>& f, const fe::BeamSection& section,
                         double y, double z) {
   const double det = section.Iy * section.Iz - section.Iyz * section.Iyz;
+  if (section.A > 0.0 && fe::IsRodSection(section)) return f(0) / section.A;
   if (!(section.A > 0.0) || !(det > 0.0))
     throw InputError("beam normal stress: section " + std::to_string(section.id) +
                      " needs A > 0 and Iy Iz > Iyz^2");

@@ -69,8 +69,9 @@ void ElementVonMisesOfValues(const StressTable& table, const Eigen::Ref<const Ve
 /// sigma = N / A + z a - y b with [Iy -Iyz; -Iyz Iz] (a, b) = (My, Mz)
 /// (a, b = E times the curvatures; the moment-curvature law of
 /// fe/elements/beam2.h), i.e. N / A + My z / Iy - Mz y / Iz for Iyz = 0. Shear stresses of Vy, Vz and
-/// T depend on the section's shape, which the mesh does not store. Throws
-/// InputError if A <= 0 or Iy Iz <= Iyz^2.
+/// T depend on the section's shape, which the mesh does not store. A rod
+/// section (Iy = Iz = Iyz = 0, fe/elements/rod2.h) gives N / A. Throws
+/// InputError if A <= 0 or Iy Iz <= Iyz^2 (other than a rod section).
 double BeamNormalStress(const Eigen::Matrix<double, 6, 1>& f, const fe::BeamSection& section,
                         double y, double z);
 

@@ -114,6 +114,7 @@ class Builder {
   template <class Fits, class Assign>
   void AssignSection(const Card& c, const std::string& entity, const char* family, Fits&& fits, Assign&& assign);
   void SolidSection(const Card& c);
+  void TrussSection(const Card& c, const std::string& entity);
   void ShellSection(const Card& c);
   void BeamSection(const std::vector<Card>& cards, const std::vector<int>& order, int i);
   int SameBeamSection(const fe::BeamSection& v) const;

@@ -180,8 +180,32 @@ void Builder::AssignSection(const Card& c, const std::string& entity, const char
   }
 }
 
+// rods (T3D2) of a *SOLID SECTION: a rod section with the area of the data line
+static bool AbaqusIsRod(fe::ElementType t) { return fe::Traits(t).translations_only; }
+
+void Builder::TrussSection(const Card& c, const std::string& entity) {
+  fe::BeamSection s;
+  s.material = MaterialRef(c, entity);
+  s.origin = c.origin;
+  if (c.data.empty()) Fail(c.origin, entity, "truss elements need the cross-section area on the next line");
+  MaxFields(c.data[0], 1, entity);
+  s.A = Positive(c.data[0], 0, entity, "cross-section area");
+  s.stress_points = {{0.0, 0.0}};
+  s.id = static_cast<int>(mesh_.beam_sections.size()) + 1;
+  int index = SameBeamSection(s);
+  if (index < 0) {
+    index = static_cast<int>(mesh_.beam_sections.size());
+    mesh_.beam_sections.push_back(s);
+  }
+  AssignSection(c, entity, "truss", AbaqusIsRod, [&](fe::Element& e, int) { e.property = index; });
+}
+
 void Builder::SolidSection(const Card& c) {
   const std::string entity = SectionEntity(c);
+  for (int id : SectionSet(c, entity).items) {
+    const ElementRecord& r = elements_.at(id);
+    if (r.kind == Kind::kStructural && AbaqusIsRod(mesh_.elements[r.index].type)) return TrussSection(c, entity);
+  }
   fe::SolidSection s;
   s.id = static_cast<int>(mesh_.solid_sections.size()) + 1;
   s.material = MaterialRef(c, entity);
@@ -298,7 +322,7 @@ void Builder::BeamSection(const std::vector<Card>& cards, const std::vector<int>
   }
   // one section for the shear-flexible (B31) and one for the Euler-Bernoulli (B33) elements
   int index[2] = {-1, -1};
-  AssignSection(c, entity, "beam", IsBeam,
+  AssignSection(c, entity, "beam", [](fe::ElementType t) { return IsBeam(t) && !AbaqusIsRod(t); },
                 [&](fe::Element& e, int k) {
                   const int eb = euler_[k] ? 1 : 0;
                   if (index[eb] < 0) {

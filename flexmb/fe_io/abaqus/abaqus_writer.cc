@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "flexmb/common/error.h"
+#include "flexmb/common/log.h"
 #include "flexmb/fe/element_traits.h"
 #include "flexmb/fe_io/abaqus/abaqus_deck.h"
 #include "flexmb/fe_io/text_scanner.h"
@@ -267,6 +268,15 @@ void WriteAbaqus(const fe::Mesh& mesh, const std::string& path) {
       std::fprintf(f, "*SHELL SECTION, ELSET=%s, MATERIAL=%s", g.elset.c_str(), material_name[s.material].c_str());
       if (e.shell_offset != 0.0) std::fprintf(f, ", OFFSET=%s", Num(-e.shell_offset / s.thickness).c_str());
       std::fprintf(f, "\n%s\n", Num(s.thickness).c_str());
+    } else if (fe::Traits(e.type).translations_only) {
+      // rods as trusses (T3D2): the area only
+      const fe::BeamSection& s = mesh.beam_sections[e.property];
+      if (s.J != 0.0)
+        LogWarning(FormatWithContext("T3D2 elements carry no torsion: the rods' torsion constant J = " + Num(s.J) +
+                                         " is not written",
+                                     {s.origin.file, s.origin.line, "rod section " + std::to_string(s.id)}));
+      std::fprintf(f, "*SOLID SECTION, ELSET=%s, MATERIAL=%s\n%s\n", g.elset.c_str(),
+                   material_name[s.material].c_str(), Num(s.A).c_str());
     } else if (IsBeam(e.type)) {
       const fe::BeamSection& s = mesh.beam_sections[e.property];
       const fe::Material& m = mesh.materials[s.material];

@@ -12,7 +12,8 @@ namespace flexmb::io {
 /// Writes `mesh` as a flat input deck that CalculiX 2.20 and ReadAbaqus
 /// accept: nodes, elements (quad4 -> S4, tria3 -> S3, hex8 -> C3D8I, tet4
 /// -> C3D4, tet10 -> C3D10, beam2 -> B31, or B33 without shear
-/// flexibility), the mesh's node and element sets, materials, one section
+/// flexibility, rod2 -> T3D2 with its area in a *SOLID SECTION; a rod's
+/// torsion constant J is dropped with a warning), the mesh's node and element sets, materials, one section
 /// per run of elements sharing a section (element sets named
 /// flexmb_<family>_section_<n>), point masses (MASS / ROTARYI elements),
 /// rigid links (*RIGID BODY, or *COUPLING / *KINEMATIC for a partial

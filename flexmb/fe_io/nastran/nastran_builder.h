@@ -6,6 +6,7 @@
 /// nastran_geometry.cc (defaults, coordinate systems, materials, grids),
 /// nastran_properties.cc (PSHELL, PSOLID, PBAR, PBARL, PBEAM, PBEAML),
 /// nastran_elements.cc (shells, solids, beams, CONM2, CONM1),
+/// nastran_rods.cc (PROD, PTUBE, CROD, CONROD, CTUBE),
 /// nastran_springs.cc (PELAS, CELAS1, CELAS2) and
 /// nastran_constraints.cc (RBE2, SPC, ASET / BSET, SET1).
 
@@ -116,6 +117,11 @@ class Builder {
   void ReadPbar(const Entry& e, fe::BeamSection& s);
   void ReadBeamLibrary(const Entry& e, fe::BeamSection& s);
   void ReadPbeam(const Entry& e, fe::BeamSection& s);
+
+  // nastran_rods.cc
+  void ReadProd(const Entry& e, fe::BeamSection& s);
+  void ReadPtube(const Entry& e, fe::BeamSection& s);
+  void AddRod(const Entry& e);
 
   // nastran_elements.cc
   fe::Element NewElement(const Entry& e, fe::ElementType type);

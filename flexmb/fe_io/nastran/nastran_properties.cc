@@ -51,6 +51,8 @@ void Builder::AddProperty(const Entry& e) {
     if (n == "PBAR") ReadPbar(e, s);
     if (n == "PBARL" || n == "PBEAML") ReadBeamLibrary(e, s);
     if (n == "PBEAM") ReadPbeam(e, s);
+    if (n == "PROD") ReadProd(e, s);
+    if (n == "PTUBE") ReadPtube(e, s);
     index = static_cast<int>(mesh_.beam_sections.size());
     mesh_.beam_sections.push_back(s);
   }

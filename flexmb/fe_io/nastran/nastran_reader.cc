@@ -30,7 +30,7 @@ const std::map<std::string, Phase>& Phases() {
         {Phase::kCoords, {"CORD2R", "CORD2C", "CORD2S", "CORD1R", "CORD1C", "CORD1S", "CORD3G", "CORD3R"}},
         {Phase::kMaterials, {"MAT1", "MAT2", "MAT3", "MAT8", "MAT9", "MAT10", "MAT11"}},
         {Phase::kGrids, {"GRID"}},
-        {Phase::kProperties, {"PSHELL", "PBAR", "PBARL", "PBEAM", "PBEAML", "PSOLID", "PELAS"}},
+        {Phase::kProperties, {"PSHELL", "PBAR", "PBARL", "PBEAM", "PBEAML", "PSOLID", "PELAS", "PROD", "PTUBE"}},
         {Phase::kLinks, {"RBE2", "CONM2", "CONM1", "CELAS1", "CELAS2"}},
         {Phase::kSets, {"SPC1", "SPC", "ASET", "ASET1", "BSET", "BSET1", "SET1"}}};
     std::map<std::string, Phase> m;
@@ -50,12 +50,12 @@ const std::set<std::string> kSilent = {"PARAM", "EIGRL", "EIGR", "SPCADD"};
 // cards that would change stiffness or mass: reading on without them would
 // give a wrong model (the element cards of fe/element_traits.h come first)
 const std::set<std::string> kUnsupported = {
-    "CROD",   "CONROD", "CTUBE",   "CBUSH",   "CBUSH1D", "CBUSH2D",
+    "CBUSH",   "CBUSH1D", "CBUSH2D",
     "CELAS3", "CELAS4", "CGAP",    "CQUAD",   "CQUAD8",  "CQUADR",  "CTRIA6", "CTRIAR",
     "CPENTA", "CPYRAM", "CSHEAR",  "CBEND",   "CBEAM3",  "CWELD",   "CFAST",  "CSEAM",
     "CTRIAX", "CTRIAX6", "CQUADX", "CMASS1",  "CMASS2",  "CMASS3",  "CMASS4",
     "GENEL",  "CRAC2D", "CRAC3D",  "RBE1",    "RBE3",    "RBAR",    "RBAR1",  "RROD",
-    "RTRPLT", "RTRPLT1", "RSPLINE", "RJOINT", "RSSCON",  "MPC",     "PROD",   "PTUBE",
+    "RTRPLT", "RTRPLT1", "RSPLINE", "RJOINT", "RSSCON",  "MPC",
     "PBUSH",  "PBUSH1D", "PBUSH2D", "PGAP",    "PCOMP",   "PCOMPG", "PCOMPLS",
     "PSHEAR", "PBCOMP", "PBEND",   "PBEAM3",  "PMASS",   "PWELD",   "PFAST",  "PSEAM",
     "PLPLANE", "PLSOLID", "PSHLN1", "PSHLN2", "PSLDN1",  "PBRSECT", "PBMSECT", "PCONEAX"};
@@ -118,6 +118,7 @@ void Builder::Dispatch(const Entry& e) {
   if (n == "GRDSET" || n == "BAROR" || n == "BEAMOR") return AddDefaults(e);
   if (n.rfind("MAT", 0) == 0) return AddMaterial(e);
   if (n == "GRID") return AddGrid(e);
+  if (n == "CROD" || n == "CONROD" || n == "CTUBE") return AddRod(e);
   for (const fe::ElementTraits& t : fe::AllElementTraits())
     for (const char* card : t.nastran_cards)
       if (n == card) {

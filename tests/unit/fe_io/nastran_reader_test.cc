@@ -433,19 +433,19 @@ TEST(NastranReader, UnsupportedCardsAreListedInOneError) {
   const std::string path = WriteScratch("unsupported.bdf",
                                         "GRID,1,,0.,0.,0.\n"
                                         "GRID,2,,1.,0.,0.\n"
-                                        "CROD,7,1,1,2\n"
+                                        "CBUSH,7,1,1,2\n"
                                         "FORCE,1,1,,1.,1.,0.,0.\n"
                                         "RBE3,9,,1,123456,1.,123,2\n"
-                                        "CROD,8,1,1,2\n");
+                                        "CBUSH,8,1,1,2\n");
   try {
     ReadNastran(path);
     FAIL() << "no error";
   } catch (const InputError& e) {
     const std::string m = e.what();
-    EXPECT_NE(m.find("unsupported.bdf:3: CROD 7: 2 card types are not supported and would change the stiffness or mass"),
+    EXPECT_NE(m.find("unsupported.bdf:3: CBUSH 7: 2 card types are not supported and would change the stiffness or mass"),
               std::string::npos)
         << m;
-    EXPECT_NE(m.find("CROD (x2, first at "), std::string::npos) << m;
+    EXPECT_NE(m.find("CBUSH (x2, first at "), std::string::npos) << m;
     EXPECT_NE(m.find("unsupported.bdf:5)"), std::string::npos) << m;  // RBE3
     EXPECT_EQ(m.find("FORCE"), std::string::npos) << m;
   }
@@ -484,7 +484,7 @@ TEST(NastranReader, BadInputNamesFileLineAndEntity) {
            ":2: PSHELL 1: thickness T must be positive", {}},
           {"area_not_positive.bdf", "MAT1,1,2.1+11,,.3\nPBAR,3,1,0.,1.-8,1.-8,2.-8\n",
            ":2: PBAR 3: area A must be positive", {}},
-          {"unsupported_element.bdf", kBase + "CROD,5,1,1,2\n", ":7: CROD 5: CROD is not supported", {}},
+          {"unsupported_element.bdf", kBase + "CBUSH,5,1,1,2\n", ":7: CBUSH 5: CBUSH is not supported", {}},
           {"pshell_mid2.bdf", "MAT1,1,2.1+11,,.3\nMAT1,2,2.1+11,,.3\nPSHELL,1,1,.01,2\n",
            ":3: PSHELL 1: MID2 = 2 differs from MID1 = 1", {"unsupported"}},
           {"chexa15.bdf",
