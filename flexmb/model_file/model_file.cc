@@ -74,41 +74,30 @@ YAML::Node NamedEntry(const YAML::Node& root, const char* key, const std::string
   return YAML::Node(YAML::NodeType::Undefined);
 }
 
-// Applies the selected entry of `manoeuvres` (docs/model-file.md,
-// "Manoeuvres") to the file's own entries, in place: solver keys, driver
-// functions, keys of force entries. Returns the manoeuvre's name ("" if none).
-std::string ApplyManoeuvre(YAML::Node& root, const std::string& requested, ParseContext& ctx) {
-  ctx.SetEntity("manoeuvres");
-  const YAML::Node all = root["manoeuvres"];
-  if (all && !all.IsMap()) ctx.Fail(all, "expected 'manoeuvres' as a map of named manoeuvres");
-  std::string name = requested;
-  if (name.empty() && root["manoeuvre"]) name = ctx.String(root, "manoeuvre");
-  if (name.empty()) return "";
-  std::string names;
-  if (all)
-    for (const auto& kv : all) names += (names.empty() ? "" : ", ") + kv.first.Scalar();
-  if (!all || !all[name]) {
-    const std::string msg = "no manoeuvre named '" + name + "' in the file (" +
-                            (names.empty() ? std::string("it defines none") : "defined: " + names) + ")";
-    if (requested.empty()) ctx.Fail(root["manoeuvre"], msg);
-    throw InputError("--manoeuvre " + name + ": " + msg, {ctx.file(), 0, ""});
-  }
-  const YAML::Node m = all[name];
+void BuildSections(const YAML::Node& root, ParseContext& ctx, const SolverOverrides& overrides);
+
+// Checks one entry of `manoeuvres` (its keys, and that the drivers and
+// force elements it names exist); with `apply`, replaces the file's values
+// by its own, in place: solver keys, driver functions, keys of force
+// entries (docs/model-file.md, "Manoeuvres").
+void Manoeuvre(YAML::Node& root, const std::string& name, const YAML::Node& m, bool apply, ParseContext& ctx) {
   ctx.SetEntity("manoeuvre '" + name + "'");
-  if (m.IsNull()) return name;  // the file as written
+  if (m.IsNull()) return;  // the file as written
   ctx.CheckKeys(m, {"description", "solver", "drivers", "forces"});
   if (const YAML::Node solver = m["solver"]) {
     if (!solver.IsMap()) ctx.Fail(solver, "expected 'solver' as a map of solver keys");
-    if (!root["solver"]) root["solver"] = YAML::Node(YAML::NodeType::Map);
-    YAML::Node target = root["solver"];
-    for (const auto& kv : solver) target[kv.first.Scalar()] = kv.second;
+    if (apply) {
+      if (!root["solver"]) root["solver"] = YAML::Node(YAML::NodeType::Map);
+      YAML::Node target = root["solver"];
+      for (const auto& kv : solver) target[kv.first.Scalar()] = kv.second;
+    }
   }
   if (const YAML::Node drivers = m["drivers"]) {
     if (!drivers.IsMap()) ctx.Fail(drivers, "expected 'drivers' as a map: driver name -> its function");
     for (const auto& kv : drivers) {
       YAML::Node d = NamedEntry(root, "drivers", kv.first.Scalar());
       if (!d) ctx.Fail(kv.first, "the file has no driver named '" + kv.first.Scalar() + "'");
-      d["function"] = kv.second;
+      if (apply) d["function"] = kv.second;
     }
   }
   if (const YAML::Node forces = m["forces"]) {
@@ -120,10 +109,35 @@ std::string ApplyManoeuvre(YAML::Node& root, const std::string& requested, Parse
       for (const auto& key : kv.second) {
         if (key.first.Scalar() == "name" || key.first.Scalar() == "type")
           ctx.Fail(key.first, "a manoeuvre replaces a force's values, not its '" + key.first.Scalar() + "'");
-        f[key.first.Scalar()] = key.second;
+        if (apply) f[key.first.Scalar()] = key.second;
       }
     }
   }
+}
+
+// Checks every entry of `manoeuvres` and applies the selected one (the
+// caller's, else the file's `manoeuvre`); returns its name ("" if none).
+std::string ApplyManoeuvre(YAML::Node& root, const std::string& requested, ParseContext& ctx) {
+  ctx.SetEntity("manoeuvres");
+  const YAML::Node all = root["manoeuvres"];
+  if (all && !all.IsMap()) ctx.Fail(all, "expected 'manoeuvres' as a map of named manoeuvres");
+  std::string name = requested;
+  if (name.empty() && root["manoeuvre"]) name = ctx.String(root, "manoeuvre");
+  std::string names;
+  if (all)
+    for (const auto& kv : all) {
+      names += (names.empty() ? "" : ", ") + kv.first.Scalar();
+      if (kv.first.Scalar() != name) Manoeuvre(root, kv.first.Scalar(), kv.second, false, ctx);
+    }
+  if (name.empty()) return "";
+  if (!all || !all[name]) {
+    ctx.SetEntity("manoeuvres");
+    const std::string msg = "no manoeuvre named '" + name + "' in the file (" +
+                            (names.empty() ? std::string("it defines none") : "defined: " + names) + ")";
+    if (requested.empty()) ctx.Fail(root["manoeuvre"], msg);
+    throw InputError("--manoeuvre " + name + ": " + msg, {ctx.file(), 0, ""});
+  }
+  Manoeuvre(root, name, all[name], true, ctx);
   return name;
 }
 
@@ -134,6 +148,24 @@ void BuildModel(YAML::Node& root, ParseContext& ctx, const SolverOverrides& over
   Model& model = ctx.model();
   model.manoeuvre = ApplyManoeuvre(root, overrides.manoeuvre, ctx);
   ctx.SetEntity("");
+  if (!model.manoeuvre.empty()) {
+    // a replaced value is read where the file's own was: say which manoeuvre
+    try {
+      BuildSections(root, ctx, overrides);
+    } catch (const InputError& e) {
+      throw InputError(e.message() + " (manoeuvre '" + model.manoeuvre + "')", e.context());
+    } catch (const YAML::Exception& e) {
+      throw InputError(e.msg + " (manoeuvre '" + model.manoeuvre + "')",
+                       {ctx.file(), e.mark.is_null() ? 0 : e.mark.line + 1, ctx.entity()});
+    }
+    return;
+  }
+  BuildSections(root, ctx, overrides);
+}
+
+// the sections of the model file, in their order, and Model::Finalize
+void BuildSections(const YAML::Node& root, ParseContext& ctx, const SolverOverrides& overrides) {
+  Model& model = ctx.model();
   model.name = ctx.String(root, "name", model.name);
   model.gravity_W = ctx.Vector3(root, "gravity", model.gravity_W);
   if (root["ground"]) ParseGround(root["ground"], ctx);

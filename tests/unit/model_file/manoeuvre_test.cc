@@ -89,9 +89,16 @@ TEST(Manoeuvre, ErrorsNameTheManoeuvreAndLine) {
   EXPECT_NE(ManoeuvreError(base + "  bad: {forces: {s: {type: bushing}}}\n", "bad").find("not its 'type'"),
             std::string::npos);
   EXPECT_NE(ManoeuvreError(base + "  bad: {joints: {}}\n", "bad").find("joints"), std::string::npos);
-  // a replaced value is checked like the file's own, at the manoeuvre's line
-  EXPECT_NE(ManoeuvreError(base + "  bad: {forces: {s: {stiffness: stiff}}}\n", "bad").find("m.yaml:19: "),
+  // every manoeuvre's names are checked, whichever runs
+  EXPECT_NE(ManoeuvreError(base + "  bad: {drivers: {nothing: 1}}\n", "fast").find("no driver named 'nothing'"),
             std::string::npos);
+  EXPECT_NE(ManoeuvreError(base + "  bad: {drivers: {nothing: 1}}\n").find("no driver named 'nothing'"),
+            std::string::npos);
+  // a replaced value is checked like the file's own, at the manoeuvre's
+  // line, with the manoeuvre named
+  const std::string value_error = ManoeuvreError(base + "  bad: {forces: {s: {stiffness: stiff}}}\n", "bad");
+  EXPECT_NE(value_error.find("m.yaml:19: "), std::string::npos) << value_error;
+  EXPECT_NE(value_error.find("(manoeuvre 'bad')"), std::string::npos) << value_error;
 }
 
 }  // namespace
