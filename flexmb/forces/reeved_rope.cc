@@ -26,7 +26,7 @@ ReevedRope::ReevedRope(std::string name, RopeLaw law, int path_markers, RopeDrum
     throw InputError(fmt::format("the drum radius must be finite and > 0, got {:g} m", drum_.radius), ctx);
   if (drum_.joint->NumCoordinates() < 1 || !drum_.joint->CoordinateIsAngle(0))
     throw InputError(std::string("the drum joint '") + drum_.joint->name() + "' (" + drum_.joint->type() +
-                         ") has no angle coordinate: the drum turns in a revolute joint",
+                         "): its first coordinate is not an angle; the drum turns in a revolute joint",
                      ctx);
   if (law_.law().hoist_speed || law_.law().free_length_function)
     throw InputError("with a drum the winch is the drum: give neither hoist_speed nor a free-length function",

@@ -231,6 +231,8 @@ std::vector<int> RopePath(const YAML::Node& node, ParseContext& ctx) {
     YAML::Node entry;
     entry["path"] = path[k];
     markers.push_back(ctx.Marker(entry, "path"));
+    if (k > 0 && markers[k] == markers[k - 1])
+      ctx.Fail(path[k], "'path' lists marker '" + path[k].Scalar() + "' twice in a row: a span needs two markers");
   }
   return markers;
 }
