@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <numbers>
 #include <stdexcept>
@@ -86,6 +87,14 @@ inline double BodyEnergy(const Model& m, const State& s) {
          b->GravityPotential(s.q.data() + b->q_offset, m.gravity_W);
   }
   return e;
+}
+
+/// x as text with all its digits (%.17g), for numbers written into model
+/// text by a test.
+inline std::string ExactNumber(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
 }
 
 }  // namespace flexmb::validation

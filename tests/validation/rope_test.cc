@@ -21,13 +21,6 @@ namespace rope_test {
 
 constexpr double kRopeG = 9.81;
 
-/// x as text with all its digits.
-std::string RopeNum(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
-
 /// A hook block `hook` (mass m, origin = rope marker `top`) hanging from the
 /// ground marker `head` at the origin on a rope with the given extra keys.
 std::string RopeModel(double m, const std::string& hook_position, const std::string& rope_keys,
@@ -38,7 +31,7 @@ std::string RopeModel(double m, const std::string& hook_position, const std::str
          "    - {name: head, position: [0, 0, 0]}\n"
          "bodies:\n"
          "  - name: hook\n"
-         "    mass: " + RopeNum(m) + "\n"
+         "    mass: " + ExactNumber(m) + "\n"
          "    inertia: [10, 10, 10]\n"
          "    position: " + hook_position + "\n"
          "    markers:\n"
@@ -61,7 +54,7 @@ TEST(Rope, StaticStretchOnFalls) {
     // start 1 mm below the unstretched position (taut), on a vertical slide
     const double z0 = -(L0 / n + 1e-3);
     auto model = LoadModelString(
-        RopeModel(m, "[0, 0, " + RopeNum(z0) + "]",
+        RopeModel(m, "[0, 0, " + ExactNumber(z0) + "]",
                   "axial_stiffness: 5e7, free_length: 40, falls: " + std::to_string(n),
                   "joints:\n  - {name: slide, type: prismatic, i: ground.head, j: hook.top}\n"),
         "static.yaml");
@@ -90,7 +83,7 @@ TEST(Rope, PendulumPeriodWithStretchedLength) {
   const double L = L0 * (1.0 + m * kRopeG / EA);
   const double x0 = L * std::sin(theta0), z0 = -L * std::cos(theta0);
   auto model = LoadModelString(
-      RopeModel(m, "[" + RopeNum(x0) + ", 0, " + RopeNum(z0) + "]",
+      RopeModel(m, "[" + ExactNumber(x0) + ", 0, " + ExactNumber(z0) + "]",
                 "axial_stiffness: 1e5, free_length: 10", "solver: {t_end: 30, dt: 0.005}\n"),
       "pendulum.yaml");
   Simulator sim(*model);
@@ -135,7 +128,7 @@ TEST(Rope, LiftOffPeakForce) {
   const int n = 2;
   const double l0 = L0 / n + m * kRopeG * L0 / (n * n * EA);
   auto model = LoadModelString(
-      RopeModel(m, "[0, 0, " + RopeNum(-l0) + "]",
+      RopeModel(m, "[0, 0, " + ExactNumber(-l0) + "]",
                 "axial_stiffness: 4e7, free_length: 40, falls: 2, hoist_speed: 0.6",
                 "solver: {t_end: 0.3, dt: 2.5e-4}\n"),
       "liftoff.yaml");
@@ -176,9 +169,9 @@ TEST(Rope, LiftOffPeakForce) {
 double DropPeak(double dt, long& rejected) {
   const double L0 = 20.0, h = 0.5;
   auto model = LoadModelString(
-      RopeModel(1000.0, "[0, 0, " + RopeNum(-(L0 - h)) + "]",
+      RopeModel(1000.0, "[0, 0, " + ExactNumber(-(L0 - h)) + "]",
                 "axial_stiffness: 2e7, free_length: 20",
-                "solver: {t_end: 0.5, dt: " + RopeNum(dt) + "}\n"),
+                "solver: {t_end: 0.5, dt: " + ExactNumber(dt) + "}\n"),
       "drop.yaml");
   Simulator sim(*model);
   sim.Initialize();
@@ -217,7 +210,7 @@ TEST(Rope, DampingTimeGivesDampingRatio) {
   const double k = n * n * EA / L0, w = std::sqrt(k / m);
   const double z_eq = -(L0 / n + m * kRopeG * L0 / (n * n * EA));
   auto model = LoadModelString(
-      RopeModel(m, "[0, 0, " + RopeNum(z_eq - 1e-3) + "]",
+      RopeModel(m, "[0, 0, " + ExactNumber(z_eq - 1e-3) + "]",
                 "axial_stiffness: 2e7, free_length: 20, falls: 2, damping_time: 0.001",
                 "solver: {t_end: 1, dt: 1e-4, rho_inf: 1}\n"),
       "damping.yaml");

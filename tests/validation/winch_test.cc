@@ -18,12 +18,6 @@ namespace winch_test {
 
 constexpr double kWinchG = 9.81;
 
-std::string WinchNum(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
-
 /// A drum (inertia J about its axle, world y) at (-5, 0, 1), the rope
 /// leaving it at `exit` = (-5, 0, 1.25), over a sheave fixed at (0, 0, 20)
 /// down to the hook marker of `load` (mass m, origin 0.5 m below the hook)
@@ -41,14 +35,14 @@ std::string WinchModel(double J, double m, double load_z, int falls, const std::
          "bodies:\n"
          "  - name: drum\n"
          "    mass: 200\n"
-         "    inertia: [" + WinchNum(J) + ", " + WinchNum(J) + ", " + WinchNum(J) + "]\n"
+         "    inertia: [" + ExactNumber(J) + ", " + ExactNumber(J) + ", " + ExactNumber(J) + "]\n"
          "    position: [-5, 0, 1]\n" + drum_keys +
          "    markers:\n"
          "      - {name: axle, position: [0, 0, 0], orientation: {z_axis: [0, 1, 0]}}\n"
          "  - name: load\n"
-         "    mass: " + WinchNum(m) + "\n"
+         "    mass: " + ExactNumber(m) + "\n"
          "    inertia: [1000, 1000, 1000]\n"
-         "    position: [0, 0, " + WinchNum(load_z) + "]\n"
+         "    position: [0, 0, " + ExactNumber(load_z) + "]\n"
          "    markers:\n"
          "      - {name: hook, position: [0, 0, 0.5]}\n"
          "      - {name: base, position: [0, 0, -0.5]}\n"
@@ -73,10 +67,10 @@ TEST(Winch, LiftOffOfAGroundedLoadAgainstTheTwoMassSolution) {
   const double Fd = 1.2 * m * kWinchG;
   // the load rests on the contact, compressed by m g / kc
   const double load_z = 0.5 - m * kWinchG / kc;
-  const std::string drum = "    angular_velocity: [0, " + WinchNum(-v0 / R) + ", 0]\n";
+  const std::string drum = "    angular_velocity: [0, " + ExactNumber(-v0 / R) + ", 0]\n";
   const std::string extra =
-      "  - {name: motor, type: joint_motor, joint: winch, function: " + WinchNum(-Fd * R) + "}\n"
-      "  - {name: ground_contact, type: plane_contact, marker: load.base, stiffness: " + WinchNum(kc) + "}\n"
+      "  - {name: motor, type: joint_motor, joint: winch, function: " + ExactNumber(-Fd * R) + "}\n"
+      "  - {name: ground_contact, type: plane_contact, marker: load.base, stiffness: " + ExactNumber(kc) + "}\n"
       "solver: {t_end: 1.0, dt: 2.0e-4}\n";
   auto model = LoadModelString(WinchModel(J, m, load_z, 1, drum, "axial_stiffness: 1e7", extra), "liftoff.yaml");
   Simulator sim(*model);
@@ -152,18 +146,18 @@ TEST(Winch, HaulingAndLoweringConserveEnergy) {
   for (int k = 0; k <= 2000; ++k) {
     const double t = 0.01 * k;
     if (k > 0) hauled += 0.01 * 0.5 * (WinchRopeSpeed(t - 0.01) + WinchRopeSpeed(t));
-    if (k % 25 == 0) table += std::string(k ? ", " : "") + "[" + WinchNum(t) + ", " + WinchNum(-hauled / R) + "]";
+    if (k % 25 == 0) table += std::string(k ? ", " : "") + "[" + ExactNumber(t) + ", " + ExactNumber(-hauled / R) + "]";
   }
   table += "], interpolation: spline}";
   const double hold = -R * m * kWinchG / n;  // torque holding the load
   const std::string extra =
-      "  - {name: motor, type: joint_motor, joint: winch, function: " + WinchNum(hold) + ", target: " + table +
+      "  - {name: motor, type: joint_motor, joint: winch, function: " + ExactNumber(hold) + ", target: " + table +
       ", kp: 2.0e5, kd: 2.0e4}\n"
       "solver: {t_end: 20.0, dt: 2.0e-3, rho_inf: 1.0}\n";
   auto model = LoadModelString(
       WinchModel(J, m, load_z, n, "",
-                 "axial_stiffness: " + WinchNum(EA) + ", damping_time: " + WinchNum(beta) +
-                     ", free_length: " + WinchNum(L0),
+                 "axial_stiffness: " + ExactNumber(EA) + ", damping_time: " + ExactNumber(beta) +
+                     ", free_length: " + ExactNumber(L0),
                  extra),
       "cycle.yaml");
   Simulator sim(*model);

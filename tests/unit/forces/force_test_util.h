@@ -9,9 +9,21 @@
 
 #include "flexmb/common/error.h"
 #include "flexmb/forces/force_element.h"
+#include "flexmb/forces/rope.h"
 #include "flexmb/joints/motion_driver.h"
 
 namespace flexmb::testing {
+
+/// Rope properties with a constant free length L0 [m]: EA [N], falls,
+/// damping time beta [s].
+inline RopeLaw TestRopeLaw(double EA, int falls, double beta, double L0) {
+  RopeLaw law;
+  law.axial_stiffness = EA;
+  law.falls = falls;
+  law.damping_time = beta;
+  law.free_length = L0;
+  return law;
+}
 
 inline Vec3 RandomVec(std::mt19937& rng, double scale) {
   std::uniform_real_distribution<double> u(-scale, scale);

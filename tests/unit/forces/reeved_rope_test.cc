@@ -22,15 +22,6 @@
 namespace flexmb {
 namespace {
 
-RopeLaw ReevedTestLaw(double EA, int falls, double beta, double L0) {
-  RopeLaw law;
-  law.axial_stiffness = EA;
-  law.falls = falls;
-  law.damping_time = beta;
-  law.free_length = L0;
-  return law;
-}
-
 /// Evaluates the rope on the marker states `ms` (with tangents).
 ForceEval ReevedEval(const ReevedRope& rope, const std::vector<MarkerState>& ms, double t) {
   ForceEval e;
@@ -63,7 +54,7 @@ TEST(ReevedRope, TensionAlongThePathAndOnTheFalls) {
   // winch exit (0,0,2), sheave (10,0,12), hook 9 m below on 2 falls:
   // l = 10 sqrt(2) + 2 * 9; L0 = l / 1.002: eps = 2e-3, T = 2000 N
   const double l = 10.0 * std::sqrt(2.0) + 18.0;
-  const ReevedRope rope("r", ReevedTestLaw(1e6, 2, 0.0, l / 1.002), 3);
+  const ReevedRope rope("r", testing::TestRopeLaw(1e6, 2, 0.0, l / 1.002), 3);
   std::vector<MarkerState> ms(3);
   ms[0].p_WM = Vec3(0, 0, 2);
   ms[1].p_WM = Vec3(10, 0, 12);
@@ -76,14 +67,14 @@ TEST(ReevedRope, TensionAlongThePathAndOnTheFalls) {
   EXPECT_LT((e.wrench_n.segment<3>(12) - Vec3(0, 0, 2 * T)).norm(), 1e-6);            // hook on 2 falls
   EXPECT_NEAR(ReevedEnergy(rope, ms, 0.0), 0.5 * 1e6 * (l / 1.002) * 4e-6, 1e-9);
   // slack
-  const ReevedRope slack("s", ReevedTestLaw(1e6, 2, 0.0, l + 1e-3), 3);
+  const ReevedRope slack("s", testing::TestRopeLaw(1e6, 2, 0.0, l + 1e-3), 3);
   EXPECT_EQ(ReevedEval(slack, ms, 0.0).wrench_n.cwiseAbs().maxCoeff(), 0.0);
 }
 
 TEST(ReevedRope, DrumTorqueIsTheEnergyDerivative) {
   // drum of radius 0.3 m turned by 0.5 rad pays out 0.15 m: L0 = 20.15 m
   RevoluteJoint joint("winch");
-  const ReevedRope rope("r", ReevedTestLaw(2e6, 1, 0.0, 20.0), 2, RopeDrum{&joint, 0.3});
+  const ReevedRope rope("r", testing::TestRopeLaw(2e6, 1, 0.0, 20.0), 2, RopeDrum{&joint, 0.3});
   std::vector<MarkerState> ms(4);
   ms[0].p_WM = Vec3(0, 0, 0);
   ms[1].p_WM = Vec3(0, 0, -20.2);
@@ -115,7 +106,7 @@ TEST(ReevedRope, TangentsMatchFiniteDifferences) {
       }
       // taut: free length 5 % short of the path; damping with a kept sign
       const double L0 = l / 1.05 - (drum ? 0.2 * angle : 0.0);
-      const ReevedRope rope("r", ReevedTestLaw(1e5, 3, 0.002, L0), path, d);
+      const ReevedRope rope("r", testing::TestRopeLaw(1e5, 3, 0.002, L0), path, d);
       const ForceEval e = ReevedEval(rope, ms, 0.0);
       ASSERT_GT(e.wrench_n.cwiseAbs().maxCoeff(), 1e-3) << "trivial wrench";
       const int n = 6 * static_cast<int>(ms.size());
@@ -146,7 +137,7 @@ TEST(ReevedRope, ElasticWrenchIsMinusTheEnergyGradientAndDampingDissipates) {
   ReevedDrumMarkers(rng, 1.2, ms[3], ms[4]);
   const double l = (ms[1].p_WM - ms[0].p_WM).norm() + 2.0 * (ms[2].p_WM - ms[1].p_WM).norm();
   const double L0 = l / 1.03 - 0.25 * 1.2;
-  const ReevedRope elastic("e", ReevedTestLaw(1e5, 2, 0.0, L0), 3, RopeDrum{&joint, 0.25});
+  const ReevedRope elastic("e", testing::TestRopeLaw(1e5, 2, 0.0, L0), 3, RopeDrum{&joint, 0.25});
   const ForceEval e = ReevedEval(elastic, ms, 0.0);
   const double h = 1e-6;
   for (int c = 0; c < 30; ++c) {
@@ -158,7 +149,7 @@ TEST(ReevedRope, ElasticWrenchIsMinusTheEnergyGradientAndDampingDissipates) {
   }
   // with damping, the rope's power on the markers is -dV/dt - beta EA L0 eps_dot^2
   const double beta = 0.01;
-  const ReevedRope damped("d", ReevedTestLaw(1e5, 2, beta, L0), 3, RopeDrum{&joint, 0.25});
+  const ReevedRope damped("d", testing::TestRopeLaw(1e5, 2, beta, L0), 3, RopeDrum{&joint, 0.25});
   const ForceEval ed = ReevedEval(damped, ms, 0.0);
   double power = 0.0, ldot = 0.0;
   for (int k = 0; k < 5; ++k) power += ed.wrench_n.segment<3>(6 * k).dot(ms[k].v_WM) +
@@ -191,7 +182,7 @@ TEST(ReevedRope, DrumAngleIsUnwrappedOverTurns) {
   // 3.5 turns in steps of 0.3 rad pay out 2 pi 3.5 R of rope
   RevoluteJoint joint("winch");
   const double R = 0.2;
-  const ReevedRope rope("r", ReevedTestLaw(1e6, 1, 0.0, 10.0), 2, RopeDrum{&joint, R});
+  const ReevedRope rope("r", testing::TestRopeLaw(1e6, 1, 0.0, 10.0), 2, RopeDrum{&joint, R});
   std::vector<MarkerState> ms(4);
   ms[1].p_WM = Vec3(0, 0, -30.0);
   double angle = 0.0;
@@ -214,14 +205,14 @@ TEST(ReevedRope, BadInputIsNamed) {
     }
     return std::string("no error");
   };
-  EXPECT_NE(message([&] { ReevedRope("hoist", ReevedTestLaw(1e6, 1, 0.0, 10.0), 2, RopeDrum{&joint, 0.0}); })
+  EXPECT_NE(message([&] { ReevedRope("hoist", testing::TestRopeLaw(1e6, 1, 0.0, 10.0), 2, RopeDrum{&joint, 0.0}); })
                 .find("drum radius"), std::string::npos);
-  EXPECT_NE(message([&] { ReevedRope("hoist", ReevedTestLaw(1e6, 1, 0.0, 10.0), 2, RopeDrum{&joint, -0.1}); })
+  EXPECT_NE(message([&] { ReevedRope("hoist", testing::TestRopeLaw(1e6, 1, 0.0, 10.0), 2, RopeDrum{&joint, -0.1}); })
                 .find("hoist"), std::string::npos);
-  EXPECT_NE(message([&] { ReevedRope("hoist", ReevedTestLaw(1e6, 1, 0.0, 10.0), 1); }).find("two markers"),
+  EXPECT_NE(message([&] { ReevedRope("hoist", testing::TestRopeLaw(1e6, 1, 0.0, 10.0), 1); }).find("two markers"),
             std::string::npos);
   // paying in more than there is
-  const ReevedRope rope("hoist", ReevedTestLaw(1e6, 1, 0.0, 1.0), 2, RopeDrum{&joint, 0.5});
+  const ReevedRope rope("hoist", testing::TestRopeLaw(1e6, 1, 0.0, 1.0), 2, RopeDrum{&joint, 0.5});
   std::vector<MarkerState> ms(4);
   ms[1].p_WM = Vec3(0, 0, -3.0);
   ms[3].R_WM = ExpSO3(Vec3(0, 0, -2.5));
@@ -282,7 +273,9 @@ TEST(ReevedRope, ModelFileEntry) {
   expect_error("  - {name: r, type: rope, path: [ground.exit, hook.top], i: ground.exit, axial_stiffness: 1e6}\n",
                "not both");
   expect_error("  - {name: r, type: rope, path: [ground.exit, hook.top], drum: {joint: slide, radius: 0.3},\n"
-               "     axial_stiffness: 1e6}\n", "no angle coordinate");
+               "     axial_stiffness: 1e6}\n", "first coordinate is not an angle");
+  expect_error("  - {name: r, type: rope, path: [ground.exit, ground.exit, hook.top], axial_stiffness: 1e6}\n",
+               "twice in a row");
   expect_error("  - {name: r, type: rope, path: [ground.exit, hook.top], drum: {joint: winch, radius: 0},\n"
                "     axial_stiffness: 1e6}\n", "drum radius must be finite and > 0, got 0 m");
   expect_error("  - {name: r, type: rope, path: [ground.exit, hook.top], drum: {joint: winch, radius: 0.3},\n"

@@ -17,15 +17,6 @@
 namespace flexmb {
 namespace {
 
-RopeLaw RopeTestLaw(double EA, int falls, double beta, double L0) {
-  RopeLaw law;
-  law.axial_stiffness = EA;
-  law.falls = falls;
-  law.damping_time = beta;
-  law.free_length = L0;
-  return law;
-}
-
 /// Marker j at distance l below marker i, moving apart at `ldot`.
 void RopeTestMarkers(double l, double ldot, MarkerState& mi, MarkerState& mj) {
   mi = MarkerState{};
@@ -38,7 +29,7 @@ void RopeTestMarkers(double l, double ldot, MarkerState& mi, MarkerState& mj) {
 TEST(Rope, TensionLaw) {
   // EA = 1e6 N, 2 falls, L0 = 10 m, l = 5.01 m: eps = (10.02 - 10) / 10 = 2e-3,
   // T = 2000 N, the hook carries n T = 4000 N
-  const Rope rope("r", RopeTestLaw(1e6, 2, 0.0, 10.0));
+  const Rope rope("r", testing::TestRopeLaw(1e6, 2, 0.0, 10.0));
   MarkerState mi, mj;
   RopeTestMarkers(5.01, 0.0, mi, mj);
   Vec12 w = testing::Wrench(rope, mi, mj, 0.0);
@@ -47,7 +38,7 @@ TEST(Rope, TensionLaw) {
   EXPECT_NEAR(w.segment<3>(0).norm() + w.segment<3>(6).norm(), 8000.0, 1e-6);
   EXPECT_NEAR(rope.PotentialEnergy(mi, mj, 0.0), 0.5 * 1e6 * 10.0 * 4e-6, 1e-9);
   // three falls at the same hook position: eps = (15.03 - 10) / 10
-  const Rope three("r3", RopeTestLaw(1e6, 3, 0.0, 10.0));
+  const Rope three("r3", testing::TestRopeLaw(1e6, 3, 0.0, 10.0));
   w = testing::Wrench(three, mi, mj, 0.0);
   EXPECT_NEAR(w(8), 3.0 * 1e6 * 0.503, 1e-5);
   // slack: n l < L0, no force and no energy
@@ -59,7 +50,7 @@ TEST(Rope, TensionLaw) {
 TEST(Rope, DampingAddsAndIsClampedAtZero) {
   // beta = 0.01 s, eps = 2e-3; separating at 0.1 m/s: d(eps)/dt = 2 * 0.1 / 10
   // = 0.02, T = 1e6 (2e-3 + 0.01 * 0.02) = 2200 N
-  const Rope rope("r", RopeTestLaw(1e6, 2, 0.01, 10.0));
+  const Rope rope("r", testing::TestRopeLaw(1e6, 2, 0.01, 10.0));
   MarkerState mi, mj;
   RopeTestMarkers(5.01, 0.1, mi, mj);
   EXPECT_NEAR(testing::Wrench(rope, mi, mj, 0.0)(8), 2.0 * 2200.0, 1e-6);
@@ -82,7 +73,7 @@ TEST(Rope, TangentsMatchFiniteDifferences) {
     const double l = (mj.p_WM - mi.p_WM).norm();
     if (l < 0.5) continue;  // keeps the damping below the elastic tension
     // stretched by 2 % .. 10 %; with and without damping and hoisting
-    RopeLaw law = RopeTestLaw(5e3, n, trial % 2 ? 5e-4 : 0.0, n * l / (1.02 + 0.004 * trial));
+    RopeLaw law = testing::TestRopeLaw(5e3, n, trial % 2 ? 5e-4 : 0.0, n * l / (1.02 + 0.004 * trial));
     if (trial % 4 >= 2) {
       law.free_length += 0.3 * 0.7;  // the same L0 at t = 0.7 s
       law.hoist_speed = std::make_shared<ConstantFunction>(0.3);
@@ -102,7 +93,7 @@ TEST(Rope, TangentsMatchFiniteDifferences) {
 
 TEST(Rope, FreeLengthFromHoistSpeed) {
   // v_h = 0.5 sin(t): L0(t) = 40 - 0.5 (1 - cos t), evaluated out of order
-  RopeLaw law = RopeTestLaw(1e6, 1, 0.0, 40.0);
+  RopeLaw law = testing::TestRopeLaw(1e6, 1, 0.0, 40.0);
   law.hoist_speed = std::make_shared<ExpressionFunction>("0.5*sin(t)");
   const Rope rope("r", law);
   double L0, L0dot;
@@ -113,7 +104,7 @@ TEST(Rope, FreeLengthFromHoistSpeed) {
   }
   // a trapezoidal manoeuvre (0 -> 2 m/s in 1 s, hold 3 s, down in 1 s):
   // 1 + 6 + 1 = 8 m reeled in
-  RopeLaw trap = RopeTestLaw(1e6, 1, 0.0, 10.0);
+  RopeLaw trap = testing::TestRopeLaw(1e6, 1, 0.0, 10.0);
   trap.hoist_speed =
       std::make_shared<TableFunction>(std::vector<double>{0, 1, 4, 5}, std::vector<double>{0, 2, 2, 0},
                                       TableFunction::Interpolation::kLinear, false);
@@ -136,12 +127,12 @@ TEST(Rope, BadInputThrowsNamingTheRope) {
       EXPECT_NE(what.find(part), std::string::npos) << what;
     }
   };
-  expect(RopeTestLaw(0.0, 1, 0.0, 10.0), "axial_stiffness");
-  expect(RopeTestLaw(1e6, 0, 0.0, 10.0), "falls");
-  expect(RopeTestLaw(1e6, 1, -0.1, 10.0), "damping_time");
-  expect(RopeTestLaw(1e6, 1, 0.0, 0.0), "free length");
+  expect(testing::TestRopeLaw(0.0, 1, 0.0, 10.0), "axial_stiffness");
+  expect(testing::TestRopeLaw(1e6, 0, 0.0, 10.0), "falls");
+  expect(testing::TestRopeLaw(1e6, 1, -0.1, 10.0), "damping_time");
+  expect(testing::TestRopeLaw(1e6, 1, 0.0, 0.0), "free length");
   // the winch reels in 1 m/s from 2 m: empty at t = 2 s
-  RopeLaw law = RopeTestLaw(1e6, 1, 0.0, 2.0);
+  RopeLaw law = testing::TestRopeLaw(1e6, 1, 0.0, 2.0);
   law.hoist_speed = std::make_shared<ConstantFunction>(1.0);
   const Rope rope("hoist", law);
   MarkerState mi, mj;
