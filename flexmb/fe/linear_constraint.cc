@@ -133,6 +133,10 @@ std::vector<LinearConstraint> MakeNodesIndependent(const Mesh& mesh, const std::
       out.push_back(constraints[r]);
     }
   }
+  // independent DOF of each card: a pivot must not be one of another card's
+  std::map<LinConDof, std::set<std::pair<std::string, int>>> used_by;
+  for (const LinearConstraint& row : constraints)
+    for (const MpcTerm& t : row.terms) used_by[{t.node, t.component}].insert({row.card, row.id});
   for (const auto& [key, rows] : groups) {
     const LinearConstraint& first = constraints[rows.front()];
     const ErrorContext where{first.origin.file, first.origin.line, key.first + " " + std::to_string(key.second)};
@@ -151,6 +155,7 @@ std::vector<LinearConstraint> MakeNodesIndependent(const Mesh& mesh, const std::
     for (int j = 0; j < static_cast<int>(cols.size()); ++j) {
       const LinConDof& dof = cols[j];
       if (target.count(dof.first) || dependent.count(dof) || !eligible(dof.first, dof.second)) continue;
+      if (used_by[dof].size() > 1) continue;
       cand.push_back(j);
     }
     Eigen::MatrixXd cc(k, static_cast<Eigen::Index>(cand.size()));

@@ -45,7 +45,8 @@ std::vector<LinearConstraint> Rbe3Constraints(const Mesh& mesh, const Rbe3Spec& 
 /// independent: for every constraint card (same id and card name) whose rows
 /// make k components of such a node dependent, k of its independent DOF
 /// (chosen by column-pivoted QR among those `eligible(node, component)`
-/// allows, never one of `nodes`) become dependent instead, u_P = C_P^-1
+/// allows, never one of `nodes`, a dependent DOF or an independent DOF of
+/// another card) become dependent instead, u_P = C_P^-1
 /// (u_D - C_R u_R), an exact rewriting of the same constraint. Throws
 /// InputError if no such choice exists.
 std::vector<LinearConstraint> MakeNodesIndependent(const Mesh& mesh, const std::vector<LinearConstraint>& constraints,

@@ -263,4 +263,26 @@ TEST(Rbe3, ReferenceNodeAsInterfaceNodeGivesTheGuyanStiffnessThroughTheRbe3) {
   EXPECT_EQ(body.interface_nodes.size(), 1u);
 }
 
+// two RBE3 sharing an independent node, both references interface nodes:
+// the swap picks pivots outside the shared node, the Guyan reduction runs
+TEST(Rbe3, TwoReferenceNodesSharingAnIndependentNode) {
+  Mesh mesh = BeamWithCross();
+  AddConstraint(mesh, 0, 0b111111);
+  const int r1 = AddNode(mesh, Vec3(1.0, 0.05, 0.05)), r2 = AddNode(mesh, Vec3(0.8, 0.0, 0.1));
+  AddRbe3(mesh, Spec(5, r1, 0b111111, {{1.0, 0b111, {8, 10, 11, 12}}}));
+  AddRbe3(mesh, Spec(6, r2, 0b111111, {{1.0, 0b111, {6, 7, 10}}, {1.0, 0b111111, {9}}}));
+  AssemblyOptions ao;
+  ao.independent_nodes = {r1, r2};
+  const AssembledModel a = Assemble(mesh, ao);
+  for (int c = 0; c < 6; ++c) {
+    EXPECT_GE(a.dofs.free[r1][c], 0);
+    EXPECT_GE(a.dofs.free[r2][c], 0);
+  }
+  for (int c = 0; c < 3; ++c) EXPECT_GE(a.dofs.free[10][c], 0);  // the shared node stays independent
+  reduction::ReductionOptions ro;
+  ro.interface_nodes = {r1, r2};
+  ro.normal_modes = 0;
+  EXPECT_EQ(reduction::BuildCraigBamptonBasis(mesh, a, ro).static_modes(), 12);
+}
+
 }  // namespace flexmb::fe::linear_constraint_test
