@@ -253,6 +253,8 @@ int FeExport(const FeExportOptions& opt, std::ostream& out) {
   const fe::Mesh& mesh = model.mesh;
   fe::AssemblyOptions ao;
   ao.extra_fixed_nodes = command::NodeListOption(model.mesh, opt.fix, path);
+  // an RBE3 reference node as interface node keeps its own DOF (as in reduce)
+  if (!opt.interface.empty()) ao.independent_nodes = command::NodeListOption(mesh, opt.interface, path);
   const fe::AssembledModel a = InFile(path, [&] { return fe::BuildMatrices(model, ao); });
   if (a.dofs.n_free == 0)
     throw InputError("the model has no free DOF (all constrained or fixed): nothing to export", {path, 0, ""});
