@@ -43,7 +43,7 @@ std::vector<MpcTerm> LinConTerms(const std::vector<LinConDof>& dofs, const Eigen
 }  // namespace
 
 std::vector<LinearConstraint> Rbe3Constraints(const Mesh& mesh, const Rbe3Spec& spec) {
-  const ErrorContext where{spec.origin.file, spec.origin.line, "RBE3 " + std::to_string(spec.id)};
+  const ErrorContext where{spec.origin.file, spec.origin.line, spec.card + " " + std::to_string(spec.id)};
   const int nn = static_cast<int>(mesh.nodes.size());
   if (spec.ref_node < 0 || spec.ref_node >= nn) throw InputError("reference node does not exist", where);
   if (spec.ref_components <= 0 || spec.ref_components > 0b111111)
@@ -107,7 +107,7 @@ std::vector<LinearConstraint> Rbe3Constraints(const Mesh& mesh, const Rbe3Spec& 
     if (!(spec.ref_components & (1 << c))) continue;
     LinearConstraint row;
     row.id = spec.id;
-    row.card = "RBE3";
+    row.card = spec.card;
     row.node = spec.ref_node;
     row.component = c;
     row.terms = LinConTerms(dofs, g.row(c));

@@ -7,6 +7,7 @@
 /// multi-point constraints".
 
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "flexmb/fe/mesh.h"
@@ -25,6 +26,7 @@ struct Rbe3Group {
 /// follow the weighted least-squares rigid motion of the groups.
 struct Rbe3Spec {
   int id = 0;                     ///< element id (EID)
+  std::string card = "RBE3";      ///< card name for messages and the rows ("*COUPLING")
   int ref_node = -1;              ///< node index of the reference (dependent) grid
   int ref_components = 0b111111;  ///< REFC mask
   std::vector<Rbe3Group> groups;

@@ -139,15 +139,13 @@ void Builder::Coupling(const std::vector<Card>& cards, const std::vector<int>& o
     Fail(c.origin, entity, "*DISTRIBUTING on a surface of faces with mid-side nodes is not supported (no area weights)");
   fe::Rbe3Spec spec;
   spec.id = ++link_count_;
+  spec.card = "*COUPLING";
   spec.ref_node = ref;
   spec.ref_components = mask;
   spec.origin = c.origin;
   for (size_t k = 0; k < w.size(); ++k)
     if (it->second[k] != ref) spec.groups.push_back({w[k], 0b111, {it->second[k]}});
-  for (fe::LinearConstraint& row : fe::Rbe3Constraints(mesh_, spec)) {
-    row.card = "*COUPLING";
-    mesh_.linear_constraints.push_back(std::move(row));
-  }
+  for (fe::LinearConstraint& row : fe::Rbe3Constraints(mesh_, spec)) mesh_.linear_constraints.push_back(std::move(row));
 }
 
 // *EQUATION: a line with the number of terms N, then N terms (node, DOF,
