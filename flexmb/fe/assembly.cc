@@ -10,6 +10,7 @@
 
 #include "flexmb/common/error.h"
 #include "flexmb/fe/element_traits.h"
+#include "flexmb/fe/linear_constraint.h"
 #include "flexmb/fe/point_mass.h"
 
 namespace flexmb::fe {
@@ -325,6 +326,70 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
     }
   }
 
+  // linear constraints (RBE3 rows, MPC): each dependent slot owned once, no
+  // chains; their dependent and independent slots are active
+  std::vector<LinearConstraint> swapped;
+  if (!options.independent_nodes.empty() && !mesh.linear_constraints.empty()) {
+    for (int n : options.independent_nodes)
+      if (n < 0 || n >= nn) throw InputError("independent node index " + std::to_string(n) + " does not exist");
+    swapped = MakeNodesIndependent(mesh, mesh.linear_constraints, options.independent_nodes,
+                                   [&](int n, int c) { return owner[n][c] < 0 && !(fixed[n] & (1 << c)); });
+  }
+  const std::vector<LinearConstraint>& mpcs = options.independent_nodes.empty() ? mesh.linear_constraints : swapped;
+  std::vector<std::array<int, 6>> mpc_owner(nn);
+  for (auto& o : mpc_owner) o.fill(-1);
+  auto mpc_name = [&](const LinearConstraint& row) { return row.card + " " + std::to_string(row.id); };
+  auto slot_name = [&](int n, int c) { return "node " + node_id(n) + " component " + kDofComponentNames[c]; };
+  for (size_t k = 0; k < mpcs.size(); ++k) {
+    const LinearConstraint& row = mpcs[k];
+    if (row.node < 0 || row.node >= nn) Fail(row.origin, mpc_name(row), "dependent node does not exist");
+    if (row.component < 0 || row.component > 5) Fail(row.origin, mpc_name(row), "component must be 0 to 5");
+    const int n = row.node, c = row.component;
+    if (owner[n][c] >= 0) {
+      const RigidLink& other = mesh.rigid_links[owner[n][c]];
+      Fail(row.origin, mpc_name(row),
+           slot_name(n, c) + " is already dependent in rigid link " + std::to_string(other.id) + Where(other.origin));
+    }
+    if (mpc_owner[n][c] >= 0) {
+      const LinearConstraint& other = mpcs[mpc_owner[n][c]];
+      Fail(row.origin, mpc_name(row),
+           slot_name(n, c) + " is already dependent in " + mpc_name(other) + Where(other.origin));
+    }
+    if (fixed[n] & (1 << c)) {
+      const std::string by = fixed_origin[n] != nullptr && fixed_origin[n]->file.size()
+                                 ? "a constraint" + Where(*fixed_origin[n])
+                                 : "a constraint";
+      Fail(row.origin, mpc_name(row), "dependent " + slot_name(n, c) + " is also fixed by " + by);
+    }
+    mpc_owner[n][c] = static_cast<int>(k);
+    active[n] |= 1 << c;
+  }
+  for (const LinearConstraint& row : mpcs) {
+    for (const MpcTerm& t : row.terms) {
+      if (t.node < 0 || t.node >= nn || t.component < 0 || t.component > 5)
+        Fail(row.origin, mpc_name(row), "an independent DOF does not exist");
+      if (!std::isfinite(t.coef)) Fail(row.origin, mpc_name(row), "a coefficient is not finite");
+      const int o = owner[t.node][t.component], m = mpc_owner[t.node][t.component];
+      if (o >= 0 || m >= 0) {
+        const std::string other = o >= 0 ? "rigid link " + std::to_string(mesh.rigid_links[o].id) + Where(mesh.rigid_links[o].origin)
+                                         : mpc_name(mpcs[m]) + Where(mpcs[m].origin);
+        Fail(row.origin, mpc_name(row),
+             "independent " + slot_name(t.node, t.component) + " is itself dependent in " + other +
+                 " (chained constraints are not supported)");
+      }
+      active[t.node] |= 1 << t.component;
+    }
+  }
+  for (const RigidLink& link : mesh.rigid_links) {
+    for (int c = 0; c < 6; ++c) {
+      const int m = mpc_owner[link.independent][c];
+      if (m >= 0)
+        Fail(link.origin, "rigid link " + std::to_string(link.id),
+             "independent node " + node_id(link.independent) + " is itself dependent in " + mpc_name(mpcs[m]) +
+                 Where(mpcs[m].origin) + " (chained constraints are not supported)");
+    }
+  }
+
   // numbering, node by node
   AssembledModel out;
   DofMap& dm = out.dofs;
@@ -336,7 +401,7 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
     for (int c = 0; c < 6; ++c) {
       if (!(active[n] & (1 << c))) continue;
       dm.full[n][c] = dm.n_full++;
-      if (!(fixed[n] & (1 << c)) && owner[n][c] < 0) dm.free[n][c] = dm.n_free++;
+      if (!(fixed[n] & (1 << c)) && owner[n][c] < 0 && mpc_owner[n][c] < 0) dm.free[n][c] = dm.n_free++;
     }
   }
 
@@ -369,6 +434,13 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
             x.idx.push_back(dm.free[a][3 + k]);
             x.coef.push_back(-r[j]);
           }
+        }
+      } else if (mpc_owner[n][c] >= 0) {
+        // a fixed independent DOF contributes nothing
+        for (const MpcTerm& t : mpcs[mpc_owner[n][c]].terms) {
+          if (dm.free[t.node][t.component] < 0) continue;
+          x.idx.push_back(dm.free[t.node][t.component]);
+          x.coef.push_back(t.coef);
         }
       }
       x.ptr[f + 1] = static_cast<int>(x.idx.size());

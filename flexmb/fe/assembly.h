@@ -1,8 +1,8 @@
 #pragma once
 /// \file assembly.h
 /// Global DOF numbering and sparse assembly of the stiffness and mass
-/// matrices of a Mesh, with rigid links eliminated and single-point
-/// constraints removed.
+/// matrices of a Mesh, with rigid links and linear constraints (RBE3)
+/// eliminated and single-point constraints removed.
 
 #include <Eigen/SparseCore>
 #include <vector>
@@ -48,6 +48,11 @@ struct AssemblyOptions {
   MassForm mass_form = MassForm::kConsistent;
   bool apply_constraints = true;   ///< remove the mesh's single-point constraints
   std::vector<int> extra_fixed_nodes;  ///< node indices fixed in all 6 DOF (e.g. --fix)
+  /// Node indices whose DOF must stay independent although a linear
+  /// constraint (RBE3) makes them dependent: the constraint is rewritten
+  /// with other DOF dependent (fe::MakeNodesIndependent), e.g. for an RBE3
+  /// reference node that is an interface node of a reduction.
+  std::vector<int> independent_nodes;
 };
 
 /// Numbers the DOF, computes every element's matrices and assembles K and M

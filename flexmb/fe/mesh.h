@@ -1,7 +1,8 @@
 #pragma once
 /// \file mesh.h
 /// A linear finite-element model of one part: nodes, elements, properties,
-/// materials, sets, single-point constraints, rigid links and concentrated
+/// materials, sets, single-point constraints, rigid links, linear
+/// multi-point constraints and concentrated
 /// masses. Entities keep the ids of the file they came from; element and
 /// link connectivity refers to node *indices* (positions in Mesh::nodes).
 /// Units are whatever the source uses, consistently; flexmb's own models are
@@ -160,6 +161,26 @@ struct RigidLink {
   Origin origin;
 };
 
+/// One term of a linear constraint: coef * u(node, component).
+struct MpcTerm {
+  int node = -1;                  ///< node index
+  int component = 0;              ///< 0..5 (ux uy uz rx ry rz, basic frame)
+  double coef = 0.0;              ///< [m/m, m/rad, rad/m or rad/rad, as the components pair]
+};
+
+/// Linear multi-point constraint: the dependent DOF u(node, component) =
+/// sum of the terms over independent DOF. One row of an RBE3
+/// (fe/linear_constraint.h), Nastran MPC or Abaqus *EQUATION; it adds no
+/// stiffness, it is eliminated master-slave like the rigid links.
+struct LinearConstraint {
+  int id = 0;                     ///< id of the card it came from (the RBE3's EID)
+  std::string card = "MPC";       ///< card name, for messages ("RBE3")
+  int node = -1;                  ///< dependent node index
+  int component = 0;              ///< dependent component 0..5
+  std::vector<MpcTerm> terms;     ///< independent DOF and coefficients
+  Origin origin;
+};
+
 /// Single-point constraint: the masked DOF of a node are fixed at zero.
 struct Constraint {
   int node = -1;                  ///< node index
@@ -179,6 +200,7 @@ struct Mesh {
   std::vector<PointMass> point_masses;
   std::vector<ScalarSpring> springs;        ///< assembled into K with the elements
   std::vector<RigidLink> rigid_links;
+  std::vector<LinearConstraint> linear_constraints;  ///< RBE3 rows and other MPC
   std::vector<Constraint> constraints;
   std::map<std::string, std::vector<int>> node_sets;     ///< name -> node indices
   std::map<std::string, std::vector<int>> element_sets;  ///< name -> element indices

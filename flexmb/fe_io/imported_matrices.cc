@@ -151,6 +151,7 @@ fe::FeModel ReadImportedMatrices(const ImportedMatricesSpec& spec) {
   // constraints, links and masses of a geometry deck are already in the matrices
   model.mesh.constraints.clear();
   model.mesh.rigid_links.clear();
+  model.mesh.linear_constraints.clear();
   model.mesh.point_masses.clear();
   model.mesh.springs.clear();
 

@@ -240,6 +240,8 @@ ReducedBody ReduceCraigBampton(const fe::FeModel& model, const ReductionOptions&
   fe::AssemblyOptions assembly;
   assembly.mass_form = options.mass_form;
   assembly.extra_fixed_nodes = options.fixed_nodes;
+  // an RBE3 reference node as interface node keeps its own DOF
+  assembly.independent_nodes = options.interface_nodes;
   const fe::AssembledModel a = fe::BuildMatrices(model, assembly);
   t.assemble = Seconds(t0);
 

@@ -94,6 +94,7 @@ std::vector<MatX> ComputeGeometricStiffness(const fe::Mesh& mesh, const MatX& mo
   fe::AssemblyOptions ao;
   ao.mass_form = mass_form;
   ao.extra_fixed_nodes = support_nodes;
+  ao.independent_nodes = support_nodes;
   const fe::AssembledModel a = fe::Assemble(mesh, ao);
   const int nf = a.dofs.n_free;
   fe::SparseCholesky chol;

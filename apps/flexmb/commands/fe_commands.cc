@@ -188,6 +188,7 @@ int FeInfo(const FeInfoOptions& opt, std::ostream& out) {
       s << "},\n";
     }
     s << "  \"rigid_links\": " << mesh.rigid_links.size() << ",\n";
+    s << "  \"linear_constraints\": " << mesh.linear_constraints.size() << ",\n";
     s << "  \"point_masses\": " << mesh.point_masses.size() << ",\n";
     s << "  \"springs\": " << mesh.springs.size() << ",\n";
     s << "  \"constraints\": " << mesh.constraints.size() << ",\n";
@@ -224,6 +225,8 @@ int FeInfo(const FeInfoOptions& opt, std::ostream& out) {
     for (const auto& [name, members] : mesh.element_sets)
       s << "  " << name << ": " << Count(members.size(), "element") << "\n";
     s << "rigid links: " << mesh.rigid_links.size() << " (" << Count(dependent, "dependent node") << ")\n";
+    if (!mesh.linear_constraints.empty())
+      s << "linear constraints (RBE3, *EQUATION): " << Count(mesh.linear_constraints.size(), "dependent DOF") << "\n";
     s << "point masses: " << mesh.point_masses.size() << "\n";
     s << "scalar springs: " << mesh.springs.size() << "\n";
     s << "constraints: " << mesh.constraints.size() << " (on " << Count(constrained_nodes.size(), "node") << ")\n";
@@ -253,6 +256,8 @@ int FeExport(const FeExportOptions& opt, std::ostream& out) {
   const fe::Mesh& mesh = model.mesh;
   fe::AssemblyOptions ao;
   ao.extra_fixed_nodes = command::NodeListOption(model.mesh, opt.fix, path);
+  // an RBE3 reference node as interface node keeps its own DOF (as in reduce)
+  if (!opt.interface.empty()) ao.independent_nodes = command::NodeListOption(mesh, opt.interface, path);
   const fe::AssembledModel a = InFile(path, [&] { return fe::BuildMatrices(model, ao); });
   if (a.dofs.n_free == 0)
     throw InputError("the model has no free DOF (all constrained or fixed): nothing to export", {path, 0, ""});

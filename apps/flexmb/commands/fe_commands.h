@@ -57,7 +57,7 @@ struct FeInfoOptions {
 /// are reported as unavailable with the reason, and the command still
 /// succeeds. JSON keys: file, nodes, elements {type: count}, materials,
 /// sections {shell, beam, solid}, node_sets {name: size}, element_sets,
-/// rigid_links, point_masses, springs, constraints, bounding_box_m {min, max},
+/// rigid_links, linear_constraints (dependent DOF), point_masses, springs, constraints, bounding_box_m {min, max},
 /// matrices (imported only: {dofs, k_nonzeros, m_nonzeros}), mass_kg,
 /// center_of_mass_m, inertia_kg_m2 (null with mass_error when unavailable).
 int FeInfo(const FeInfoOptions& options, std::ostream& out);

@@ -168,7 +168,9 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
   reduction::ReducedBody body = InFile(path, [&] {
     if (!imported_modes) return reduction::ReduceCraigBampton(model, ro, &t);
     const Clock::time_point ta = Clock::now();
-    const fe::AssembledModel a = fe::BuildMatrices(model, fe::AssemblyOptions{});
+    fe::AssemblyOptions ao;
+    ao.independent_nodes = ro.interface_nodes;  // as ReduceCraigBampton and fe export assemble
+    const fe::AssembledModel a = fe::BuildMatrices(model, ao);
     t.assemble = Seconds(ta, Clock::now());
     const reduction::CraigBamptonBasis basis = BasisOfModes(modes, model.mesh, a, opt.modes_file);
     return reduction::ReduceBasis(model, a, basis, ro, &t);

@@ -71,6 +71,7 @@ class Builder {
   std::vector<MassElement> masses_;
   std::map<std::string, NamedSet> nsets_, elsets_;  // upper-case name -> set
   std::map<std::string, std::vector<int>> surfaces_;
+  std::map<std::string, std::vector<double>> surface_weights_;  // per surface node: area share (faces) or weight
   std::map<std::string, int> materials_;            // upper-case name -> index
   std::map<std::string, bool> warned_;
   std::vector<fe::Origin> section_origin_;          // per mesh element: where its section was assigned
@@ -126,6 +127,7 @@ class Builder {
   void AddLink(int ref, const std::vector<int>& nodes, int mask, const fe::Origin& o, const std::string& entity);
   void RigidBody(const Card& c);
   void Coupling(const std::vector<Card>& cards, const std::vector<int>& order, int i);
+  void Equation(const Card& c);
 };
 
 }  // namespace flexmb::io::abaqus

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "flexmb/common/error.h"
+#include "flexmb/fe/linear_constraint.h"
 #include "flexmb/fe_io/abaqus/abaqus_builder.h"
 #include "flexmb/fe_io/text_scanner.h"
 
@@ -116,19 +117,77 @@ void Builder::Coupling(const std::vector<Card>& cards, const std::vector<int>& o
   auto it = surfaces_.find(Upper(sp->value));
   if (it == surfaces_.end()) Fail(c.origin, entity, "unknown surface '" + Printable(sp->value) + "'");
   int mask = -1;
+  bool distributing = false;
   for (int j : order) {
     const Card& k = cards[j];
     if (k.parent != i) continue;
-    if (k.key == "DISTRIBUTING")
-      Fail(k.origin, entity, "*DISTRIBUTING coupling is not supported (only *KINEMATIC)");
+    distributing = k.key == "DISTRIBUTING";
+    if (distributing && k.Find("WEIGHTINGMETHOD") && Upper(k.Find("WEIGHTINGMETHOD")->value) != "UNIFORM")
+      Fail(k.origin, entity, "WEIGHTING METHOD=" + k.Find("WEIGHTINGMETHOD")->value + " is not supported (UNIFORM)");
     mask = k.data.empty() ? 0b111111 : 0;
     for (const DataLine& d : k.data) {
       MaxFields(d, 2, entity);
       mask |= DofRange(d, 0, entity);
     }
   }
-  if (mask < 0) Fail(c.origin, entity, "needs a *KINEMATIC sub-option");
-  AddLink(ref, it->second, mask, c.origin, entity);
+  if (mask < 0) Fail(c.origin, entity, "needs a *KINEMATIC or *DISTRIBUTING sub-option");
+  if (!distributing) return AddLink(ref, it->second, mask, c.origin, entity);
+  // an RBE3 over the surface's translations, weighted as CalculiX does:
+  // by area for a facial surface, by the entries' weights for a node-based one
+  const std::vector<double>& w = surface_weights_[Upper(sp->value)];
+  if (w.size() != it->second.size())
+    Fail(c.origin, entity, "*DISTRIBUTING on a surface of faces with mid-side nodes is not supported (no area weights)");
+  fe::Rbe3Spec spec;
+  spec.id = ++link_count_;
+  spec.card = "*COUPLING";
+  spec.ref_node = ref;
+  spec.ref_components = mask;
+  spec.origin = c.origin;
+  for (size_t k = 0; k < w.size(); ++k)
+    if (it->second[k] != ref) spec.groups.push_back({w[k], 0b111, {it->second[k]}});
+  for (fe::LinearConstraint& row : fe::Rbe3Constraints(mesh_, spec)) mesh_.linear_constraints.push_back(std::move(row));
+}
+
+// *EQUATION: a line with the number of terms N, then N terms (node, DOF,
+// coefficient), at most four on a line; the first term's DOF is dependent:
+// u_1 = -sum_k>1 (a_k / a_1) u_k
+void Builder::Equation(const Card& c) {
+  size_t line = 0;
+  while (line < c.data.size()) {
+    const DataLine& head = c.data[line++];
+    MaxFields(head, 1, c.name);
+    const int count = Integer(head, 0, c.name, "number of terms", 2, 100000);
+    std::vector<fe::MpcTerm> terms;
+    fe::Origin origin = head.origin;
+    while (static_cast<int>(terms.size()) < count) {
+      if (line >= c.data.size()) Fail(head.origin, c.name, "fewer terms than the " + std::to_string(count) + " announced");
+      const DataLine& d = c.data[line++];
+      MaxFields(d, 12, c.name);
+      for (size_t f = 0; f < d.fields.size(); f += 3) {
+        if (d.fields[f].empty()) break;
+        if (static_cast<int>(terms.size()) == count) Fail(d.origin, c.name, "more terms than the " + std::to_string(count) + " announced");
+        const std::vector<int> nodes = NodesOf(d.fields[f], d.origin, c.name);
+        if (nodes.size() != 1) Fail(d.origin, c.name, "node set '" + d.fields[f] + "' must hold exactly one node");
+        const int dof = Integer(d, f + 1, c.name, "degree of freedom", 1, 6);
+        const double a = RealReq(d, f + 2, c.name, "coefficient");
+        terms.push_back(fe::MpcTerm{nodes[0], dof - 1, a});
+      }
+    }
+    const fe::MpcTerm first = terms.front();
+    if (first.coef == 0.0) Fail(origin, c.name, "the first (dependent) term has coefficient 0");
+    fe::LinearConstraint row;
+    row.id = ++link_count_;
+    row.card = "*EQUATION";
+    row.node = first.node;
+    row.component = first.component;
+    row.origin = origin;
+    for (size_t k = 1; k < terms.size(); ++k) {
+      if (terms[k].node == first.node && terms[k].component == first.component)
+        Fail(origin, c.name, "the dependent DOF appears twice");
+      if (terms[k].coef != 0.0) row.terms.push_back({terms[k].node, terms[k].component, -terms[k].coef / first.coef});
+    }
+    mesh_.linear_constraints.push_back(std::move(row));
+  }
 }
 
 }  // namespace flexmb::io::abaqus

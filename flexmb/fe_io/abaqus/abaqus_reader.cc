@@ -49,6 +49,7 @@ fe::Mesh Builder::Build(std::vector<Card>& cards) {
     if (c.key == "BOUNDARY") Boundary(c);
     if (c.key == "RIGIDBODY") RigidBody(c);
     if (c.key == "COUPLING") Coupling(cards, order, i);
+    if (c.key == "EQUATION") Equation(c);
   }
   Finish();
   return std::move(mesh_);
@@ -63,7 +64,7 @@ std::vector<int> Builder::Filter(std::vector<Card>& cards) {
   static const std::set<std::string> kModel = {
       "NODE", "ELEMENT", "NSET", "ELSET", "SURFACE", "MATERIAL", "SOLIDSECTION", "SHELLSECTION",
       "BEAMSECTION", "BEAMGENERALSECTION", "MASS", "ROTARYINERTIA", "BOUNDARY", "RIGIDBODY",
-      "COUPLING", "SYSTEM"};
+      "COUPLING", "SYSTEM", "EQUATION"};
   static const std::set<std::string> kMaterialSub = {
       "ELASTIC", "DENSITY", "EXPANSION", "CONDUCTIVITY", "SPECIFICHEAT", "PLASTIC", "DAMPING", "CREEP"};
   static const std::set<std::string> kSilent = {
@@ -74,7 +75,7 @@ std::vector<int> Builder::Filter(std::vector<Card>& cards) {
   // keywords that would change the stiffness or mass: reading on without
   // them would give a different model (docs/formats.md)
   static const std::set<std::string> kUnsupported = {
-      "EQUATION", "TIE", "MPC", "SPRING", "DASHPOT", "KINEMATICCOUPLING", "DISTRIBUTINGCOUPLING",
+      "TIE", "MPC", "SPRING", "DASHPOT", "KINEMATICCOUPLING", "DISTRIBUTINGCOUPLING",
       "SHELLGENERALSECTION", "MEMBRANESECTION", "CONNECTORSECTION", "CONNECTORBEHAVIOR", "CONNECTORELASTICITY",
       "GAP", "TRANSFORM", "NONSTRUCTURALMASS", "EMBEDDEDELEMENT", "MATRIXINPUT", "MATRIXASSEMBLE",
       "SUBSTRUCTUREPROPERTY", "GASKETSECTION", "COHESIVESECTION", "FRAMESECTION", "USERELEMENT", "UELPROPERTY",

@@ -143,12 +143,20 @@ void Builder::Surface(const Card& c) {
   const Param* tp = c.Find("TYPE");
   const std::string type = tp ? Upper(tp->value) : "ELEMENT";
   NamedSet nodes;
+  // weight of each node for a distributing coupling: a face's area shared
+  // equally by its nodes (linear faces), or the node-based entry's weight
+  std::map<int, double> weight;
+  bool weights_ok = true;
   for (const DataLine& d : c.data) {
     if (d.fields.empty() || d.fields[0].empty()) Fail(d.origin, entity, "empty entry");
     const std::string& f = d.fields[0];
     if (type == "NODE") {
       MaxFields(d, 2, entity);
-      for (int n : NodesOf(f, d.origin, entity)) nodes.Add(n);
+      const double w = RealOr(d, 1, entity, "node weight", 1.0);
+      for (int n : NodesOf(f, d.origin, entity)) {
+        nodes.Add(n);
+        weight[n] += w;
+      }
     } else if (type == "ELEMENT") {
       MaxFields(d, 2, entity);
       const std::string face = d.fields.size() > 1 ? Upper(d.fields[1]) : "";
@@ -168,13 +176,26 @@ void Builder::Surface(const Card& c) {
         const fe::AbaqusFace* nodes_of_face = Face(e.type, face);
         if (nodes_of_face == nullptr)
           Fail(d.origin, entity, "face '" + Printable(face) + "' does not exist on " + ElementName(eid));
-        for (int k = 0; k < nodes_of_face->count; ++k) nodes.Add(e.nodes[nodes_of_face->nodes[k] - 1]);
+        const int nf = nodes_of_face->count;
+        auto corner = [&](int k) { return mesh_.nodes[e.nodes[nodes_of_face->nodes[k] - 1]].x; };
+        double area = 0.0;
+        if (nf == 3) area = 0.5 * (corner(1) - corner(0)).cross(corner(2) - corner(0)).norm();
+        if (nf == 4) area = 0.5 * (corner(2) - corner(0)).cross(corner(3) - corner(1)).norm();
+        weights_ok = weights_ok && (nf == 3 || nf == 4);
+        for (int k = 0; k < nf; ++k) {
+          nodes.Add(e.nodes[nodes_of_face->nodes[k] - 1]);
+          weight[e.nodes[nodes_of_face->nodes[k] - 1]] += area / nf;
+        }
       }
     } else {
       Fail(c.origin, entity, "TYPE=" + tp->value + " is not supported (NODE or ELEMENT)");
     }
   }
   surfaces_[Upper(p->value)] = nodes.items;
+  std::vector<double>& w = surface_weights_[Upper(p->value)];
+  w.clear();
+  if (weights_ok)
+    for (int n : nodes.items) w.push_back(weight[n]);
 }
 
 }  // namespace flexmb::io::abaqus

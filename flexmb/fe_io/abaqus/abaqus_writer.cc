@@ -144,6 +144,13 @@ std::vector<std::string> CheckWritable(const fe::Mesh& mesh) {
   }
   for (const fe::Constraint& c : mesh.constraints)
     if (c.node < 0 || c.node >= nn) throw InputError("refers to a node that does not exist", {c.origin.file, c.origin.line, "constraint"});
+  for (const fe::LinearConstraint& row : mesh.linear_constraints) {
+    bool ok = row.node >= 0 && row.node < nn && row.component >= 0 && row.component < 6;
+    for (const fe::MpcTerm& t : row.terms) ok = ok && t.node >= 0 && t.node < nn && t.component >= 0 && t.component < 6;
+    if (!ok)
+      throw InputError("refers to a node or component that does not exist",
+                       {row.origin.file, row.origin.line, row.card + " " + std::to_string(row.id)});
+  }
   return material_name;
 }
 
@@ -324,6 +331,21 @@ void WriteAbaqus(const fe::Mesh& mesh, const std::string& path) {
       for (int c = 0; c < 6; ++c)
         if (l.dofs & (1 << c)) std::fprintf(f, "%d, %d\n", c + 1, c + 1);
     }
+  }
+
+  // linear constraints (RBE3 rows) as *EQUATION, the dependent DOF first:
+  // u_d - sum c_k u_k = 0
+  for (const fe::LinearConstraint& row : mesh.linear_constraints) {
+    std::fprintf(f, "*EQUATION\n%d\n", static_cast<int>(row.terms.size()) + 1);
+    std::fprintf(f, "%d, %d, 1.", mesh.nodes[row.node].id, row.component + 1);
+    int on_line = 1;
+    for (const fe::MpcTerm& t : row.terms) {
+      // at most four terms on a data line
+      std::fprintf(f, on_line == 4 ? "\n" : ", ");
+      on_line = on_line == 4 ? 1 : on_line + 1;
+      std::fprintf(f, "%d, %d, %s", mesh.nodes[t.node].id, t.component + 1, Num(-t.coef).c_str());
+    }
+    std::fprintf(f, "\n");
   }
 
   // single-point constraints, as runs of consecutive components

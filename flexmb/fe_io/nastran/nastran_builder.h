@@ -8,7 +8,8 @@
 /// nastran_elements.cc (shells, solids, beams, CONM2, CONM1),
 /// nastran_rods.cc (PROD, PTUBE, CROD, CONROD, CTUBE),
 /// nastran_springs.cc (PELAS, CELAS1, CELAS2) and
-/// nastran_constraints.cc (RBE2, SPC, ASET / BSET, SET1).
+/// nastran_constraints.cc (RBE2, SPC, ASET / BSET, SET1) and
+/// nastran_rigid_elements.cc (RBAR, RBAR1, RBE3).
 
 #include <initializer_list>
 #include <map>
@@ -79,7 +80,7 @@ class Builder {
   std::map<int, PropertyRef> properties_;
   std::map<int, fe::Origin> property_origin_;
   std::vector<double> pelas_k_;                 // PELAS stiffness by property index
-  std::map<int, fe::Origin> element_ids_;       // elements, RBE2, masses and springs share the id space
+  std::map<int, fe::Origin> element_ids_;       // elements, RBE2/RBAR/RBE3, masses and springs share the id space
   std::map<std::string, std::set<int>> set_members_;
   std::set<std::string> warned_;
   const Card* grdset_ = nullptr;
@@ -140,6 +141,10 @@ class Builder {
 
   // nastran_constraints.cc
   void AddRbe2(const Entry& e);
+
+  // nastran_rigid_elements.cc
+  void AddRbar(const Entry& e);
+  void AddRbe3(const Entry& e);
   void AddToSet(const std::string& name, int node);
   void AddSpc(const Entry& e);
   void AddBoundarySet(const Entry& e);

@@ -31,7 +31,7 @@ const std::map<std::string, Phase>& Phases() {
         {Phase::kMaterials, {"MAT1", "MAT2", "MAT3", "MAT8", "MAT9", "MAT10", "MAT11"}},
         {Phase::kGrids, {"GRID"}},
         {Phase::kProperties, {"PSHELL", "PBAR", "PBARL", "PBEAM", "PBEAML", "PSOLID", "PELAS", "PROD", "PTUBE"}},
-        {Phase::kLinks, {"RBE2", "CONM2", "CONM1", "CELAS1", "CELAS2"}},
+        {Phase::kLinks, {"RBE2", "RBAR", "RBAR1", "RBE3", "CONM2", "CONM1", "CELAS1", "CELAS2"}},
         {Phase::kSets, {"SPC1", "SPC", "ASET", "ASET1", "BSET", "BSET1", "SET1"}}};
     std::map<std::string, Phase> m;
     for (const auto& [phase, names] : groups)
@@ -54,7 +54,7 @@ const std::set<std::string> kUnsupported = {
     "CELAS3", "CELAS4", "CGAP",    "CQUAD",   "CQUAD8",  "CQUADR",  "CTRIA6", "CTRIAR",
     "CPENTA", "CPYRAM", "CSHEAR",  "CBEND",   "CBEAM3",  "CWELD",   "CFAST",  "CSEAM",
     "CTRIAX", "CTRIAX6", "CQUADX", "CMASS1",  "CMASS2",  "CMASS3",  "CMASS4",
-    "GENEL",  "CRAC2D", "CRAC3D",  "RBE1",    "RBE3",    "RBAR",    "RBAR1",  "RROD",
+    "GENEL",  "CRAC2D", "CRAC3D",  "RBE1",    "RROD",
     "RTRPLT", "RTRPLT1", "RSPLINE", "RJOINT", "RSSCON",  "MPC",
     "PBUSH",  "PBUSH1D", "PBUSH2D", "PGAP",    "PCOMP",   "PCOMPG", "PCOMPLS",
     "PSHEAR", "PBCOMP", "PBEND",   "PBEAM3",  "PMASS",   "PWELD",   "PFAST",  "PSEAM",
@@ -127,6 +127,8 @@ void Builder::Dispatch(const Entry& e) {
         return AddSolid(e);
       }
   if (n == "RBE2") return AddRbe2(e);
+  if (n == "RBAR" || n == "RBAR1") return AddRbar(e);
+  if (n == "RBE3") return AddRbe3(e);
   if (n == "CONM2") return AddConm2(e);
   if (n == "CONM1") return AddConm1(e);
   if (n == "CELAS1" || n == "CELAS2") return AddCelas(e);

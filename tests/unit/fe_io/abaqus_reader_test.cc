@@ -103,13 +103,13 @@ TEST(AbaqusReader, UnsupportedKeywordsAreListedInOneError) {
       "*ELEMENT, TYPE=S4, ELSET=P\n1,1,2,3,4\n"
       "*MATERIAL, NAME=M\n*ELASTIC\n2.1e11, 0.3\n*DENSITY\n7850\n*SHELL SECTION, ELSET=P, MATERIAL=M\n0.01\n";
   const std::string path = WriteScratch("unsupported.inp", base +
-                                                              "*EQUATION\n2\n1,3,1.,2,3,-1.\n"  // line 15
+                                                              "*MPC\nBEAM,1,2\n"  // line 15
                                                               "*CLOAD\n3,3,100.\n"
                                                               "*TIE, NAME=T1\nA, B\n"
-                                                              "*EQUATION\n2\n1,2,1.,2,2,-1.\n");
+                                                              "*MPC\nBEAM,1,3\n");
   const std::string m = InputErrorOf([&] { ReadAbaqus(path); });
-  testing::ExpectContains(m, {"unsupported.inp:15: *EQUATION: 2 keyword types are not supported and would change the "
-                              "stiffness or mass of the model: *EQUATION (x2, first at ",
+  testing::ExpectContains(m, {"unsupported.inp:15: *MPC: 2 keyword types are not supported and would change the "
+                              "stiffness or mass of the model: *MPC (x2, first at ",
                               "*TIE (x1, at "},
                           m);
   EXPECT_EQ(m.find("CLOAD"), std::string::npos) << m;

@@ -435,7 +435,7 @@ TEST(NastranReader, UnsupportedCardsAreListedInOneError) {
                                         "GRID,2,,1.,0.,0.\n"
                                         "CBUSH,7,1,1,2\n"
                                         "FORCE,1,1,,1.,1.,0.,0.\n"
-                                        "RBE3,9,,1,123456,1.,123,2\n"
+                                        "RBE1,9,1,123456,,,,,\n"
                                         "CBUSH,8,1,1,2\n");
   try {
     ReadNastran(path);
@@ -446,7 +446,7 @@ TEST(NastranReader, UnsupportedCardsAreListedInOneError) {
               std::string::npos)
         << m;
     EXPECT_NE(m.find("CBUSH (x2, first at "), std::string::npos) << m;
-    EXPECT_NE(m.find("unsupported.bdf:5)"), std::string::npos) << m;  // RBE3
+    EXPECT_NE(m.find("unsupported.bdf:5)"), std::string::npos) << m;  // RBE1
     EXPECT_EQ(m.find("FORCE"), std::string::npos) << m;
   }
 }
