@@ -12,6 +12,7 @@
 #include <random>
 #include <string>
 #include <vector>
+#include <unistd.h>  // getpid: ctest -j runs each test in its own process
 
 #include "flexmb/common/error.h"
 #include "flexmb/durability/element_fatigue.h"
@@ -168,7 +169,7 @@ TEST(DurabilityDamage, FkmRegionsAreContinuousAndMatchTheGuideline) {
 }
 
 TEST(DurabilityBadInput, NonMonotonicSnTableNamesFileAndLine) {
-  const std::filesystem::path p = std::filesystem::temp_directory_path() / "durability_bad_sn.csv";
+  const std::filesystem::path p = std::filesystem::temp_directory_path() / ("durability_bad_sn_" + std::to_string(::getpid()) + ".csv");
   {
     std::ofstream f(p);
     f << "cycles, range_Pa\n1e4, 300e6\n1e5, 200e6\n# comment\n1e6, 250e6\n";

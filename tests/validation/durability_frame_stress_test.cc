@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <numeric>
+#include <unistd.h>  // getpid: ctest -j runs each test in its own process
 
 #include "flexmb/durability/element_fatigue.h"
 #include "flexmb/durability/modal_history.h"
@@ -145,7 +146,7 @@ TEST(DurabilityFrameStress, MountLoadsRecoveredFromStaticModesMatchFullFe) {
 // (FrameResponse of lane_change_test.cc, evaluated during the run): same
 // value, element and time; the history refers to the run's DIR/frame.h5
 TEST(DurabilityFrameStress, LaneChangeModalCoordinatesGiveTheRunsFrameMaximum) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "flexmb_durability_lane_change";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("flexmb_durability_lane_change_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   LaneChangeOptions o;

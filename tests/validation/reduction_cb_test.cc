@@ -15,6 +15,7 @@
 #include <random>
 #include <string>
 #include <vector>
+#include <unistd.h>  // getpid: ctest -j runs each test in its own process
 
 #include "flexmb/fe/assembly.h"
 #include "flexmb/fe/fe_model.h"
@@ -396,7 +397,7 @@ TEST(ReductionCB, Rbe2SpidersAsInterface) {
 // VTK geometry, DOF map) and from the mesh itself.
 TEST(ReductionCB, ImportedMatricesGiveTheSameBody) {
   const Ladder l = CoarseLadder(0.15);
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "flexmb_reduction_cb_exchange";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("flexmb_reduction_cb_exchange_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   io::WriteExchangeSet(l.mesh, fe::Assemble(l.mesh), dir.string());
   const fe::FeModel imported = io::ReadExchangeSet(dir.string());

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <unistd.h>  // getpid: ctest -j runs each test in its own process
 
 #include "flexmb/common/error.h"
 #include "flexmb/vehicle/road_profile.h"
@@ -82,7 +83,7 @@ TEST(RoadProfile, Iso8608ClassCPsdSlopeAndLevel) {
 }
 
 TEST(RoadProfile, RoadFileBadInputNamesTheLine) {
-  const std::filesystem::path p = std::filesystem::temp_directory_path() / "road_profile_test.csv";
+  const std::filesystem::path p = std::filesystem::temp_directory_path() / ("road_profile_test_" + std::to_string(::getpid()) + ".csv");
   auto error_of = [&](const std::string& text) {
     std::ofstream(p) << text;
     try {

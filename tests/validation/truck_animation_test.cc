@@ -19,6 +19,7 @@
 #include <sstream>
 #include <string>
 #include <vector>
+#include <unistd.h>  // getpid: ctest -j runs each test in its own process
 
 #include "flexmb/bodies/flexible_body.h"
 #include "flexmb/joints/joint.h"
@@ -76,7 +77,7 @@ std::shared_ptr<const reduction::ReducedBody> TruckAnimCoarseFrame() {
 }
 
 TEST(TruckAnimation, ElasticFrameFramesShowTheFlexibleBodyNodes) {
-  const fs::path dir = fs::temp_directory_path() / "flexmb_truck_animation_elastic";
+  const fs::path dir = fs::temp_directory_path() / ("flexmb_truck_animation_elastic_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   const auto body = TruckAnimCoarseFrame();
   const int nodes = static_cast<int>(body->mesh.nodes.size());
@@ -186,7 +187,7 @@ TEST(TruckAnimation, ElasticFrameFramesShowTheFlexibleBodyNodes) {
 }
 
 TEST(TruckAnimation, RigidFrameRunDrawsTheUndeformedMesh) {
-  const fs::path dir = fs::temp_directory_path() / "flexmb_truck_animation_rigid";
+  const fs::path dir = fs::temp_directory_path() / ("flexmb_truck_animation_rigid_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   LaneChangeOptions o;
   o.file = TruckFile();

@@ -18,6 +18,7 @@
 #include <Eigen/Dense>
 #include <cstdio>
 #include <filesystem>
+#include <unistd.h>  // getpid: ctest -j runs each test in its own process
 
 #include "flexmb/fe/assembly.h"
 #include "flexmb/fe/sparse_cholesky.h"
@@ -41,7 +42,7 @@ const Fixture& Frame() {
     Fixture x;
     x.d = LoadLaneChangeTruck(TruckFile());
     const auto reduced = ReduceTruckFrame(x.d, FrameReductionData{});
-    const std::string path = (std::filesystem::temp_directory_path() / "flexmb_truck_frame_test.h5").string();
+    const std::string path = (std::filesystem::temp_directory_path() / ("flexmb_truck_frame_test_" + std::to_string(::getpid()) + ".h5")).string();
     io::WriteBody(*reduced, path);
     x.body = io::ReadBody(path);
     std::filesystem::remove(path);

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include <Eigen/Dense>
+#include <unistd.h>  // getpid: ctest -j runs each test in its own process
 
 #include "apps/flexmb/commands/lane_change.h"
 #include "apps/flexmb/commands/modes_command.h"
@@ -342,7 +343,7 @@ double FrameKindShare(const flexmb::cli::ModesResult& r, size_t k, const std::st
 // over 4 m and the cab on four act as torsion boxes across the open-section
 // rails).
 TEST(TruckRideModes, ElasticFrameInVehicleAgainstFreeFrame) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "flexmb_truck_ride_modes";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("flexmb_truck_ride_modes_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::filesystem::path src = std::filesystem::path(TruckFile()).parent_path();
   for (const char* f : {"tire_11r22_5.yaml", "tire_11r22_5_twin.yaml"})

@@ -204,7 +204,7 @@ TEST(TruckRoughRoad, BadInputNamesTheFileAndTheOption) {
   m = message(o);
   EXPECT_NE(m.find("--distance"), std::string::npos) << m;
   EXPECT_NE(m.find("longer than the road"), std::string::npos) << m;
-  const std::filesystem::path csv = std::filesystem::temp_directory_path() / "flexmb_truck_rough_road_nan.csv";
+  const std::filesystem::path csv = std::filesystem::temp_directory_path() / ("flexmb_truck_rough_road_nan_" + std::to_string(::getpid()) + ".csv");
   {
     std::ofstream f(csv);
     f << "x, z_left, z_right\n0, 0, 0\n1, nan, 0\n2, 0, 0\n";

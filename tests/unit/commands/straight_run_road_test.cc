@@ -12,6 +12,7 @@
 #include <fstream>
 #include <numbers>
 #include <string>
+#include <unistd.h>  // getpid: ctest -j runs each test in its own process
 
 #include "flexmb/common/error.h"
 
@@ -47,7 +48,7 @@ TEST(StraightRunRoad, GeneratedRoadIsCutAndFadesIn) {
 }
 
 TEST(StraightRunRoad, CsvRoadStartsAtZeroAndFlatRoadIsLevel) {
-  const std::filesystem::path csv = std::filesystem::temp_directory_path() / "flexmb_straight_run_road.csv";
+  const std::filesystem::path csv = std::filesystem::temp_directory_path() / ("flexmb_straight_run_road_" + std::to_string(::getpid()) + ".csv");
   {
     std::ofstream f(csv);
     f << "x, z_left, z_right\n100, 0.01, 0.02\n110, 0.03, 0.04\n120, 0.05, 0.06\n";
