@@ -89,7 +89,7 @@ void ParseCoordinateDriver(const YAML::Node& node, const std::string& name, Pars
 void AddJointEntry(const YAML::Node& node, const std::string& name, ParseContext& ctx,
                    std::initializer_list<const char*> parameters,
                    const std::function<std::unique_ptr<Joint>(int mi, int mj)>& make) {
-  std::vector<const char*> keys = {"name", "type", "i", "j"};
+  std::vector<const char*> keys = {"name", "type", "i", "j", "release_time"};
   keys.insert(keys.end(), parameters.begin(), parameters.end());
   ctx.CheckKeys(node, keys);
   const int mi = ctx.Marker(node, "i");
@@ -100,6 +100,7 @@ void AddJointEntry(const YAML::Node& node, const std::string& name, ParseContext
                        "' are both on body '" + model.bodies[model.markers[mi].body]->name() +
                        "': a joint must connect two different bodies");
   auto joint = ctx.Guard(node, [&] { return make(mi, mj); });
+  if (node["release_time"]) joint->release_time = ctx.Positive(node, "release_time");
   ctx.Guard(node, [&] { return ctx.model().AddJoint(std::move(joint), mi, mj); });
 }
 

@@ -79,11 +79,11 @@ void BuildSections(const YAML::Node& root, ParseContext& ctx, const SolverOverri
 // Checks one entry of `manoeuvres` (its keys, and that the drivers and
 // force elements it names exist); with `apply`, replaces the file's values
 // by its own, in place: solver keys, driver functions, keys of force
-// entries (docs/model-file.md, "Manoeuvres").
+// entries, joint release times (docs/model-file.md, "Manoeuvres").
 void Manoeuvre(YAML::Node& root, const std::string& name, const YAML::Node& m, bool apply, ParseContext& ctx) {
   ctx.SetEntity("manoeuvre '" + name + "'");
   if (m.IsNull()) return;  // the file as written
-  ctx.CheckKeys(m, {"description", "solver", "drivers", "forces"});
+  ctx.CheckKeys(m, {"description", "solver", "drivers", "forces", "joints"});
   if (const YAML::Node solver = m["solver"]) {
     if (!solver.IsMap()) ctx.Fail(solver, "expected 'solver' as a map of solver keys");
     if (apply) {
@@ -110,6 +110,20 @@ void Manoeuvre(YAML::Node& root, const std::string& name, const YAML::Node& m, b
         if (key.first.Scalar() == "name" || key.first.Scalar() == "type")
           ctx.Fail(key.first, "a manoeuvre replaces a force's values, not its '" + key.first.Scalar() + "'");
         if (apply) f[key.first.Scalar()] = key.second;
+      }
+    }
+  }
+  if (const YAML::Node joints = m["joints"]) {
+    if (!joints.IsMap()) ctx.Fail(joints, "expected 'joints' as a map: joint name -> {release_time: t}");
+    for (const auto& kv : joints) {
+      YAML::Node j = NamedEntry(root, "joints", kv.first.Scalar());
+      if (!j) ctx.Fail(kv.first, "the file has no joint named '" + kv.first.Scalar() + "'");
+      if (!kv.second.IsMap()) ctx.Fail(kv.second, "expected the keys of joint '" + kv.first.Scalar() + "' to replace");
+      for (const auto& key : kv.second) {
+        // the markers and the type make the machine; a manoeuvre only releases
+        if (key.first.Scalar() != "release_time")
+          ctx.Fail(key.first, "a manoeuvre sets a joint's 'release_time' only, not its '" + key.first.Scalar() + "'");
+        if (apply) j[key.first.Scalar()] = key.second;
       }
     }
   }

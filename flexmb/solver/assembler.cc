@@ -1,6 +1,7 @@
 #include "flexmb/solver/assembler.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <utility>
 
@@ -181,6 +182,11 @@ void BuildAssemblySlots(const Model& model, Workspace& ws) {
         for (int i = 0; i < c.second; ++i) ws.slots.push_back(SlotPatternPosition(ws.B, r, c0 + i));
       }
     }
+    if (!std::isfinite(j.release_time)) continue;
+    for (int q = 0; q < j.NumEquations(); ++q) {
+      const int r = ws.row_of_eq[j.lambda_offset + q];
+      if (r >= 0) ws.slots.push_back(SlotPatternPosition(ws.S, nv + r, nv + r));
+    }
   }
 }
 
@@ -293,6 +299,8 @@ void InitWorkspace(const Model& model, Workspace& ws, const std::vector<int>& re
     for (int k = 0; k < j->NumEquations(); ++k) {
       const int r = ws.row_of_eq[j->lambda_offset + k];
       if (r < 0) continue;
+      // a joint that can be released holds its multipliers at zero then
+      if (std::isfinite(j->release_time)) ts.emplace_back(nv + r, nv + r, 0.0);
       for (int mk : {j->marker_i, j->marker_j}) {
         const Body& b = *model.bodies[BodyOf(model, mk)];
         const Cols& c = ws.marker_cols[mk];
@@ -330,8 +338,20 @@ void EvaluateConstraints(const Model& model, const State& s, Workspace& ws) {
     const MarkerState& mi = ws.markers[j.marker_i];
     const MarkerState& mj = ws.markers[j.marker_j];
     e.phi_t.setZero();
-    j.Evaluate(mi, mj, s.t, e);
     const int n = j.NumEquations();
+    if (j.Released(s.t)) {
+      // released: the equations become lambda = 0 (B rows stay zero)
+      e.phi.setZero();
+      e.D.setZero();
+      for (int q = 0; q < n; ++q) {
+        const int r = ws.row_of_eq[j.lambda_offset + q];
+        if (r < 0) continue;
+        ws.phi(r) = s.lambda(j.lambda_offset + q);
+        ws.phi_t(r) = 0.0;
+      }
+      continue;
+    }
+    j.Evaluate(mi, mj, s.t, e);
     int count = 0;
     for (int q = 0; q < n; ++q) {
       const int r = ws.row_of_eq[j.lambda_offset + q];
@@ -518,6 +538,18 @@ void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
     // positions of the B rows and B^T columns (Workspace::joint_slots)
     const int* pos = ws.slots.data() + js[4];
     double* val = S.valuePtr();
+    if (j.Released(s.t)) {
+      // rows lambda_q = 0, scaled as the integrator's multiplier update
+      // (lambda += y / stiffness); the diagonal follows the B positions
+      for (int q = 0; q < n; ++q) {
+        if (ws.row_of_eq[j.lambda_offset + q] < 0) continue;
+        for (int a = 0; a < 2; ++a)
+          if (cols[a]->second > 0) pos += 2 * cols[a]->second + 1;
+      }
+      for (int q = 0; q < n; ++q)
+        if (ws.row_of_eq[j.lambda_offset + q] >= 0) val[*pos++] += c.stiffness > 0.0 ? 1.0 / c.stiffness : 1.0;
+      continue;
+    }
     for (int q = 0; q < n; ++q) {
       if (ws.row_of_eq[j.lambda_offset + q] < 0) continue;
       lam[q] = s.lambda(j.lambda_offset + q);

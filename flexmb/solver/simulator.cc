@@ -1,8 +1,10 @@
 #include "flexmb/solver/simulator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <vector>
 
 #include "flexmb/common/error.h"
 #include "flexmb/common/log.h"
@@ -75,17 +77,26 @@ void Simulator::Run(double t_end, double output_interval, const Observer& observ
                            rejected, accepted, kRunawayRatio, state_.t));
     }
   };
+  // steps end exactly at the joints' release times (Joint::release_time)
+  std::vector<double> releases;
+  for (const auto& j : model_.joints)
+    if (std::isfinite(j->release_time) && j->release_time > t0 + eps) releases.push_back(j->release_time);
+  std::sort(releases.begin(), releases.end());
+  size_t next_release = 0;
   if (observer) {
     RefreshWorkspace();
     observer(state_, ws_);
   }
   while (state_.t < t_end - eps) {
+    while (next_release < releases.size() && releases[next_release] <= state_.t + eps) ++next_release;
     double h = ss.adaptive ? h_ : ss.dt;
     const double t_out = std::min(next_output(), t_end);
-    bool hits_output = false;
-    if (state_.t + h >= t_out - eps) {
-      h = t_out - state_.t;
-      hits_output = true;
+    const double t_stop = next_release < releases.size() ? std::min(t_out, releases[next_release]) : t_out;
+    bool hits_output = false, hits_stop = false;
+    if (state_.t + h >= t_stop - eps) {
+      h = t_stop - state_.t;
+      hits_stop = true;
+      hits_output = t_stop >= t_out - eps;
     }
     const StepStatus st = integrator_.TryStep(state_, h);
     if (st == StepStatus::kConverged && (!ss.adaptive || integrator_.error_estimate() <= 1.0)) {
@@ -94,7 +105,7 @@ void Simulator::Run(double t_end, double output_interval, const Observer& observ
       if (ss.adaptive) {
         const double err = std::max(integrator_.error_estimate(), 1e-10);
         const double grow = std::clamp(0.9 * std::pow(err, -1.0 / 3.0), 0.2, 2.0);
-        if (!hits_output || h >= h_) h_ = std::min(h_max, h * grow);
+        if (!hits_stop || h >= h_) h_ = std::min(h_max, h * grow);
       }
     } else {
       // rejected: cut the step
