@@ -4,6 +4,7 @@
 slew with the load swinging.
 
 Usage: /usr/bin/python3 plot.py RUN_DIR [--out DIR] [--mass 5000] [--falls 2]
+       [--released-mass 2000]
 
 Writes DIR/crane_metrics.json and the plots rope_force.png,
 hook_height.png, swing.png, slewing.png, winch_and_cylinder.png,
@@ -25,7 +26,12 @@ Metrics:
   largest von Mises stress of the two flange elements beyond the
   cylinder eye;
 - the largest winch drum torque (the hoisting drive's reaction) and
-  luffing cylinder force (the cylinder length driver's reaction).
+  luffing cylinder force (the cylinder length driver's reaction);
+- phi_3, when the grab lets part of the load go (the `release`
+  manoeuvre; the grab's reaction, sensor `grab`, drops to zero): the
+  smallest hoist load within two seconds after the release over the whole
+  load's weight, beside EN 13001-2's sudden-release value 1 - 2 dm / m
+  (dm the released mass, --released-mass).
 """
 import argparse
 import csv
@@ -146,6 +152,27 @@ def metrics(c, mass, falls=2):
     }
 
 
+def release(c, mass, released_mass, falls):
+    """phi_3 of a sudden release (EN 13001-2, beta_3 = 1): the release time
+    (the grab's reaction falls to zero), the released mass's share of the
+    load and the smallest hoist load after it over the load's weight."""
+    if "grab.fx" not in c:
+        return {}
+    t = c["time"]
+    grab = [math.sqrt(a * a + b * b + d * d) for a, b, d in zip(c["grab.fx"], c["grab.fy"], c["grab.fz"])]
+    k = next((i for i in range(1, len(t)) if grab[i] == 0.0 and grab[i - 1] > 0.0), None)
+    if k is None:
+        return {}
+    hoist = hoist_load(c, falls)
+    share = released_mass / mass
+    return {
+        "release_time_s": t[k],
+        "released_share": share,
+        "phi_3": min(window(t, hoist, t[k], t[k] + 2.0)) / (mass * G),
+        "phi_3_en13001_sudden": 1.0 - 2.0 * share,
+    }
+
+
 def plot(out, name, t, series, ylabel, title):
     fig, ax = plt.subplots(figsize=(8, 4.5))
     for label, y in series:
@@ -167,11 +194,14 @@ def main():
     ap.add_argument("--out", default=None)
     ap.add_argument("--mass", type=float, default=5000.0, help="payload with hook block [kg]")
     ap.add_argument("--falls", type=int, default=2, help="parts of line the hook block hangs on")
+    ap.add_argument("--released-mass", type=float, default=2000.0,
+                    help="part of the payload the grab lets go in the release manoeuvre [kg]")
     a = ap.parse_args()
     out = a.out or os.path.join(a.run_dir, "plots")
     os.makedirs(out, exist_ok=True)
     c = load(a.run_dir)
     m = metrics(c, a.mass, a.falls)
+    m.update(release(c, a.mass, a.released_mass, a.falls))
     with open(os.path.join(out, "crane_metrics.json"), "w") as f:
         json.dump(m, f, indent=2)
     print(json.dumps(m, indent=2))
