@@ -109,7 +109,9 @@ StraightRunResult RunStraight(const StraightRunOptions& opt) {
     StraightRunFail(opt, "--speed", "the speed must be a positive number [km/h]");
   if (f.frame != "rigid" && f.frame != "elastic")
     StraightRunFail(opt, "--frame", "expected rigid or elastic, got '" + f.frame + "'");
-  ApplySolverOverrides(SolverOverrides{std::nullopt, opt.dt}, f.solver);
+  SolverOverrides overrides;
+  overrides.dt = opt.dt;
+  ApplySolverOverrides(overrides, f.solver);
   if (!f.dt_min_given) f.solver.dt_min = 1e-6 * f.solver.dt;
   const double v0 = f.speed_kmh / 3.6;
   TruckData& truck = f.truck;
