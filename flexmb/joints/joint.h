@@ -69,12 +69,12 @@ class Joint {
   int marker_i = -1, marker_j = -1;
   /// Offset of this joint's equations in the global multiplier vector.
   int lambda_offset = 0;
-  /// Time [s] from which the joint no longer acts: its equations are dropped
-  /// and its multipliers (reaction forces) held at zero, e.g. the sudden
-  /// release of part of a payload (EN 13001-2's phi_3). +infinity: never.
+  /// Time [s] at which the joint lets go: the simulator ends a step there
+  /// and from then on the joint's equations are dropped and its multipliers
+  /// (reaction forces) held at zero (Workspace::joint_released), e.g. the
+  /// sudden release of part of a payload (EN 13001-2's phi_3).
+  /// +infinity: never.
   double release_time = std::numeric_limits<double>::infinity();
-  /// Whether the joint has been released at time t [s].
-  bool Released(double t) const { return t >= release_time; }
 
  protected:
   explicit Joint(std::string name) : name_(std::move(name)) {}

@@ -36,6 +36,9 @@ struct Workspace {
   /// of a joint, or -1 if the equation was removed as redundant.
   std::vector<int> row_of_eq;
   int n_active = 0;                  ///< number of active constraint rows
+  /// Per joint: 1 once the simulator has released it (Joint::release_time);
+  /// its rows then read lambda = 0 and have no B entries.
+  std::vector<char> joint_released;
   VecX phi, phi_t;                   ///< active constraint values and time derivatives
   SparseMat B;                       ///< constraint Jacobian (n_active x nv), fixed pattern
 

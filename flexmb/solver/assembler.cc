@@ -211,6 +211,7 @@ void InitWorkspace(const Model& model, Workspace& ws, const std::vector<int>& re
     ws.marker_cols[k] = c;
   }
   ws.joints.resize(model.joints.size());
+  ws.joint_released.assign(model.joints.size(), 0);
   for (size_t k = 0; k < model.joints.size(); ++k) {
     const int n = model.joints[k]->NumEquations();
     ws.joints[k].phi.setZero(n);
@@ -339,7 +340,7 @@ void EvaluateConstraints(const Model& model, const State& s, Workspace& ws) {
     const MarkerState& mj = ws.markers[j.marker_j];
     e.phi_t.setZero();
     const int n = j.NumEquations();
-    if (j.Released(s.t)) {
+    if (ws.joint_released[k]) {
       // released: the equations become lambda = 0 (B rows stay zero)
       e.phi.setZero();
       e.D.setZero();
@@ -538,7 +539,7 @@ void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
     // positions of the B rows and B^T columns (Workspace::joint_slots)
     const int* pos = ws.slots.data() + js[4];
     double* val = S.valuePtr();
-    if (j.Released(s.t)) {
+    if (ws.joint_released[k]) {
       // rows lambda_q = 0, scaled as the integrator's multiplier update
       // (lambda += y / stiffness); the diagonal follows the B positions
       for (int q = 0; q < n; ++q) {

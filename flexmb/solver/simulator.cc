@@ -83,6 +83,7 @@ void Simulator::Run(double t_end, double output_interval, const Observer& observ
     if (std::isfinite(j->release_time) && j->release_time > t0 + eps) releases.push_back(j->release_time);
   std::sort(releases.begin(), releases.end());
   size_t next_release = 0;
+  ReleaseJoints(eps);
   if (observer) {
     RefreshWorkspace();
     observer(state_, ws_);
@@ -126,6 +127,7 @@ void Simulator::Run(double t_end, double output_interval, const Observer& observ
       // the pieces end on the step's own time, so that outputs are kept
       CutStep(state_.t + h, h, eps, check_runaway);
     }
+    if (next_release < releases.size() && state_.t >= releases[next_release] - eps) ReleaseJoints(eps);
     if (hits_output && state_.t >= t_out - eps) ++out_index;
     if (observer && (output_interval <= 0 || hits_output || state_.t >= t_end - eps)) {
       RefreshWorkspace();
@@ -152,6 +154,20 @@ void Simulator::NoteAccuracy(double h) {
     accuracy_.max_error = err;
     accuracy_.t = state_.t + h;
   }
+}
+
+void Simulator::ReleaseJoints(double eps) {
+  bool any = false;
+  for (size_t k = 0; k < model_.joints.size(); ++k) {
+    const Joint& j = *model_.joints[k];
+    if (ws_.joint_released[k] || !(j.release_time <= state_.t + eps)) continue;
+    ws_.joint_released[k] = 1;
+    any = true;
+  }
+  if (!any) return;
+  SparseLu lu;
+  InitialAccelerations(model_, state_, ws_, lu);
+  integrator_.Start(state_);
 }
 
 void Simulator::CutStep(double t_target, double h, double eps, const std::function<void()>& check_runaway) {

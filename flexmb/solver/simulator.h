@@ -95,6 +95,11 @@ class Simulator {
   // fixed step: integrates from the current time to t_target in pieces
   // (the first h / 2); throws through Fail below dt_min
   void CutStep(double t_target, double h, double eps, const std::function<void()>& check_runaway);
+  /// Lets go of the joints whose release time is reached (up to eps [s]) and
+  /// restarts the integrator from the current state with them released:
+  /// accelerations and multipliers consistent again, as the acceleration
+  /// jumps at a release (Joint::release_time).
+  void ReleaseJoints(double eps);
   // throws NumericalError: `what`, the integrator's failure hint and the
   // elements with the largest shares of the residual (entity: the largest)
   [[noreturn]] void Fail(const std::string& what);

@@ -88,7 +88,7 @@ TEST(Manoeuvre, ErrorsNameTheManoeuvreAndLine) {
             std::string::npos);
   EXPECT_NE(ManoeuvreError(base + "  bad: {forces: {s: {type: bushing}}}\n", "bad").find("not its 'type'"),
             std::string::npos);
-  EXPECT_NE(ManoeuvreError(base + "  bad: {joints: {}}\n", "bad").find("joints"), std::string::npos);
+  EXPECT_NE(ManoeuvreError(base + "  bad: {parts: {}}\n", "bad").find("parts"), std::string::npos);
   // every manoeuvre's names are checked, whichever runs
   EXPECT_NE(ManoeuvreError(base + "  bad: {drivers: {nothing: 1}}\n", "fast").find("no driver named 'nothing'"),
             std::string::npos);
