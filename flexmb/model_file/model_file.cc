@@ -79,11 +79,12 @@ void BuildSections(const YAML::Node& root, ParseContext& ctx, const SolverOverri
 // Checks one entry of `manoeuvres` (its keys, and that the drivers and
 // force elements it names exist); with `apply`, replaces the file's values
 // by its own, in place: solver keys, driver functions, keys of force
-// entries, joint release times (docs/model-file.md, "Manoeuvres").
+// entries, joint release times, bodies' initial states (docs/model-file.md,
+// "Manoeuvres").
 void Manoeuvre(YAML::Node& root, const std::string& name, const YAML::Node& m, bool apply, ParseContext& ctx) {
   ctx.SetEntity("manoeuvre '" + name + "'");
   if (m.IsNull()) return;  // the file as written
-  ctx.CheckKeys(m, {"description", "solver", "drivers", "forces", "joints"});
+  ctx.CheckKeys(m, {"description", "solver", "drivers", "forces", "joints", "bodies"});
   if (const YAML::Node solver = m["solver"]) {
     if (!solver.IsMap()) ctx.Fail(solver, "expected 'solver' as a map of solver keys");
     if (apply) {
@@ -110,6 +111,22 @@ void Manoeuvre(YAML::Node& root, const std::string& name, const YAML::Node& m, b
         if (key.first.Scalar() == "name" || key.first.Scalar() == "type")
           ctx.Fail(key.first, "a manoeuvre replaces a force's values, not its '" + key.first.Scalar() + "'");
         if (apply) f[key.first.Scalar()] = key.second;
+      }
+    }
+  }
+  if (const YAML::Node bodies = m["bodies"]) {
+    if (!bodies.IsMap()) ctx.Fail(bodies, "expected 'bodies' as a map: body name -> its initial state");
+    for (const auto& kv : bodies) {
+      YAML::Node b = NamedEntry(root, "bodies", kv.first.Scalar());
+      if (!b) ctx.Fail(kv.first, "the file has no body named '" + kv.first.Scalar() + "'");
+      if (!kv.second.IsMap()) ctx.Fail(kv.second, "expected the keys of body '" + kv.first.Scalar() + "' to replace");
+      for (const auto& key : kv.second) {
+        // the initial state only: the machine (masses, shapes, markers) stays
+        const std::string k = key.first.Scalar();
+        if (k != "position" && k != "orientation" && k != "velocity" && k != "angular_velocity")
+          ctx.Fail(key.first, "a manoeuvre sets a body's initial state (position, orientation, velocity, "
+                              "angular_velocity), not its '" + k + "'");
+        if (apply) b[k] = key.second;
       }
     }
   }

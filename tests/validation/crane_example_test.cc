@@ -97,4 +97,63 @@ TEST_F(CraneExample, LiftOffMatchesTheSpringClosedForm) {
   EXPECT_NEAR(peak / closed, 1.0, 1e-2);    // measured 1.5e-3
 }
 
+// The `release` manoeuvre: the load hangs at rest (statics), the grab lets
+// the lower 2000 kg go at 1 s. Checked: before the release the grab carries
+// the part's weight and the hook the whole load; after it the grab carries
+// nothing, the part falls freely (z_r - g t^2 / 2, until it lands), and the
+// hoist load swings down to the single-mass value m1 g - dm g d, with d the
+// decay over the first half period, exp(-pi zeta / sqrt(1 - zeta^2)),
+// measured from the following minima of the same run (EN 13001-2's
+// phi_3 = 1 - (dm / m)(1 + beta_3), beta_3 = 1, is the undamped d = 1).
+TEST_F(CraneExample, SuddenReleaseOfPartOfTheLoad) {
+  const std::string src = FLEXMB_SOURCE_DIR;
+  std::filesystem::copy_file(src + "/examples/crane/crane.yaml", dir_ / "crane.yaml");
+  const std::string gen = "cd '" + dir_.string() + "' && /usr/bin/python3 '" + src +
+                          "/examples/crane/make_boom.py' --out boom.bdf > make_boom.txt";
+  ASSERT_EQ(std::system(gen.c_str()), 0);
+  auto r = RunCli(dir_, "reduce boom.bdf --interface 1,2,3 --modes 20 -o boom.h5");
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = RunCli(dir_, "run crane.yaml --out run --manoeuvre release --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const ResultsCsv t = ReadResultsCsv(dir_ / "run" / "results.csv");
+  const std::vector<double> time = t.Values("time"), tension = t.Values("rope.f"), gx = t.Values("grab.fx"),
+                            gy = t.Values("grab.fy"), gz = t.Values("grab.fz"), part = t.Values("part.z");
+  constexpr double kPartMass = 2000.0, kReleaseTime = 1.0;
+  const double m1 = kLoadMass - kPartMass;
+  size_t k_r = 0;
+  while (k_r < time.size() && time[k_r] < kReleaseTime - 1e-9) ++k_r;
+  ASSERT_LT(k_r + 10, time.size());
+  ASSERT_NEAR(time[k_r], kReleaseTime, 1e-9);
+  double before_grab = 0.0, before_hoist = 0.0, after_grab = 0.0, fall = 0.0;
+  for (size_t k = 0; k < k_r; ++k) {
+    before_grab = std::max(before_grab, std::abs(std::sqrt(gx[k] * gx[k] + gy[k] * gy[k] + gz[k] * gz[k]) / (kPartMass * kG) - 1.0));
+    before_hoist = std::max(before_hoist, std::abs(kFalls * tension[k] / (kLoadMass * kG) - 1.0));
+  }
+  for (size_t k = k_r; k < time.size(); ++k) {
+    after_grab = std::max(after_grab, std::sqrt(gx[k] * gx[k] + gy[k] * gy[k] + gz[k] * gz[k]));
+    const double tau = time[k] - kReleaseTime;
+    if (tau < 0.25) fall = std::max(fall, std::abs(part[k] - (part[k_r] - 0.5 * kG * tau * tau)));
+  }
+  // the minima of the hoist load after the release (the new mean is m1 g)
+  std::vector<double> minima;
+  for (size_t k = k_r + 1; k + 1 < time.size(); ++k) {
+    const double f = kFalls * tension[k];
+    if (f < kFalls * tension[k - 1] && f <= kFalls * tension[k + 1]) minima.push_back(f);
+  }
+  ASSERT_GE(minima.size(), 3u);
+  const double a1 = m1 * kG - minima[0], a2 = m1 * kG - minima[1];
+  const double d = std::sqrt(a2 / a1);  // decay over half a period
+  const double phi3 = minima[0] / (kLoadMass * kG);
+  const double closed = (m1 * kG - kPartMass * kG * d) / (kLoadMass * kG);
+  std::printf("release: grab %.2e, hoist %.2e before; grab %.3g N after; fall %.3g m; minima %.1f %.1f %.1f N; "
+              "phi_3 %.4f against %.4f (half-period decay %.4f; EN 13001-2 undamped %.4f)\n",
+              before_grab, before_hoist, after_grab, fall, minima[0], minima[1], minima[2], phi3, closed, d,
+              1.0 - 2.0 * kPartMass / kLoadMass);
+  EXPECT_LT(before_grab, 1e-3);
+  EXPECT_LT(before_hoist, 1e-3);
+  EXPECT_LT(after_grab, 1e-6);
+  EXPECT_LT(fall, 1e-6);
+  EXPECT_NEAR(phi3, closed, 0.01);
+}
+
 }  // namespace crane_example_test

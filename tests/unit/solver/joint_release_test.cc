@@ -125,6 +125,16 @@ TEST(JointRelease, ManoeuvreSetsTheReleaseTimeAndBadValuesAreNamed) {
   EXPECT_NE(error(ReleaseModel("", "manoeuvres:\n  drop: {joints: {grab: {i: ground.top}}}\n"), "")
                 .find("a manoeuvre sets a joint's 'release_time' only, not its 'i'"),
             std::string::npos);
+  // a manoeuvre may start the bodies elsewhere, not change them
+  o.manoeuvre = "high";
+  auto high = LoadModelString(ReleaseModel("", "manoeuvres:\n  high: {bodies: {part: {position: [0, 0, 2]}}}\n"),
+                              "release.yaml", o);
+  VecX q = VecX::Zero(high->bodies[2]->nq()), v = VecX::Zero(high->bodies[2]->nv());
+  high->bodies[2]->InitialCoordinates(q.data(), v.data());
+  EXPECT_EQ(q(2), 2.0);
+  EXPECT_NE(error(ReleaseModel("", "manoeuvres:\n  drop: {bodies: {part: {mass: 1}}}\n"), "")
+                .find("not its 'mass'"),
+            std::string::npos);
 }
 
 }  // namespace
