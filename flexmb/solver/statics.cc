@@ -177,6 +177,7 @@ class StaticsSolver {
   StaticsNewton Newton(double mu, int& used) {
     SparseLu& lu = lu_;
     double last_step = INFINITY;
+    bool inertia_held = false;
     for (int it = 0;; ++it) {
       const double norm = Residual(mu, true);
       if (!std::isfinite(norm)) return StaticsNewton::kFailed;
@@ -186,7 +187,10 @@ class StaticsSolver {
       if (last_step <= set_.tolerance && res_.residual <= set_.residual_tol * fscale_ &&
           phi_norm <= m_.solver.assembly_tol)
         return StaticsNewton::kConverged;
-      if (it >= set_.max_iterations || res_.iterations >= set_.max_total_iterations) return StaticsNewton::kFailed;
+      // a direction held by its inertia alone that does not settle is a
+      // free motion under load (a free body under gravity): say so
+      if (it >= set_.max_iterations || res_.iterations >= set_.max_total_iterations)
+        return inertia_held ? StaticsNewton::kSingular : StaticsNewton::kFailed;
       ++res_.iterations;
       ++used;
       StoreLambda();
@@ -197,6 +201,14 @@ class StaticsSolver {
         const bool held = set_.damping_hold_time > 0.0 && [&] {
           AssembleIterationMatrix(m_, s_, ws_, MatrixCoefficients{0.0, 1.0 / set_.damping_hold_time, 1.0,
                                                                    m_.solver.geometric_stiffness});
+          if (lu.Factorize(ws_.S)) return true;
+          // neither stiffness nor damping (a load on one hook turns freely
+          // about the rope): held by the inertia too, as a pseudo-time step
+          // of 10 tau; the residual stays the true one (file comment)
+          const double tm = 10.0 * set_.damping_hold_time;
+          AssembleIterationMatrix(m_, s_, ws_, MatrixCoefficients{1.0 / (tm * tm), 1.0 / set_.damping_hold_time, 1.0,
+                                                                   m_.solver.geometric_stiffness});
+          inertia_held = true;
           return lu.Factorize(ws_.S);
         }();
         // at a converged equilibrium (first iteration of an increment): a mechanism

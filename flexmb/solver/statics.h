@@ -31,8 +31,12 @@
 ///   vehicle on its tires by their slip damping: as at rest in reality, the
 ///   damping keeps these directions where they are while the stiff ones
 ///   settle. The residual stays the true one, so an equilibrium found is an
-///   equilibrium; a direction with neither stiffness nor damping is still
-///   reported as a free motion.
+///   equilibrium. Where K_t + C / tau is singular too, M / (10 tau)^2 is
+///   added (a pseudo-transient step): a direction with neither stiffness
+///   nor damping but no load along it either (a load hanging on one hook
+///   turns freely about the rope; a slack rope's load at load factor 0)
+///   stays where it is; one with a load along it (a free body under
+///   gravity) never settles and is reported as a free motion.
 
 #include <functional>
 
