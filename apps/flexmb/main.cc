@@ -111,6 +111,7 @@ int main(int argc, char** argv) {
   statics->add_option("model", statics_opt.model_path, "model file (YAML)")->required();
   statics->add_option("--out,-o", statics_opt.out_dir, "output directory")->required();
   statics->add_option("--time", statics_opt.time, "time at which drivers and loads are evaluated [s] (default 0)");
+  statics->add_option("--manoeuvre", statics_opt.manoeuvre, "the entry of the file's 'manoeuvres' to solve");
   statics->add_flag("--animation", statics_opt.animation, "write anim.pvd, one frame per load step");
   bool statics_quiet = false;
   statics->add_flag("--quiet,-q", statics_quiet, "no summary line");
@@ -287,10 +288,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (study->parsed()) return flexmb::cli::StudyCommand(study->remaining(), argv[0]);
-  if (run->parsed() && !manoeuvre.empty() &&
-      (flexmb::vehicle::IsLaneChangeFile(model) || flexmb::cli::ModelAsksForStatics(model))) {
-    std::fprintf(stderr, "error: --manoeuvre %s: only for a model file run in time (this is a %s file)\n",
-                 manoeuvre.c_str(), flexmb::vehicle::IsLaneChangeFile(model) ? "lane-change" : "statics");
+  if (run->parsed() && !manoeuvre.empty() && flexmb::vehicle::IsLaneChangeFile(model)) {
+    std::fprintf(stderr, "error: --manoeuvre %s: only for a model file (this is a lane-change file)\n",
+                 manoeuvre.c_str());
     return 2;
   }
   if (run->parsed() && flexmb::vehicle::IsLaneChangeFile(model)) {
@@ -303,9 +303,10 @@ int main(int argc, char** argv) {
       return r.completed || r.rolled_over ? 0 : 1;
     });
   }
-  if (run->parsed() && flexmb::cli::ModelAsksForStatics(model)) {
+  if (run->parsed() && flexmb::cli::ModelAsksForStatics(model, manoeuvre)) {
     flexmb::cli::StaticsCommandOptions o;
     o.model_path = model;
+    o.manoeuvre = manoeuvre;
     o.out_dir = out;
     o.animation = animation;
     o.info = quiet ? nullptr : stdout;

@@ -33,8 +33,11 @@ void AnalysisWarnIfMoving(const Model& m, const AnalysisModel& am, const VecX& a
 
 }  // namespace
 
-std::unique_ptr<Model> LoadAnalysisModelFile(const std::string& path, const std::string& text) {
-  return text.empty() ? LoadModelFile(path) : LoadModelString(text, path);
+std::unique_ptr<Model> LoadAnalysisModelFile(const std::string& path, const std::string& text,
+                                             const std::string& manoeuvre) {
+  SolverOverrides o;
+  o.manoeuvre = manoeuvre;
+  return text.empty() ? LoadModelFile(path, o) : LoadModelString(text, path, o);
 }
 
 void AnalysisLinearizationState(const std::string& path, const std::string& text, const std::string& at,
@@ -91,8 +94,8 @@ const Model& AnalysisLinearizationModel(const std::string& path, const std::stri
 }
 
 void LoadAnalysisModel(const std::string& path, double t, AnalysisModel& out, std::vector<std::string>& warnings,
-                       const std::string& text) {
-  out.model = LoadAnalysisModelFile(path, text);
+                       const std::string& text, const std::string& manoeuvre) {
+  out.model = LoadAnalysisModelFile(path, text, manoeuvre);
   out.state = out.model->InitialState();
   out.state.t = t;
   AnalysisWarnings collect(warnings);

@@ -44,11 +44,13 @@ struct AnalysisModel {
 /// consistent (MakeConsistent); the warnings go to `warnings`. A non-empty
 /// `text` is the model-file text itself, `path` then names it in messages.
 void LoadAnalysisModel(const std::string& path, double t, AnalysisModel& out, std::vector<std::string>& warnings,
-                       const std::string& text = "");
+                       const std::string& text = "", const std::string& manoeuvre = "");
 
 /// The model file at `path`, or the model-file text `text` if non-empty
-/// (`path` then names it in messages).
-std::unique_ptr<Model> LoadAnalysisModelFile(const std::string& path, const std::string& text);
+/// (`path` then names it in messages), with the file's `manoeuvres` entry
+/// `manoeuvre` applied (empty: the file's own choice).
+std::unique_ptr<Model> LoadAnalysisModelFile(const std::string& path, const std::string& text,
+                                             const std::string& manoeuvre = "");
 
 /// The state to linearize about (`flexmb modes` and `flexmb linearize`),
 /// into `am`, with its accelerations into `a` (nv): `at` "statics" (the

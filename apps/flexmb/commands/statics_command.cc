@@ -66,9 +66,11 @@ class StaticsTable {
 
 }  // namespace
 
-bool ModelAsksForStatics(const std::string& model_path) {
+bool ModelAsksForStatics(const std::string& model_path, const std::string& manoeuvre) {
   try {
-    return LoadModelFile(model_path)->solver.analysis == Analysis::kStatics;
+    SolverOverrides o;
+    o.manoeuvre = manoeuvre;
+    return LoadModelFile(model_path, o)->solver.analysis == Analysis::kStatics;
   } catch (const std::exception&) {
     return false;
   }
@@ -96,7 +98,7 @@ StaticsOutcome StaticsAnalysis(const StaticsCommandOptions& opt) {
   const bool files = !opt.out_dir.empty();
   try {
     if (!std::isfinite(opt.time)) throw InputError("--time must be a finite number of seconds");
-    LoadAnalysisModel(opt.model_path, opt.time, am, warnings, opt.model_text);
+    LoadAnalysisModel(opt.model_path, opt.time, am, warnings, opt.model_text, opt.manoeuvre);
     if (opt.err)
       for (const std::string& w : warnings) std::fprintf(opt.err, "warning: %s\n", w.c_str());
     StaticsTable table(files ? (dir / "results.csv").string() : "", *am.model, out.columns, out.rows);
@@ -152,6 +154,7 @@ StaticsOutcome StaticsAnalysis(const StaticsCommandOptions& opt) {
   sum.Text("analysis", "statics");
   sum.Text("model", opt.model_path);
   sum.Text("model_name", am.model ? am.model->name : "");
+  sum.Text("manoeuvre", am.model ? am.model->manoeuvre : opt.manoeuvre);
   sum.Number("time", opt.time);
   sum.Number("load_factor", load_factor);
   sum.Raw("load_steps", std::to_string(res.increments));

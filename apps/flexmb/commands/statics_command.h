@@ -24,6 +24,7 @@ struct StaticsCommandOptions {
   std::string model_text;          ///< the model-file text itself (empty: read model_path)
   std::string out_dir;             ///< output directory (created if missing; empty: no files)
   double time = 0.0;               ///< time at which drivers and loads are evaluated [s]
+  std::string manoeuvre;           ///< entry of the file's `manoeuvres` (--manoeuvre; empty: the file's)
   bool animation = false;          ///< write anim.pvd (as output.animation)
   std::FILE* info = nullptr;       ///< result lines (nullptr: silent)
   std::FILE* err = nullptr;        ///< warnings and errors (nullptr: silent)
@@ -56,8 +57,9 @@ StaticsOutcome StaticsAnalysis(const StaticsCommandOptions& options);
 /// or joint and the load factor reached.
 int StaticsCommand(const StaticsCommandOptions& options);
 
-/// True if the model file asks for a static solve (solver.analysis:
+/// True if the model file, with its `manoeuvres` entry `manoeuvre` (empty:
+/// the file's own choice), asks for a static solve (solver.analysis:
 /// statics); false also when it cannot be loaded.
-bool ModelAsksForStatics(const std::string& model_path);
+bool ModelAsksForStatics(const std::string& model_path, const std::string& manoeuvre = "");
 
 }  // namespace flexmb::cli
