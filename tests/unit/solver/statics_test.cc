@@ -108,8 +108,10 @@ TEST(Statics, FreeBodyIsNamed) {
 // A block standing on four ground contacts: vertical, roll and pitch have
 // contact stiffness, but only the friction (damping, at rest) holds it
 // sideways and in yaw. Statics settles it at the penetration m g / (4 k)
-// without moving it sideways; without friction and with the hold switched
-// off, the sideways freedom is a free motion, named.
+// without moving it sideways; without friction it is a neutral equilibrium
+// sideways (kept in place by the inertia hold) unless a load pushes it
+// there; with the hold switched off the sideways freedom is a free motion,
+// named.
 void StaticsBlockOnGround(Model& m, double mu) {
   RigidBodyData d;
   d.mass = 400.0;
@@ -142,13 +144,25 @@ TEST(Statics, DampingHoldsDirectionsWithoutStiffness) {
   EXPECT_NEAR(s.q(0), 0.3, 1e-12);
   EXPECT_NEAR(s.q(1), -0.2, 1e-12);
 
-  // no friction: nothing holds it sideways
+  // no friction: nothing holds it sideways, nothing pushes it either: a
+  // neutral equilibrium, kept where it is by the inertia hold
   Model free;
   StaticsBlockOnGround(free, 0.0);
   State s2 = free.InitialState();
   Workspace ws2;
   MakeConsistent(free, s2, ws2);
-  EXPECT_THROW(SolveStatics(free, s2, ws2), NumericalError);
+  SolveStatics(free, s2, ws2);
+  EXPECT_NEAR(s2.q(2), 0.25 - 400.0 * g / (4 * 2e6), 1e-12);
+  EXPECT_NEAR(s2.q(0), 0.3, 1e-12);
+  EXPECT_NEAR(s2.q(1), -0.2, 1e-12);
+  // ... unless a load pushes along such a direction: a free motion
+  Model pushed;
+  StaticsBlockOnGround(pushed, 0.0);
+  pushed.gravity_W.x() = 0.5;
+  State s4 = pushed.InitialState();
+  Workspace ws4;
+  MakeConsistent(pushed, s4, ws4);
+  EXPECT_THROW(SolveStatics(pushed, s4, ws4), NumericalError);
   // friction, but the hold switched off
   Model off_model;
   StaticsBlockOnGround(off_model, 0.5);
