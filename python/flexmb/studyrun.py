@@ -98,7 +98,8 @@ def collect_outputs(outputs, summary, run_dir):
             columns = _read_columns(os.path.join(run_dir, "results.csv"))
         if what not in columns:
             raise KeyError(f"output {name}: no column '{what}' in results.csv (columns: {', '.join(columns)})")
-        row[name] = _reduce(how, columns["time"], columns[what])
+        # the first column: time for a run, load_factor for statics
+        row[name] = _reduce(how, columns.get("time", next(iter(columns.values()))), columns[what])
     return row
 
 
