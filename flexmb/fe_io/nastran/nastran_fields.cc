@@ -183,6 +183,7 @@ class DeckReader {
   }
 
   void Flush() {
+    in_equation_ = false;
     if (!has_current_) return;
     while (!current_.fields.empty() && current_.fields.back().empty()) {
       current_.fields.pop_back();
