@@ -9,7 +9,10 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <cstdio>
+#include <initializer_list>
 #include <string>
+#include <vector>
 
 #include "flexmb/fe/assembly.h"
 #include "flexmb/fe_io/nastran/nastran_reader.h"
