@@ -252,4 +252,16 @@ TEST(NastranCd, ComponentsOfSeveralCardsAreMerged) {
   EXPECT_EQ(fe::Assemble(mesh).dofs.n_free, 0);
 }
 
+// a grid on a skew roller cannot be an interface node (all six DOF
+// independent): an error naming the grid, not a crash
+TEST(NastranCd, SkewConstrainedGridIsNoInterfaceNode) {
+  const fe::Mesh mesh = ReadNastran(WriteScratch(
+      "skew_interface.bdf", "CORD2R,3,,0.,0.,0.,0.,0.,1.\n,1.,1.,0.\nGRID,1,,0.,0.,0.,3\nCELAS2,1,8.,1,1\n"
+                            "CELAS2,2,1.,1,2\nCELAS2,3,1.,1,3\nSPC1,1,2,1\n"));
+  fe::AssemblyOptions options;
+  options.independent_nodes = {0};
+  testing::ExpectContains(testing::InputErrorOf([&] { fe::Assemble(mesh, options); }),
+                          {"SPC 1", "node 1 must be independent (an interface node)"}, "interface");
+}
+
 }  // namespace flexmb::io::nastran_cd_test
