@@ -187,6 +187,19 @@ void WriteExtras(hdf5::Writer& w, const fe::Mesh& mesh) {
     w.Data("/mesh/springs/nodes", H5T_STD_I32LE, H5T_NATIVE_INT, {ns, 2}, nodes.data());
     w.Data("/mesh/springs/components", H5T_STD_I32LE, H5T_NATIVE_INT, {ns, 2}, components.data());
     w.Doubles("/mesh/springs/stiffness", k);
+    // directional springs (CELAS in a displacement system, CBUSH), only if
+    // there are any: flag and [S, 12] coefficients (coef_a, coef_b)
+    std::vector<int> directional;
+    std::vector<double> coefs;
+    for (const fe::ScalarSpring& s : mesh.springs) {
+      directional.push_back(s.directional ? 1 : 0);
+      coefs.insert(coefs.end(), s.coef_a.begin(), s.coef_a.end());
+      coefs.insert(coefs.end(), s.coef_b.begin(), s.coef_b.end());
+    }
+    if (std::count(directional.begin(), directional.end(), 1) > 0) {
+      w.Ints("/mesh/springs/directional", directional);
+      w.Doubles("/mesh/springs/coefficients", {ns, 12}, coefs.data());
+    }
   }
 
   w.Group("/mesh/rigid_links");
@@ -333,6 +346,10 @@ void ReadExtras(const hdf5::Reader& r, int nn, int ne, const fe::Origin& origin,
     const std::vector<int> components = pairs("components");
     r.InRange(g + "components", components, 0, 6, "component");
     const std::vector<double> k = r.Doubles(g + "stiffness", {Size(n)});
+    const bool has_directional = r.Exists(g + "directional");
+    const std::vector<int> directional = has_directional ? r.Ints(g + "directional", n) : std::vector<int>(n, 0);
+    const std::vector<double> coefs =
+        has_directional ? r.Doubles(g + "coefficients", {Size(n), 12}) : std::vector<double>(12 * n, 0.0);
     for (size_t s = 0; s < n; ++s) {
       fe::ScalarSpring sp;
       sp.id = ids[s];
@@ -341,6 +358,9 @@ void ReadExtras(const hdf5::Reader& r, int nn, int ne, const fe::Origin& origin,
       sp.component_a = components[2 * s];
       sp.component_b = components[2 * s + 1];
       sp.k = k[s];
+      sp.directional = directional[s] != 0;
+      std::copy(coefs.begin() + 12 * s, coefs.begin() + 12 * s + 6, sp.coef_a.begin());
+      std::copy(coefs.begin() + 12 * s + 6, coefs.begin() + 12 * s + 12, sp.coef_b.begin());
       sp.origin = origin;
       if (sp.node_a < 0) r.Fail("dataset " + g + "nodes", "spring " + std::to_string(sp.id) + " has no first node");
       mesh.springs.push_back(sp);

@@ -208,10 +208,15 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
     const std::string name = "scalar spring " + std::to_string(sp.id);
     if (sp.node_a < 0 || sp.node_a >= nn || sp.node_b < -1 || sp.node_b >= nn)
       Fail(sp.origin, name, "refers to a node that does not exist");
-    if (sp.component_a < 0 || sp.component_a > 5 || (sp.node_b >= 0 && (sp.component_b < 0 || sp.component_b > 5)))
-      Fail(sp.origin, name, "component must be 0 to 5 (ux uy uz rx ry rz)");
-    if (sp.node_a == sp.node_b && sp.component_a == sp.component_b)
-      Fail(sp.origin, name, "connects a DOF to itself");
+    if (sp.directional) {
+      for (int c = 0; c < 6; ++c)
+        if (!std::isfinite(sp.coef_a[c]) || !std::isfinite(sp.coef_b[c])) Fail(sp.origin, name, "coefficients must be finite");
+    } else {
+      if (sp.component_a < 0 || sp.component_a > 5 || (sp.node_b >= 0 && (sp.component_b < 0 || sp.component_b > 5)))
+        Fail(sp.origin, name, "component must be 0 to 5 (ux uy uz rx ry rz)");
+      if (sp.node_a == sp.node_b && sp.component_a == sp.component_b)
+        Fail(sp.origin, name, "connects a DOF to itself");
+    }
     if (!std::isfinite(sp.k) || sp.k < 0.0) Fail(sp.origin, name, "stiffness must be finite and >= 0");
   }
   for (const RigidLink& link : mesh.rigid_links) {
@@ -248,6 +253,13 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
     }
   }
   for (const ScalarSpring& sp : mesh.springs) {
+    if (sp.directional) {
+      for (int c = 0; c < 6; ++c) {
+        if (sp.coef_a[c] != 0.0) active[sp.node_a] |= 1 << c;
+        if (sp.node_b >= 0 && sp.coef_b[c] != 0.0) active[sp.node_b] |= 1 << c;
+      }
+      continue;
+    }
     active[sp.node_a] |= 1 << sp.component_a;
     if (sp.node_b >= 0) active[sp.node_b] |= 1 << sp.component_b;
   }
@@ -479,8 +491,15 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
   }
   for (size_t k = 0; k < mesh.springs.size(); ++k) {
     const ScalarSpring& sp = mesh.springs[k];
-    block_full.push_back(dm.full[sp.node_a][sp.component_a]);
-    if (sp.node_b >= 0) block_full.push_back(dm.full[sp.node_b][sp.component_b]);
+    if (sp.directional) {
+      // all six DOF of each end
+      for (int c = 0; c < 6; ++c) block_full.push_back(dm.full[sp.node_a][c]);
+      if (sp.node_b >= 0)
+        for (int c = 0; c < 6; ++c) block_full.push_back(dm.full[sp.node_b][c]);
+    } else {
+      block_full.push_back(dm.full[sp.node_a][sp.component_a]);
+      if (sp.node_b >= 0) block_full.push_back(dm.full[sp.node_b][sp.component_b]);
+    }
     block_ptr[ne + np + k + 1] = static_cast<int>(block_full.size());
   }
 
@@ -556,9 +575,19 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
       me = mass6[b - ne];
     } else {
       // k (u_a - u_b)^2 / 2, or k u_a^2 / 2 to ground
-      const double k = mesh.springs[b - ne - np].k;
-      ke.setConstant(n, n, -k);
-      ke.diagonal().setConstant(k);
+      const ScalarSpring& sp = mesh.springs[b - ne - np];
+      if (sp.directional) {
+        // k (g_a - g_b)^2 / 2, g = coef . u
+        Eigen::VectorXd v(n);
+        for (int c = 0; c < 6; ++c) {
+          v(c) = sp.coef_a[c];
+          if (n == 12) v(6 + c) = -sp.coef_b[c];
+        }
+        ke.noalias() = sp.k * v * v.transpose();
+      } else {
+        ke.setConstant(n, n, -sp.k);
+        ke.diagonal().setConstant(sp.k);
+      }
       me.setZero(n, n);
     }
     if (full_mass) full_mass->Add(full, n, me);

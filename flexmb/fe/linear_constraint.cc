@@ -158,10 +158,12 @@ std::vector<LinearConstraint> MakeNodesIndependent(const Mesh& mesh, const std::
       if (used_by[dof].size() > 1) continue;
       cand.push_back(j);
     }
+    // fewer candidates than rows: no choice (and no QR of an empty matrix)
     Eigen::MatrixXd cc(k, static_cast<Eigen::Index>(cand.size()));
     for (int j = 0; j < static_cast<int>(cand.size()); ++j) cc.col(j) = c.col(cand[j]);
-    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(cc);
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr;
     qr.setThreshold(1e-10);
+    if (cand.size() >= static_cast<size_t>(k)) qr.compute(cc);
     if (cand.size() < static_cast<size_t>(k) || qr.rank() < k) {
       throw InputError("node " + std::to_string(mesh.nodes[first.node].id) +
                            " must be independent (an interface node), but its constraint has no " + std::to_string(k) +

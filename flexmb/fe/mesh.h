@@ -141,6 +141,11 @@ struct PointMass {
 /// `node_b`, or to ground if node_b < 0. Components 0..5 are ux uy uz rx ry
 /// rz in the basic frame. It adds k to K at (a, a) and (b, b) and -k at
 /// (a, b) and (b, a); it has no mass and no mesh cell.
+/// A `directional` spring acts instead on the generalized displacements
+/// g_a = coef_a . u(node_a) and g_b = coef_b . u(node_b) (all six DOF of
+/// each node, basic frame): energy k (g_a - g_b)^2 / 2, or k g_a^2 / 2 when
+/// grounded; the components are then unused. Nastran CELAS along an axis of
+/// a displacement system (GRID CD) and each of the six springs of a CBUSH.
 struct ScalarSpring {
   int id = 0;
   int node_a = -1;                ///< node index
@@ -148,6 +153,9 @@ struct ScalarSpring {
   int node_b = -1;                ///< node index, -1: grounded
   int component_b = 0;            ///< 0..5 (unused if grounded)
   double k = 0.0;                 ///< [N/m] for translations, [N m/rad] for rotations
+  bool directional = false;       ///< use coef_a, coef_b instead of the components
+  std::array<double, 6> coef_a{}; ///< g_a = coef_a . (ux uy uz rx ry rz of node_a) [1 or m]
+  std::array<double, 6> coef_b{}; ///< g_b = coef_b . (DOF of node_b), unused if grounded
   Origin origin;
 };
 

@@ -7,10 +7,12 @@
 /// nastran_properties.cc (PSHELL, PSOLID, PBAR, PBARL, PBEAM, PBEAML),
 /// nastran_elements.cc (shells, solids, beams, CONM2, CONM1),
 /// nastran_rods.cc (PROD, PTUBE, CROD, CONROD, CTUBE),
-/// nastran_springs.cc (PELAS, CELAS1, CELAS2) and
+/// nastran_springs.cc (PELAS, CELAS1, CELAS2), nastran_bush.cc (PBUSH, CBUSH),
+/// nastran_cd.cc (components in a displacement system, GRID CD) and
 /// nastran_constraints.cc (RBE2, SPC, ASET / BSET, SET1) and
 /// nastran_rigid_elements.cc (RBAR, RBAR1, RBE3).
 
+#include <array>
 #include <initializer_list>
 #include <map>
 #include <set>
@@ -56,6 +58,22 @@ struct PropertyRef {
   int index = -1;    ///< into the family's section list
 };
 
+/// The rows that make the components `mask3` (bits 0..2: axes of `basis`,
+/// columns in basic) of the translations (block 0) or rotations (block 3)
+/// of node `node` follow node `independent` rigidly (or stay zero if
+/// independent < 0): D^T u = D^T W u_ind, D the masked axes, W the rigid
+/// map. Each row makes one basic component of the node (the best
+/// conditioned choice) dependent on its other components and on the
+/// independent node; id, card and origin are left to the caller.
+std::vector<fe::LinearConstraint> CdRows(const fe::Mesh& mesh, int node, int block, const fe::Mat3& basis, int mask3,
+                                         int independent);
+
+/// A PBUSH's stiffness: K1..K6 along the CBUSH element axes.
+struct BushProperty {
+  std::array<double, 6> k{};      ///< [N/m] (K1..K3), [N m/rad] (K4..K6)
+  std::array<bool, 6> given{};    ///< field not blank
+};
+
 /// Builds the mesh of one bulk data file; see ReadNastran.
 class Builder {
  public:
@@ -80,9 +98,11 @@ class Builder {
   std::map<int, PropertyRef> properties_;
   std::map<int, fe::Origin> property_origin_;
   std::vector<double> pelas_k_;                 // PELAS stiffness by property index
+  std::vector<BushProperty> pbush_;             // PBUSH by property index
   std::map<int, fe::Origin> element_ids_;       // elements, RBE2/RBAR/RBE3, masses and springs share the id space
   std::map<std::string, std::set<int>> set_members_;
   std::set<std::string> warned_;
+  std::map<int, std::pair<int, fe::Origin>> cd_fixed_;  // node -> fixed CD components, first card
   const Card* grdset_ = nullptr;
   const Card* baror_ = nullptr;
   const Card* beamor_ = nullptr;
@@ -104,6 +124,12 @@ class Builder {
   void CheckCd(const Entry& e, int i, int node, int mask);
   std::vector<std::pair<int, int>> GridList(const Entry& e, int first, bool stop_at_real, bool strict,
                                             bool* explicit_missing = nullptr);
+
+  // nastran_cd.cc: components in a displacement system (GRID CD)
+  fe::Mat3 CdBasis(int node);
+  void AddFixed(const Entry& e, int node, int mask);
+  void FinishCdFixed();
+  bool AddCdRigid(const Entry& e, int id, int independent, int dependent, int mask);
 
   // nastran_geometry.cc
   void AddDefaults(const Entry& e);
@@ -138,6 +164,10 @@ class Builder {
   // nastran_springs.cc
   void AddPelas(const Entry& e);
   void AddCelas(const Entry& e);
+
+  // nastran_bush.cc
+  void AddPbush(const Entry& e, int pid);
+  void AddCbush(const Entry& e);
 
   // nastran_constraints.cc
   void AddRbe2(const Entry& e);

@@ -16,17 +16,20 @@ void Builder::AddRbe2(const Entry& e) {
   link.independent = NodeIndex(e, 2, "GN");
   link.dofs = Components(e, 3, "CM");
   std::set<int> seen;
+  bool any = false;
   for (const auto& [node, field] : GridList(e, 4, true, true)) {
     if (node == link.independent)
       e.Fail(field, "dependent node " + std::to_string(mesh_.nodes[node].id) + " is the independent node GN");
     if (!seen.insert(node).second)
       e.Fail(field, "dependent node " + std::to_string(mesh_.nodes[node].id) + " is listed twice");
-    CheckCd(e, 3, node, link.dofs);
+    any = true;
+    // components along the axes of a displacement system: linear constraints
+    if (AddCdRigid(e, link.id, link.independent, node, link.dofs)) continue;
     link.dependent.push_back(node);
   }
-  if (link.dependent.empty()) e.Fail(4, "no dependent grid points GMi");
+  if (!any) e.Fail(4, "no dependent grid points GMi");
   link.origin = OriginOf(e);
-  mesh_.rigid_links.push_back(std::move(link));
+  if (!link.dependent.empty()) mesh_.rigid_links.push_back(std::move(link));
 }
 
 void Builder::AddToSet(const std::string& name, int node) {
@@ -40,10 +43,7 @@ void Builder::AddSpc(const Entry& e) {
     const int mask = Components(e, 2, "C");
     const std::vector<std::pair<int, int>> nodes = GridList(e, 3, false, false);
     if (nodes.empty() && e.Size() < 3) e.Fail(3, "no grid points");
-    for (const auto& [node, field] : nodes) {
-      CheckCd(e, 2, node, mask);
-      mesh_.constraints.push_back(fe::Constraint{node, mask, OriginOf(e)});
-    }
+    for (const auto& [node, field] : nodes) AddFixed(e, node, mask);
     return;
   }
   for (int f = 2; f <= e.Size(); f += 3) {
@@ -52,8 +52,7 @@ void Builder::AddSpc(const Entry& e) {
     const int mask = Components(e, f + 1, "C");
     if (e.Real(f + 2, "D", 0.0) != 0.0)
       Warn(e, "enforced displacement D is ignored: the DOF is constrained to zero", "SPC D");
-    CheckCd(e, f + 1, node, mask);
-    mesh_.constraints.push_back(fe::Constraint{node, mask, OriginOf(e)});
+    AddFixed(e, node, mask);
   }
 }
 

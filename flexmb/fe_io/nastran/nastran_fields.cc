@@ -176,12 +176,14 @@ class DeckReader {
   Card current_;
   bool has_current_ = false;
   bool done_ = false;
+  bool in_equation_ = false;  // the current card is a DEQATN: its lines are free text
 
   [[noreturn]] void Fail(int file, int line, const std::string& message) const {
     throw InputError(message, ErrorContext{deck.files[file], line, ""});
   }
 
   void Flush() {
+    in_equation_ = false;
     if (!has_current_) return;
     while (!current_.fields.empty() && current_.fields.back().empty()) {
       current_.fields.pop_back();
@@ -223,7 +225,46 @@ class DeckReader {
     }
   }
 
+  // DEQATN EQID EQUATION: the equation (columns 17 to 72 and the following
+  // lines' columns 9 to 72, up to the next card) is free text that may hold
+  // commas and blanks anywhere; the card keeps EQID only. True if `raw` was
+  // such a line.
+  bool ReadEquationLine(std::string_view raw, int file, int line_no) {
+    const std::string line = ExpandTabs(raw);
+    const std::string_view head = Trim(std::string_view(line).substr(0, std::min<size_t>(8, line.size())));
+    const std::string_view text = Trim(raw);
+    if (in_equation_ && (head.empty() || head.front() == '+' || head.front() == '*' || text.front() == ','))
+      return true;
+    in_equation_ = false;
+    if (!StartsWithNoCase(text, "DEQATN") ||
+        !(text.size() == 6 || IsSpace(text[6]) || text[6] == ',' || text[6] == '*'))
+      return false;
+    Flush();
+    // EQID: field 2 (columns 9 to 16, 9 to 24 in large field) or the
+    // first free field
+    std::string eqid;
+    if (text.find(',') < 8 || (!head.empty() && Upper(head).rfind("DEQATN", 0) != 0)) {
+      std::string_view rest = text.substr(6);
+      while (!rest.empty() && (IsSpace(rest.front()) || rest.front() == ',' || rest.front() == '*')) rest.remove_prefix(1);
+      size_t end = 0;
+      while (end < rest.size() && !IsSpace(rest[end]) && rest[end] != ',') ++end;
+      eqid = Upper(rest.substr(0, end));
+    } else {
+      const size_t width = head.back() == '*' ? 16 : 8;
+      eqid = line.size() > 8 ? Upper(Trim(std::string_view(line).substr(8, width))) : std::string();
+    }
+    current_.name = "DEQATN";
+    current_.file = file;
+    current_.line = line_no;
+    current_.fields = {eqid};
+    current_.lines = {line_no};
+    has_current_ = true;
+    in_equation_ = true;
+    return true;
+  }
+
   void ReadDataLine(std::string_view raw, int file, int line_no) {
+    if (ReadEquationLine(raw, file, line_no)) return;
     std::vector<std::string> fields;
     std::string first;
     bool large = false;

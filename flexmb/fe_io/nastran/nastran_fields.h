@@ -38,7 +38,9 @@ struct Deck {
 /// INCLUDE 'name' (quoted names may continue over lines) is resolved
 /// relative to the including file; cycles and a depth over 32 are errors.
 /// Throws InputError with file and line for unreadable files, malformed
-/// lines and orphan continuations.
+/// lines and orphan continuations. A DEQATN's equation (free text with
+/// commas and blanks, continued on the lines up to the next card) is not
+/// split into fields: its card holds EQID only.
 Deck ReadDeck(const std::string& path);
 
 /// Parses an integer field ("12", "-3", "+7"); false if `text` is not one

@@ -194,8 +194,7 @@ void Builder::AddGrid(const Entry& e) {
   const Entry& ps = e.Blank(7) && defaults ? *defaults : e;
   if (!ps.Blank(7)) {
     const int mask = Components(ps, 7, "PS");
-    CheckCd(e, 7, it->second, mask);
-    mesh_.constraints.push_back(fe::Constraint{it->second, mask, OriginOf(e)});
+    AddFixed(e, it->second, mask);
   }
   e.Int(8, "SEID", 0);
 }

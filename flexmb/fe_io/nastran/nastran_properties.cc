@@ -30,6 +30,7 @@ void Builder::AddProperty(const Entry& e) {
   const int pid = e.Id(1, "PID");
   CheckNewId(property_origin_, e, pid, "property");
   const std::string& n = e.name();
+  if (n == "PBUSH") return AddPbush(e, pid);
   int index = -1;
   if (n == "PSHELL") {
     index = AddPshell(e, pid);

@@ -10,6 +10,7 @@
 
 #include "flexmb/common/error.h"
 #include "flexmb/common/log.h"
+#include "flexmb/fe/constraint_chains.h"
 #include "flexmb/fe/element_traits.h"
 #include "flexmb/fe_io/nastran/nastran_builder.h"
 #include "flexmb/fe_io/skipped_cards.h"
@@ -30,8 +31,9 @@ const std::map<std::string, Phase>& Phases() {
         {Phase::kCoords, {"CORD2R", "CORD2C", "CORD2S", "CORD1R", "CORD1C", "CORD1S", "CORD3G", "CORD3R"}},
         {Phase::kMaterials, {"MAT1", "MAT2", "MAT3", "MAT8", "MAT9", "MAT10", "MAT11"}},
         {Phase::kGrids, {"GRID"}},
-        {Phase::kProperties, {"PSHELL", "PBAR", "PBARL", "PBEAM", "PBEAML", "PSOLID", "PELAS", "PROD", "PTUBE"}},
-        {Phase::kLinks, {"RBE2", "RBAR", "RBAR1", "RBE3", "CONM2", "CONM1", "CELAS1", "CELAS2"}},
+        {Phase::kProperties, {"PSHELL", "PBAR", "PBARL", "PBEAM", "PBEAML", "PSOLID", "PELAS", "PROD", "PTUBE",
+                                 "PBUSH"}},
+        {Phase::kLinks, {"RBE2", "RBAR", "RBAR1", "RBE3", "CONM2", "CONM1", "CELAS1", "CELAS2", "CBUSH"}},
         {Phase::kSets, {"SPC1", "SPC", "ASET", "ASET1", "BSET", "BSET1", "SET1"}}};
     std::map<std::string, Phase> m;
     for (const auto& [phase, names] : groups)
@@ -50,15 +52,22 @@ const std::set<std::string> kSilent = {"PARAM", "EIGRL", "EIGR", "SPCADD"};
 // cards that would change stiffness or mass: reading on without them would
 // give a wrong model (the element cards of fe/element_traits.h come first)
 const std::set<std::string> kUnsupported = {
-    "CBUSH",   "CBUSH1D", "CBUSH2D",
+    "CBUSH1D", "CBUSH2D",
     "CELAS3", "CELAS4", "CGAP",    "CQUAD",   "CQUAD8",  "CQUADR",  "CTRIA6", "CTRIAR",
     "CPENTA", "CPYRAM", "CSHEAR",  "CBEND",   "CBEAM3",  "CWELD",   "CFAST",  "CSEAM",
     "CTRIAX", "CTRIAX6", "CQUADX", "CMASS1",  "CMASS2",  "CMASS3",  "CMASS4",
     "GENEL",  "CRAC2D", "CRAC3D",  "RBE1",    "RROD",
     "RTRPLT", "RTRPLT1", "RSPLINE", "RJOINT", "RSSCON",  "MPC",
-    "PBUSH",  "PBUSH1D", "PBUSH2D", "PGAP",    "PCOMP",   "PCOMPG", "PCOMPLS",
+    "PBUSH1D", "PBUSH2D", "PGAP",    "PCOMP",   "PCOMPG", "PCOMPLS",
     "PSHEAR", "PBCOMP", "PBEND",   "PBEAM3",  "PMASS",   "PWELD",   "PFAST",  "PSEAM",
     "PLPLANE", "PLSOLID", "PSHLN1", "PSHLN2", "PSLDN1",  "PBRSECT", "PBMSECT", "PCONEAX"};
+
+// design optimisation cards (SOL 200): they change properties only in an
+// optimisation run; an analysis uses the property cards as they stand
+const std::set<std::string> kDesignCards = {
+    "DESVAR", "DVPREL1", "DVPREL2", "DVMREL1", "DVMREL2", "DVCREL1", "DVCREL2", "DVGRID", "DLINK",  "DDVAL",
+    "DRESP1", "DRESP2",  "DRESP3",  "DCONSTR", "DCONADD", "DOPTPRM", "DTABLE",  "DTABLE2", "DEQATN", "DSCREEN",
+    "DVSHAP", "DVBSHAP", "DVLREL1", "DVPSURF", "DRESPM",  "TOPVAR",  "DMNCON",  "DVTREL1"};
 
 std::string ComponentString(int mask) {
   std::string s;
@@ -78,7 +87,9 @@ std::string Str(double v) {
 fe::Mesh Builder::Run() {
   std::vector<std::vector<const Card*>> phases(static_cast<int>(Phase::kSets) + 1);
   SkippedCards skipped;
+  const Card* design = nullptr;
   for (const Card& card : deck_.cards) {
+    if (!design && kDesignCards.count(card.name)) design = &card;
     const auto it = Phases().find(card.name);
     const fe::Origin at{deck_.files[card.file], card.line};
     if (it != Phases().end()) {
@@ -90,6 +101,13 @@ fe::Mesh Builder::Run() {
     }
   }
   skipped.Report("card", deck_.files.empty() ? std::string() : deck_.files.front());
+  if (design)
+    Warn(Entry(*design, deck_),
+         "design optimisation cards (" + design->name +
+             " and others: SOL 200) are skipped: they change properties only in an optimisation run, where the "
+             "design variables' initial values may replace property values; the model read is the one of an "
+             "analysis (property cards as written)",
+         "design cards");
   for (int p = 0; p < static_cast<int>(phases.size()); ++p) {
     if (p == static_cast<int>(Phase::kCoords)) {
       for (const Card* c : phases[p]) AddCoord(Entry(*c, deck_));
@@ -103,6 +121,8 @@ fe::Mesh Builder::Run() {
     for (const Card* c : phases[p]) Dispatch(Entry(*c, deck_));
     if (p == static_cast<int>(Phase::kGrids)) mesh_.IndexNodes();
   }
+  FinishCdFixed();
+  fe::ResolveConstraintChains(mesh_);
   mesh_.IndexNodes();
   return std::move(mesh_);
 }
@@ -132,6 +152,7 @@ void Builder::Dispatch(const Entry& e) {
   if (n == "CONM2") return AddConm2(e);
   if (n == "CONM1") return AddConm1(e);
   if (n == "CELAS1" || n == "CELAS2") return AddCelas(e);
+  if (n == "CBUSH") return AddCbush(e);
   if (n == "SPC1" || n == "SPC") return AddSpc(e);
   if (n == "ASET" || n == "ASET1" || n == "BSET" || n == "BSET1") return AddBoundarySet(e);
   if (n == "SET1") return AddSet1(e);

@@ -34,7 +34,7 @@ void Builder::AddRbar(const Entry& e) {
   if (e.name() == "RBAR1") {
     // CB blank: GB moves with GA in all six components
     const int cb = RigidOptionalMask(e, 4) == 0 ? 0b111111 : Components(e, 4, "CB");
-    CheckCd(e, 4, gb, cb);
+    if (AddCdRigid(e, link.id, ga, gb, cb)) return;
     link.independent = ga;
     link.dependent = {gb};
     link.dofs = cb;
@@ -47,11 +47,11 @@ void Builder::AddRbar(const Entry& e) {
     auto s = [&](int i) { return e.Blank(i) ? std::string("blank") : e.Text(i); };
     return "CNA = " + s(4) + ", CNB = " + s(5) + ", CMA = " + s(6) + ", CMB = " + s(7);
   };
-  int independent = -1, dependent = -1, dep_mask = 0, dep_field = 0;
+  int independent = -1, dependent = -1, dep_mask = 0;
   if (cna == 0b111111 && cnb == 0 && cma == 0) {
-    independent = ga, dependent = gb, dep_mask = cmb, dep_field = 7;
+    independent = ga, dependent = gb, dep_mask = cmb;
   } else if (cnb == 0b111111 && cna == 0 && cmb == 0) {
-    independent = gb, dependent = ga, dep_mask = cma, dep_field = 6;
+    independent = gb, dependent = ga, dep_mask = cma;
   } else {
     e.Fail(4, "independent DOF " + describe() +
                   ": flexmb supports the forms with all six independent DOF on one grid (CNA = 123456 with CNB "
@@ -60,7 +60,7 @@ void Builder::AddRbar(const Entry& e) {
   }
   // CMA and CMB both blank: every DOF not independent is dependent (QRG)
   if (dep_mask == 0) dep_mask = 0b111111;
-  CheckCd(e, dep_field, dependent, dep_mask);
+  if (AddCdRigid(e, link.id, independent, dependent, dep_mask)) return;
   link.independent = independent;
   link.dependent = {dependent};
   link.dofs = dep_mask;

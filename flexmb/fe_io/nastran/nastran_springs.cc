@@ -1,3 +1,4 @@
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -52,7 +53,6 @@ void Builder::AddCelas(const Entry& e) {
       e.Fail(g + 1, std::string(g == 3 ? "C1" : "C2") + ": component '" + c +
                         "' is not a single digit 1 to 6 (scalar points are not supported)");
     component = c[0] - '1';
-    CheckCd(e, g + 1, node, 1 << component);
     return true;
   };
   int node_b = -1, component_b = 0;
@@ -69,6 +69,17 @@ void Builder::AddCelas(const Entry& e) {
   if (s.node_a == s.node_b && s.component_a == s.component_b)
     e.Fail(5, "the spring connects component " + std::to_string(s.component_a + 1) + " of node " +
                   std::to_string(mesh_.nodes[s.node_a].id) + " to itself");
+  // a component of a node with a displacement system acts along that
+  // system's axis at the node: a directional spring in basic components
+  if (node_cd_[s.node_a] != 0 || (s.node_b >= 0 && node_cd_[s.node_b] != 0)) {
+    auto coefficients = [&](int node, int component, std::array<double, 6>& coef) {
+      const fe::Vec3 axis = CdBasis(node).col(component % 3);
+      for (int j = 0; j < 3; ++j) coef[3 * (component / 3) + j] = axis[j];
+    };
+    s.directional = true;
+    coefficients(s.node_a, s.component_a, s.coef_a);
+    if (s.node_b >= 0) coefficients(s.node_b, s.component_b, s.coef_b);
+  }
   s.origin = OriginOf(e);
   mesh_.springs.push_back(s);
 }

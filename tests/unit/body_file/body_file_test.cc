@@ -141,6 +141,9 @@ void ExpectBitIdenticalMesh(const fe::Mesh& a, const fe::Mesh& b) {
     EXPECT_EQ(x.node_b, y.node_b);
     EXPECT_EQ(x.component_b, y.component_b);
     ExpectSame(x.k, y.k, "spring stiffness");
+    EXPECT_EQ(x.directional, y.directional);
+    EXPECT_TRUE(SameBits(x.coef_a.data(), y.coef_a.data(), 6));
+    EXPECT_TRUE(SameBits(x.coef_b.data(), y.coef_b.data(), 6));
   }
   ASSERT_EQ(a.rigid_links.size(), b.rigid_links.size());
   for (size_t k = 0; k < a.rigid_links.size(); ++k) {
@@ -300,8 +303,19 @@ ReducedBody EveryField() {
       for (int j = 0; j < 6; ++j) general.matrix(i, j) = val();
     m.point_masses.push_back(general);
   }
-  m.springs.push_back({21, 3, 2, 7, 4, val(), {}});
-  m.springs.push_back({22, 5, 5, -1, 0, val(), {}});
+  m.springs.push_back({21, 3, 2, 7, 4, val(), false, {}, {}, {}});
+  m.springs.push_back({22, 5, 5, -1, 0, val(), false, {}, {}, {}});
+  {
+    // a directional spring (CELAS in a CD system, CBUSH)
+    fe::ScalarSpring d;
+    d.id = 23;
+    d.node_a = 4;
+    d.node_b = 6;
+    d.k = val();
+    d.directional = true;
+    for (int c = 0; c < 6; ++c) d.coef_a[c] = val(), d.coef_b[c] = val();
+    m.springs.push_back(d);
+  }
   m.rigid_links.push_back({11, 0, {12, 13}, 0b111111, {}});
   m.rigid_links.push_back({12, 5, {}, 0b000111, {}});
   m.rigid_links.push_back({13, 6, {9}, 0b101000, {}});

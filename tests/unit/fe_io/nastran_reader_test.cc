@@ -433,19 +433,19 @@ TEST(NastranReader, UnsupportedCardsAreListedInOneError) {
   const std::string path = WriteScratch("unsupported.bdf",
                                         "GRID,1,,0.,0.,0.\n"
                                         "GRID,2,,1.,0.,0.\n"
-                                        "CBUSH,7,1,1,2\n"
+                                        "CBUSH1D,7,1,1,2\n"
                                         "FORCE,1,1,,1.,1.,0.,0.\n"
                                         "RBE1,9,1,123456,,,,,\n"
-                                        "CBUSH,8,1,1,2\n");
+                                        "CBUSH1D,8,1,1,2\n");
   try {
     ReadNastran(path);
     FAIL() << "no error";
   } catch (const InputError& e) {
     const std::string m = e.what();
-    EXPECT_NE(m.find("unsupported.bdf:3: CBUSH 7: 2 card types are not supported and would change the stiffness or mass"),
+    EXPECT_NE(m.find("unsupported.bdf:3: CBUSH1D 7: 2 card types are not supported and would change the stiffness or mass"),
               std::string::npos)
         << m;
-    EXPECT_NE(m.find("CBUSH (x2, first at "), std::string::npos) << m;
+    EXPECT_NE(m.find("CBUSH1D (x2, first at "), std::string::npos) << m;
     EXPECT_NE(m.find("unsupported.bdf:5)"), std::string::npos) << m;  // RBE1
     EXPECT_EQ(m.find("FORCE"), std::string::npos) << m;
   }
@@ -484,7 +484,7 @@ TEST(NastranReader, BadInputNamesFileLineAndEntity) {
            ":2: PSHELL 1: thickness T must be positive", {}},
           {"area_not_positive.bdf", "MAT1,1,2.1+11,,.3\nPBAR,3,1,0.,1.-8,1.-8,2.-8\n",
            ":2: PBAR 3: area A must be positive", {}},
-          {"unsupported_element.bdf", kBase + "CBUSH,5,1,1,2\n", ":7: CBUSH 5: CBUSH is not supported", {}},
+          {"unsupported_element.bdf", kBase + "CBUSH1D,5,1,1,2\n", ":7: CBUSH1D 5: CBUSH1D is not supported", {}},
           {"pshell_mid2.bdf", "MAT1,1,2.1+11,,.3\nMAT1,2,2.1+11,,.3\nPSHELL,1,1,.01,2\n",
            ":3: PSHELL 1: MID2 = 2 differs from MID1 = 1", {"unsupported"}},
           {"chexa15.bdf",
@@ -498,8 +498,10 @@ TEST(NastranReader, BadInputNamesFileLineAndEntity) {
            "MAT1,1,2.1+11,,.3\nPBAR,3,1,1.-4,1.-8,1.-8,2.-8\nGRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\n"
            "CBAR,9,3,1,2,0.,1.,0.\n,456\n",
            ":6: CBAR 9: pin flags PA/PB are not supported", {}},
-          {"cd_and_components.bdf", "CORD2R,1,,0.,0.,0.,0.,0.,1.\n,1.,1.,0.\nGRID,2,,1.,0.,0.,1\nSPC1,1,3,2\n",
-           ":4: SPC1 1: components 3 of node 2 refer to its displacement system CD = 1", {"unsupported"}},
+          {"cd_and_components.bdf",
+           "CORD2R,1,,0.,0.,0.,0.,0.,1.\n,1.,1.,0.\nGRID,2,,1.,0.,0.,1\nGRID,3,,2.,0.,0.\nGRID,4,,2.,1.,0.\n"
+           "RBE3,9,,2,3,1.,123,3,4\n",
+           ":6: RBE3 9: components 3 of node 2 refer to its displacement system CD = 1", {"unsupported"}},
           {"wrong_property_kind.bdf", kBase + "PBAR,3,1,1.-4,1.-8,1.-8,2.-8\nCQUAD4,7,3,1,2,3,4\n",
            ":8: CQUAD4 7: property 3 is a PBAR; CQUAD4 needs a PSHELL", {}},
           {"unsupported_material.bdf", "MAT8,2,1.+11,1.+10,.3\nPSHELL,1,2,.01,2\n",
