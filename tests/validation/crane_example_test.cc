@@ -45,17 +45,22 @@ double CraneFreeLength(double t) {
 class CraneExample : public flexmb::testing::CliTest {
  protected:
   CraneExample() : CliTest("crane_example_") {}
+  // the example's files in the test folder: crane.yaml, and the boom's FE
+  // model written by make_boom.py and reduced as `make demo` does
+  void PrepareCrane() {
+    const std::string src = FLEXMB_SOURCE_DIR;
+    std::filesystem::copy_file(src + "/examples/crane/crane.yaml", dir_ / "crane.yaml");
+    const std::string gen = "cd '" + dir_.string() + "' && /usr/bin/python3 '" + src +
+                            "/examples/crane/make_boom.py' --out boom.bdf > make_boom.txt";
+    ASSERT_EQ(std::system(gen.c_str()), 0);
+    const auto r = RunCli(dir_, "reduce boom.bdf --interface 1,2,3 --modes 20 -o boom.h5");
+    ASSERT_EQ(r.code, 0) << r.err;
+  }
 };
 
 TEST_F(CraneExample, LiftOffMatchesTheSpringClosedForm) {
-  const std::string src = FLEXMB_SOURCE_DIR;
-  std::filesystem::copy_file(src + "/examples/crane/crane.yaml", dir_ / "crane.yaml");
-  const std::string gen = "cd '" + dir_.string() + "' && /usr/bin/python3 '" + src +
-                          "/examples/crane/make_boom.py' --out boom.bdf > make_boom.txt";
-  ASSERT_EQ(std::system(gen.c_str()), 0);
-  auto r = RunCli(dir_, "reduce boom.bdf --interface 1,2,3 --modes 20 -o boom.h5");
-  ASSERT_EQ(r.code, 0) << r.err;
-  r = RunCli(dir_, "run crane.yaml --out run --t-end 6 --quiet");
+  ASSERT_NO_FATAL_FAILURE(PrepareCrane());
+  auto r = RunCli(dir_, "run crane.yaml --out run --t-end 6 --quiet");
   ASSERT_EQ(r.code, 0) << r.err;
   const ResultsCsv t = ReadResultsCsv(dir_ / "run" / "results.csv");
   ASSERT_GT(t.rows.size(), 100u);
@@ -106,14 +111,8 @@ TEST_F(CraneExample, LiftOffMatchesTheSpringClosedForm) {
 // measured from the following minima of the same run (EN 13001-2's
 // phi_3 = 1 - (dm / m)(1 + beta_3), beta_3 = 1, is the undamped d = 1).
 TEST_F(CraneExample, SuddenReleaseOfPartOfTheLoad) {
-  const std::string src = FLEXMB_SOURCE_DIR;
-  std::filesystem::copy_file(src + "/examples/crane/crane.yaml", dir_ / "crane.yaml");
-  const std::string gen = "cd '" + dir_.string() + "' && /usr/bin/python3 '" + src +
-                          "/examples/crane/make_boom.py' --out boom.bdf > make_boom.txt";
-  ASSERT_EQ(std::system(gen.c_str()), 0);
-  auto r = RunCli(dir_, "reduce boom.bdf --interface 1,2,3 --modes 20 -o boom.h5");
-  ASSERT_EQ(r.code, 0) << r.err;
-  r = RunCli(dir_, "run crane.yaml --out run --manoeuvre release --quiet");
+  ASSERT_NO_FATAL_FAILURE(PrepareCrane());
+  auto r = RunCli(dir_, "run crane.yaml --out run --manoeuvre release --quiet");
   ASSERT_EQ(r.code, 0) << r.err;
   const ResultsCsv t = ReadResultsCsv(dir_ / "run" / "results.csv");
   const std::vector<double> time = t.Values("time"), tension = t.Values("rope.f"), gx = t.Values("grab.fx"),
