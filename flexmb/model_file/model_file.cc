@@ -76,6 +76,37 @@ YAML::Node NamedEntry(const YAML::Node& root, const char* key, const std::string
 
 void BuildSections(const YAML::Node& root, ParseContext& ctx, const SolverOverrides& overrides);
 
+// The names a manoeuvre's section uses: the section of the file, the entry
+// in "the file has no X named" and "the keys of X", what the map holds.
+struct ManoeuvreSection {
+  const char* section;
+  const char* missing;
+  const char* entry;
+  const char* holds;
+};
+
+// Checks a manoeuvre's map m[section] of entry name -> keys (the entry
+// exists in the file's section; refuse(key) is the error for a key a
+// manoeuvre may not set, empty if it may) and, with `apply`, sets the keys.
+void ReplaceEntryKeys(YAML::Node& root, const YAML::Node& m, const ManoeuvreSection& sec, bool apply,
+                      ParseContext& ctx, const std::function<std::string(const std::string&)>& refuse) {
+  const YAML::Node map = m[sec.section];
+  if (!map) return;
+  if (!map.IsMap())
+    ctx.Fail(map, std::string("expected '") + sec.section + "' as a map: " + sec.entry + " name -> " + sec.holds);
+  for (const auto& kv : map) {
+    YAML::Node e = NamedEntry(root, sec.section, kv.first.Scalar());
+    if (!e) ctx.Fail(kv.first, std::string("the file has no ") + sec.missing + " named '" + kv.first.Scalar() + "'");
+    if (!kv.second.IsMap())
+      ctx.Fail(kv.second, std::string("expected the keys of ") + sec.entry + " '" + kv.first.Scalar() + "' to replace");
+    for (const auto& key : kv.second) {
+      const std::string why = refuse(key.first.Scalar());
+      if (!why.empty()) ctx.Fail(key.first, why);
+      if (apply) e[key.first.Scalar()] = key.second;
+    }
+  }
+}
+
 // Checks one entry of `manoeuvres` (its keys, and that the drivers and
 // force elements it names exist); with `apply`, replaces the file's values
 // by its own, in place: solver keys, driver functions, keys of force
@@ -101,49 +132,22 @@ void Manoeuvre(YAML::Node& root, const std::string& name, const YAML::Node& m, b
       if (apply) d["function"] = kv.second;
     }
   }
-  if (const YAML::Node forces = m["forces"]) {
-    if (!forces.IsMap()) ctx.Fail(forces, "expected 'forces' as a map: force name -> keys to replace");
-    for (const auto& kv : forces) {
-      YAML::Node f = NamedEntry(root, "forces", kv.first.Scalar());
-      if (!f) ctx.Fail(kv.first, "the file has no force element named '" + kv.first.Scalar() + "'");
-      if (!kv.second.IsMap()) ctx.Fail(kv.second, "expected the keys of force '" + kv.first.Scalar() + "' to replace");
-      for (const auto& key : kv.second) {
-        if (key.first.Scalar() == "name" || key.first.Scalar() == "type")
-          ctx.Fail(key.first, "a manoeuvre replaces a force's values, not its '" + key.first.Scalar() + "'");
-        if (apply) f[key.first.Scalar()] = key.second;
-      }
-    }
-  }
-  if (const YAML::Node bodies = m["bodies"]) {
-    if (!bodies.IsMap()) ctx.Fail(bodies, "expected 'bodies' as a map: body name -> its initial state");
-    for (const auto& kv : bodies) {
-      YAML::Node b = NamedEntry(root, "bodies", kv.first.Scalar());
-      if (!b) ctx.Fail(kv.first, "the file has no body named '" + kv.first.Scalar() + "'");
-      if (!kv.second.IsMap()) ctx.Fail(kv.second, "expected the keys of body '" + kv.first.Scalar() + "' to replace");
-      for (const auto& key : kv.second) {
-        // the initial state only: the machine (masses, shapes, markers) stays
-        const std::string k = key.first.Scalar();
-        if (k != "position" && k != "orientation" && k != "velocity" && k != "angular_velocity")
-          ctx.Fail(key.first, "a manoeuvre sets a body's initial state (position, orientation, velocity, "
-                              "angular_velocity), not its '" + k + "'");
-        if (apply) b[k] = key.second;
-      }
-    }
-  }
-  if (const YAML::Node joints = m["joints"]) {
-    if (!joints.IsMap()) ctx.Fail(joints, "expected 'joints' as a map: joint name -> {release_time: t}");
-    for (const auto& kv : joints) {
-      YAML::Node j = NamedEntry(root, "joints", kv.first.Scalar());
-      if (!j) ctx.Fail(kv.first, "the file has no joint named '" + kv.first.Scalar() + "'");
-      if (!kv.second.IsMap()) ctx.Fail(kv.second, "expected the keys of joint '" + kv.first.Scalar() + "' to replace");
-      for (const auto& key : kv.second) {
-        // the markers and the type make the machine; a manoeuvre only releases
-        if (key.first.Scalar() != "release_time")
-          ctx.Fail(key.first, "a manoeuvre sets a joint's 'release_time' only, not its '" + key.first.Scalar() + "'");
-        if (apply) j[key.first.Scalar()] = key.second;
-      }
-    }
-  }
+  // force values; a body's initial state (the machine: masses, shapes,
+  // markers stays); a joint's release time (markers and type make the machine)
+  ReplaceEntryKeys(root, m, {"forces", "force element", "force", "keys to replace"}, apply, ctx,
+                   [](const std::string& k) -> std::string {
+                     return k == "name" || k == "type" ? "a manoeuvre replaces a force's values, not its '" + k + "'"
+                                                       : "";
+                   });
+  ReplaceEntryKeys(root, m, {"bodies", "body", "body", "its initial state"}, apply, ctx, [](const std::string& k) {
+    return k == "position" || k == "orientation" || k == "velocity" || k == "angular_velocity"
+               ? std::string()
+               : "a manoeuvre sets a body's initial state (position, orientation, velocity, angular_velocity), not "
+                 "its '" + k + "'";
+  });
+  ReplaceEntryKeys(root, m, {"joints", "joint", "joint", "{release_time: t}"}, apply, ctx, [](const std::string& k) {
+    return k == "release_time" ? std::string() : "a manoeuvre sets a joint's 'release_time' only, not its '" + k + "'";
+  });
 }
 
 // Checks every entry of `manoeuvres` and applies the selected one (the
