@@ -135,13 +135,14 @@ bool AnalysisSourceOf(const py::object& simulation, cli::AnalysisSource& source)
 
 void BindAnalysis(py::module_& m) {
   m.def("statics", [](const std::string& model, const std::string& text, const std::string& out_dir, double time,
-                      bool animation) {
+                      bool animation, const std::string& manoeuvre) {
     cli::StaticsCommandOptions o;
     o.model_path = model;
     o.model_text = text;
     o.out_dir = out_dir;
     o.time = time;
     o.animation = animation;
+    o.manoeuvre = manoeuvre;
     cli::StaticsOutcome r;
     {
       py::gil_scoped_release release;
@@ -149,9 +150,9 @@ void BindAnalysis(py::module_& m) {
     }
     return AnalysisStaticsDict(r);
   }, py::arg("model"), py::arg("text") = "", py::arg("out_dir") = "", py::arg("time") = 0.0,
-        py::arg("animation") = false,
+        py::arg("animation") = false, py::arg("manoeuvre") = "",
         "`flexmb statics`: the static equilibrium as a dict (files in out_dir unless empty); text: the model-file "
-        "text (model then names it).");
+        "text (model then names it); manoeuvre: the entry of the file's `manoeuvres` (empty: the file's).");
   m.def("modes", [](const std::string& model, const std::string& text, const std::string& out_dir,
                     const std::string& at, double time, int count, bool animation, int frames, double amplitude,
                     const std::string& frame, const py::object& simulation) {

@@ -148,15 +148,17 @@ class StateSpace:
         return f"StateSpace({len(self.states)} states, {len(self.inputs)} inputs, {len(self.outputs)} outputs)"
 
 
-def statics(model, out_dir=None, time=0.0, animation=False):
+def statics(model, out_dir=None, time=0.0, animation=False, manoeuvre=None):
     """`flexmb statics`: the static equilibrium of `model` (a model file's
     path or a dict with its keys) under gravity and the loads at `time` [s],
-    with load stepping. out_dir: also write results.csv, summary.json (and
-    with animation, anim.pvd) there as the command does. Raises InputError
-    or NumericalError (no equilibrium: naming the body or joint and the load
-    factor reached) with the command's message."""
+    with load stepping; `manoeuvre`: the entry of the file's `manoeuvres`
+    to apply (None: the file's own choice), as `--manoeuvre`. out_dir: also
+    write results.csv, summary.json (and with animation, anim.pvd) there as
+    the command does. Raises InputError or NumericalError (no equilibrium:
+    naming the body or joint and the load factor reached) with the
+    command's message."""
     name, text = _model_args(model)
-    r = _core.statics(name, text, _out(out_dir), float(time), animation)
+    r = _core.statics(name, text, _out(out_dir), float(time), animation, manoeuvre or "")
     _raise_if_failed(r)
     return StaticsResult(r)
 

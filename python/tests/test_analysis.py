@@ -259,6 +259,25 @@ def test_statics_hanging_mass_closed_form(cli, tmp_path):
     assert float(lines[-1].split(",")[res.columns.index("pos.z")]) == float("%.15g" % res.sensors["pos.z"])
 
 
+def test_statics_of_a_manoeuvre(cli, tmp_path):
+    # reference: Hooke's law with the spring rate the manoeuvre sets; the
+    # CLI's --manoeuvre and Python's manoeuvre= write the same results
+    m, k, free = 3.0, 1500.0, 0.5
+    model = hanging_mass(m, k, free)
+    model["manoeuvres"] = {"stiff": {"forces": {"spring": {"stiffness": 2 * k}}}}
+    path = write_model(tmp_path, model)
+    plain = flexmb.statics(path)
+    stiff = flexmb.statics(path, out_dir=tmp_path / "py", manoeuvre="stiff")
+    assert plain.sensors["pos.z"] == pytest.approx(-free - m * G / k, abs=1e-10)
+    assert stiff.sensors["pos.z"] == pytest.approx(-free - m * G / (2 * k), abs=1e-10)
+    assert stiff.summary["manoeuvre"] == "stiff"
+    subprocess.run([cli, "statics", path, "--out", str(tmp_path / "cli"), "--manoeuvre", "stiff", "--quiet"],
+                   check=True)
+    assert (tmp_path / "py" / "results.csv").read_bytes() == (tmp_path / "cli" / "results.csv").read_bytes()
+    with pytest.raises(flexmb.InputError, match="no manoeuvre named 'soft'"):
+        flexmb.statics(path, manoeuvre="soft")
+
+
 def test_bad_inputs_raise_with_the_message(tmp_path):
     model = write_model(tmp_path, QUARTER_CAR)
     with pytest.raises(flexmb.InputError, match="no force element named 'nosuch'"):
