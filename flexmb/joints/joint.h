@@ -75,6 +75,11 @@ class Joint {
   /// sudden release of part of a payload (EN 13001-2's phi_3).
   /// +infinity: never.
   double release_time = std::numeric_limits<double>::infinity();
+  /// Limits of joint coordinate 0 [m or rad] (a hydraulic cylinder's
+  /// stroke, an end stop): a run whose coordinate leaves them stops with an
+  /// error naming the joint (Simulator). Unlimited by default.
+  double coordinate_min = -std::numeric_limits<double>::infinity();
+  double coordinate_max = std::numeric_limits<double>::infinity();
 
  protected:
   explicit Joint(std::string name) : name_(std::move(name)) {}

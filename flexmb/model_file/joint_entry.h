@@ -17,7 +17,8 @@ namespace flexmb {
 class ParseContext;
 
 /// Reads a joint entry: checks its keys (name, type, i, j, the optional
-/// release_time [s] > 0 and the type's `parameters`),
+/// release_time [s] > 0 and limits [lower, upper] of the first coordinate,
+/// and the type's `parameters`),
 /// resolves markers i and j (which must lie on different bodies), builds the
 /// joint by `make(mi, mj)` and adds it between them; errors name the file,
 /// line and joint.

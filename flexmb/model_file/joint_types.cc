@@ -89,7 +89,7 @@ void ParseCoordinateDriver(const YAML::Node& node, const std::string& name, Pars
 void AddJointEntry(const YAML::Node& node, const std::string& name, ParseContext& ctx,
                    std::initializer_list<const char*> parameters,
                    const std::function<std::unique_ptr<Joint>(int mi, int mj)>& make) {
-  std::vector<const char*> keys = {"name", "type", "i", "j", "release_time"};
+  std::vector<const char*> keys = {"name", "type", "i", "j", "release_time", "limits"};
   keys.insert(keys.end(), parameters.begin(), parameters.end());
   ctx.CheckKeys(node, keys);
   const int mi = ctx.Marker(node, "i");
@@ -101,6 +101,16 @@ void AddJointEntry(const YAML::Node& node, const std::string& name, ParseContext
                        "': a joint must connect two different bodies");
   auto joint = ctx.Guard(node, [&] { return make(mi, mj); });
   if (node["release_time"]) joint->release_time = ctx.Positive(node, "release_time");
+  if (const YAML::Node lim = node["limits"]) {
+    if (joint->NumCoordinates() == 0)
+      ctx.Fail(lim, std::string("a ") + joint->type() + " joint has no coordinate to limit");
+    if (!lim.IsSequence() || lim.size() != 2)
+      ctx.Fail(lim, std::string("expected 'limits' as [lower, upper] of the joint's ") + joint->CoordinateName(0));
+    const double lo = ctx.Number(lim[0], "the lower limit"), hi = ctx.Number(lim[1], "the upper limit");
+    if (!(lo < hi)) ctx.Fail(lim, "'limits' needs lower < upper");
+    joint->coordinate_min = lo;
+    joint->coordinate_max = hi;
+  }
   ctx.Guard(node, [&] { return ctx.model().AddJoint(std::move(joint), mi, mj); });
 }
 
