@@ -1,6 +1,6 @@
 # Entry points. `make demo` and `make test` work on a fresh machine: both
 # install the Debian packages (scripts/install-deps.sh) and build first.
-.PHONY: deps build demo test test-unit test-python python test-asan fuzz bench clean
+.PHONY: deps build build-asan demo test test-unit test-python python test-asan fuzz bench clean
 
 JOBS ?= $(shell nproc)
 BUILD := build/release
@@ -17,11 +17,15 @@ build: deps
 demo: build
 	bash scripts/demo.sh $(DEMO_OUT)
 
-test: build
+# Every test: the validation and Python tests in the release build, the
+# unit tests in the sanitizer build (clang, ASan + UBSan; docs/design.md,
+# "Where the tests run").
+test: build build-asan
 	ctest --preset release -j $(JOBS)
+	ctest --preset asan -j $(JOBS)
 
-test-unit: build
-	ctest --preset release -j $(JOBS) -L unit
+test-unit: build-asan
+	ctest --preset asan -j $(JOBS)
 
 # The Python module (docs/python.md): built by `build`; prints how to import it.
 python: build
@@ -30,10 +34,11 @@ python: build
 test-python: build
 	ctest --preset release -j $(JOBS) -L python
 
-test-asan: deps
+build-asan: deps
 	cmake --preset asan >/dev/null
 	cmake --build --preset asan -j $(JOBS) --target flexmb_unit_tests
-	ctest --preset asan -j $(JOBS)
+
+test-asan: test-unit
 
 fuzz: deps
 	cmake --preset asan >/dev/null
