@@ -195,13 +195,13 @@ class StaticsSolver {
       ++used;
       StoreLambda();
       AssembleIterationMatrix(m_, s_, ws_, MatrixCoefficients{0.0, 0.0, 1.0, m_.solver.geometric_stiffness});
-      if (!lu.Factorize(ws_.S)) {
+      if (!FactorizeScaled()) {
         singular_ = lu.singular_column();
         // directions without stiffness: held by the damping, if any (file comment)
         const bool held = set_.damping_hold_time > 0.0 && [&] {
           AssembleIterationMatrix(m_, s_, ws_, MatrixCoefficients{0.0, 1.0 / set_.damping_hold_time, 1.0,
                                                                    m_.solver.geometric_stiffness});
-          if (lu.Factorize(ws_.S)) return true;
+          if (FactorizeScaled()) return true;
           // neither stiffness nor damping (a load on one hook turns freely
           // about the rope): held by the inertia too, as a pseudo-time step
           // of 10 tau; the residual stays the true one (file comment)
@@ -209,14 +209,15 @@ class StaticsSolver {
           AssembleIterationMatrix(m_, s_, ws_, MatrixCoefficients{1.0 / (tm * tm), 1.0 / set_.damping_hold_time, 1.0,
                                                                    m_.solver.geometric_stiffness});
           inertia_held = true;
-          return lu.Factorize(ws_.S);
+          return FactorizeScaled();
         }();
         // at a converged equilibrium (first iteration of an increment): a mechanism
         if (!held) return it == 0 ? StaticsNewton::kSingular : StaticsNewton::kFailed;
       }
-      ws_.rhs = -r_;
+      // the scaled system: (R S C) (C^-1 d) = R (-r)
+      ws_.rhs = -r_.cwiseProduct(row_scale_);
       lu.Solve(ws_.rhs);
-      d_ = ws_.rhs;
+      d_ = ws_.rhs.cwiseProduct(col_scale_);
       if (!d_.allFinite()) return StaticsNewton::kFailed;
       const double s0 = d_.dot(r_);
       q_it_ = s_.q;
@@ -224,6 +225,42 @@ class StaticsSolver {
       const double a = LineSearch(s0, mu);
       last_step = a * d_.head(nv_).lpNorm<Eigen::Infinity>();
     }
+  }
+
+  // Factorizes R S C, ws_.S equilibrated in place: rows and columns scaled
+  // to a largest entry of about 1 (Ruiz's iteration, a few sweeps). The
+  // matrix [K, B^T; B, 0] mixes stiffnesses up to 1e9 and more (a boom's
+  // stiff static modes) with constraint rows of order 1: its pivots then
+  // span more than SparseLu's singularity bound of 1e-16 (the constraint
+  // pivots are about 1 / K) although the system is well posed, and a crane
+  // on outriggers, whose horizontal motion only the pads' friction holds,
+  // was reported singular. Scaled, the pivots measure true dependence.
+  bool FactorizeScaled() {
+    SparseMat& S = ws_.S;
+    const int n = static_cast<int>(S.rows());
+    row_scale_.setOnes(n);
+    col_scale_.setOnes(n);
+    row_max_.resize(n);
+    col_max_.resize(n);
+    for (int sweep = 0; sweep < 4; ++sweep) {
+      row_max_.setZero();
+      col_max_.setZero();
+      for (int j = 0; j < S.outerSize(); ++j)
+        for (SparseMat::InnerIterator it(S, j); it; ++it) {
+          const double a = std::abs(it.value());
+          row_max_(it.row()) = std::max(row_max_(it.row()), a);
+          col_max_(it.col()) = std::max(col_max_(it.col()), a);
+        }
+      for (int i = 0; i < n; ++i) {
+        row_max_(i) = row_max_(i) > 0.0 && std::isfinite(row_max_(i)) ? 1.0 / std::sqrt(row_max_(i)) : 1.0;
+        col_max_(i) = col_max_(i) > 0.0 && std::isfinite(col_max_(i)) ? 1.0 / std::sqrt(col_max_(i)) : 1.0;
+      }
+      for (int j = 0; j < S.outerSize(); ++j)
+        for (SparseMat::InnerIterator it(S, j); it; ++it) it.valueRef() *= row_max_(it.row()) * col_max_(it.col());
+      row_scale_ = row_scale_.cwiseProduct(row_max_);
+      col_scale_ = col_scale_.cwiseProduct(col_max_);
+    }
+    return lu_.Factorize(S);
   }
 
   // lam_ into s.lambda (inactive equations 0)
@@ -239,6 +276,7 @@ class StaticsSolver {
   const StaticsSettings& set_;
   const int nv_, na_;
   VecX lam_, r_, r0_, d_, dx_, q_it_, lam_it_;
+  VecX row_scale_, col_scale_, row_max_, col_max_;  // FactorizeScaled's R, C and sweeps
   SparseLu lu_;
   StaticsResult res_;
   double fscale_ = 1.0;
