@@ -17,8 +17,11 @@ the lifting height of the ground, slewing and winch at rest). The payload
 is the hook block with the upper 3000 kg (body `load`) and the lower part
 (body `part`, the rest of the rated load). The report prints, per row, the
 radius, the load, the boom head's deflection from its place on the
-undeformed boom (self-weight and load), the rope tension, the cylinder
-force and the largest flange stress beyond the cylinder eye.
+undeformed boom (self-weight and load; in the platform's axes, so the
+carrier's tilt on its outriggers is not in it), the rope tension, the cylinder
+force, the largest flange stress beyond the cylinder eye and the load on
+the front and rear outrigger pads of one side (the boom over the front:
+the crane is stable while the rear pads carry load).
 """
 import argparse
 import csv
@@ -101,13 +104,17 @@ PATHS = {
 
 OUTPUTS = {
     "radius_m": "final(head.x)",
-    "head_z_m": "final(head.z)",
+    "head_z_m": "final(head_on_platform.z)",
     "rope_tension_N": "final(rope.f)",
     "cylinder_x_N": "final(cylinder.fx)",
     "cylinder_z_N": "final(cylinder.fz)",
     "top_flange_von_mises_Pa": "final(top_flange.top_von_mises)",
     "bottom_flange_von_mises_Pa": "final(bottom_flange.bottom_von_mises)",
     "load_steps": "summary.load_steps",
+    "pad_fl_N": "final(pad_fl.fz)",
+    "pad_fr_N": "final(pad_fr.fz)",
+    "pad_rr_N": "final(pad_rr.fz)",
+    "pad_rl_N": "final(pad_rl.fz)",
 }
 
 
@@ -135,8 +142,8 @@ def write_study(path):
 def report(csv_path):
     with open(csv_path) as f:
         rows = list(csv.DictReader(f))
-    print("| luffing angle [deg] | radius [m] | rated load [kg] | head deflection down [mm] | rope tension [kN] | cylinder force [kN] | flange von Mises [MPa] | status |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("| luffing angle [deg] | radius [m] | rated load [kg] | head deflection down [mm] | rope tension [kN] | cylinder force [kN] | flange von Mises [MPa] | front pads [kN] | rear pads [kN] | status |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     for r in rows:
         a = -float(r["boom_pitch"])
         head_z = rotate(math.radians(a), (BOOM_LENGTH, 0.0))[1]
@@ -147,7 +154,7 @@ def report(csv_path):
         vm = max(num("top_flange_von_mises_Pa", 1e-6), num("bottom_flange_von_mises_Pa", 1e-6))
         print(f"| {a:.0f} | {num('radius_m'):.2f} | {mass:.0f} | {(head_z - num('head_z_m')) * 1e3:.0f} | "
               f"{num('rope_tension_N', 1e-3):.1f} | {math.hypot(num('cylinder_x_N'), num('cylinder_z_N')) * 1e-3:.0f} | "
-              f"{vm:.0f} | {r.get('status')} |")
+              f"{vm:.0f} | {num('pad_fl_N', 1e-3):.0f} | {num('pad_rl_N', 1e-3):.0f} | {r.get('status')} |")
 
 
 def main():

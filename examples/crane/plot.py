@@ -8,7 +8,8 @@ Usage: /usr/bin/python3 plot.py RUN_DIR [--out DIR] [--mass 5000] [--falls 2]
 
 Writes DIR/crane_metrics.json and the plots rope_force.png,
 hook_height.png, swing.png, slewing.png, winch_and_cylinder.png,
-boom_deflection.png and boom_stress.png (DIR defaults to RUN_DIR/plots).
+boom_deflection.png, boom_stress.png and outriggers.png (DIR defaults to
+RUN_DIR/plots).
 Metrics:
 - phi_2: the dynamic factor of hoisting a grounded load (EN 13001-2 /
   ISO 8686-1): the largest hoist load from the start to one second after
@@ -25,6 +26,8 @@ Metrics:
   cylinder are rigid, so it is the boom's), and the
   largest von Mises stress of the two flange elements beyond the
   cylinder eye;
+- the outrigger pads' loads: static, smallest and largest, and the
+  weakest pad's smallest share of the crane's weight (the tipping margin);
 - the largest winch drum torque (the hoisting drive's reaction) and
   luffing cylinder force (the cylinder length driver's reaction);
 - phi_3, when the grab lets part of the load go (the `release`
@@ -85,10 +88,15 @@ HEAD_HEIGHT = 3.2 + 18.0 * math.sin(math.radians(40.0))
 
 def head_deflection(c):
     """Deflection of the boom head from its undeformed place [m], in the
-    frame turned with the slewing angle: radial (outwards), lateral (across
-    the boom's plane) and vertical. The platform and the luffing cylinder
-    are rigid, so this is the boom's elastic deflection (with the local
-    give of the foot and eye connections)."""
+    platform's axes (sensor head_on_platform: turned with the slew and the
+    carrier's tilt on its outriggers), else in the frame turned with the
+    slewing angle: radial (outwards), lateral (across the boom's plane) and
+    vertical. The platform and the luffing cylinder are rigid, so this is
+    the boom's elastic deflection (with the local give of the foot and eye
+    connections)."""
+    if "head_on_platform.x" in c:
+        return ([x - HEAD_RADIUS for x in c["head_on_platform.x"]], list(c["head_on_platform.y"]),
+                [z - HEAD_HEIGHT for z in c["head_on_platform.z"]])
     dr, dy, dz = [], [], []
     for k in range(len(c["time"])):
         a = c["slew.value"][k]
@@ -152,6 +160,32 @@ def metrics(c, mass, falls=2):
     }
 
 
+PADS = ("pad_fl", "pad_fr", "pad_rr", "pad_rl")
+
+
+def outriggers(c):
+    """The outrigger pads' loads (sensors pad_*: the ground's push on each
+    pad) [N]: each pad's smallest and largest load and when the smallest
+    comes, and the smallest over the total (the tipping margin: the crane
+    tips when a pad's load reaches zero). Empty for a crane on a fixed base."""
+    if "pad_fl.fz" not in c:
+        return {}
+    t = c["time"]
+    total = [sum(c[p + ".fz"][k] for p in PADS) for k in range(len(t))]
+    low = {p: min(range(len(t)), key=lambda k, p=p: c[p + ".fz"][k]) for p in PADS}
+    weakest = min(PADS, key=lambda p: c[p + ".fz"][low[p]])
+    k = low[weakest]
+    return {
+        "pad_load_min_N": {p: c[p + ".fz"][low[p]] for p in PADS},
+        "pad_load_max_N": {p: max(c[p + ".fz"]) for p in PADS},
+        "pad_load_static_N": {p: c[p + ".fz"][0] for p in PADS},
+        "pad_weakest": weakest,
+        "pad_weakest_time_s": t[k],
+        "pad_weakest_share": c[weakest + ".fz"][k] / total[k],
+        "crane_weight_on_pads_N": total[0],
+    }
+
+
 def release(c, mass, released_mass, falls):
     """phi_3 of a sudden release (EN 13001-2, beta_3 = 1): the release time
     (the grab's reaction falls to zero), the released mass's share of the
@@ -202,6 +236,7 @@ def main():
     c = load(a.run_dir)
     m = metrics(c, a.mass, a.falls)
     m.update(release(c, a.mass, a.released_mass, a.falls))
+    m.update(outriggers(c))
     with open(os.path.join(out, "crane_metrics.json"), "w") as f:
         json.dump(m, f, indent=2)
     print(json.dumps(m, indent=2))
@@ -225,7 +260,10 @@ def main():
     plot(out, "boom_deflection.png", t,
          [("vertical", [v * 1e3 for v in dz]), ("lateral", [v * 1e3 for v in dy]),
           ("radial", [v * 1e3 for v in dr])],
-         "deflection [mm]", "Boom head from its undeformed place (slewing frame)")
+         "deflection [mm]", "Boom head from its undeformed place (platform axes)")
+    if "pad_fl.fz" in c:
+        plot(out, "outriggers.png", t, [(p, [v / 1e3 for v in c[p + ".fz"]]) for p in PADS],
+             "pad load [kN]", "Outrigger pad loads (tipping when one reaches zero)")
     vm = [k for k in c if k.endswith("_von_mises") and ("top_flange" in k or "bottom_flange" in k)]
     plot(out, "boom_stress.png", t, [(k, [v / 1e6 for v in c[k]]) for k in vm], "von Mises [MPa]",
          "Boom flanges beyond the cylinder eye")

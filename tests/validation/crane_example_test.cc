@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -161,6 +162,83 @@ TEST_F(CraneExample, SuddenReleaseOfPartOfTheLoad) {
   EXPECT_LT(after_grab, 1e-6);
   EXPECT_LT(fall, 1e-6);
   EXPECT_NEAR(phi3, closed, 0.01);
+}
+
+// The crane on its outriggers, statically (the example's static equilibrium
+// with the load on the ground): the carrier is stiff against the pads, so
+// it stands on four equal springs like a rigid plate, and the pad loads are
+// the linear distribution F_i = a + b x_i + c y_i that carries the crane's
+// weight and its moment about the slewing axis (the lever rule of a rigid
+// plate on four springs). The weight and the moment come from a second
+// statics of the same crane with the carrier fixed to the ground (the
+// reaction of that joint); the weight also from the masses themselves.
+// The carrier's tilt (about 0.3 mrad) moves the centres of mass by a
+// fraction of a millimetre: 1e-3 of the mean pad load.
+std::string CraneOnAFixedBase(std::string text) {
+  auto erase_lines_with = [&](const std::string& what) {
+    for (size_t at = text.find(what); at != std::string::npos; at = text.find(what)) {
+      const size_t begin = text.rfind('\n', at) + 1, end = text.find('\n', at);
+      text.erase(begin, end - begin + 1);
+    }
+  };
+  // `what` before (after: false) or after the first `where`
+  auto insert = [&](const std::string& where, bool after, const std::string& what) {
+    const size_t at = text.find(where);
+    if (at == std::string::npos) {
+      ADD_FAILURE() << "crane.yaml has no '" << where << "'";
+      return;
+    }
+    text.insert(after ? at + where.size() : at, what);
+  };
+  erase_lines_with("type: plane_contact, marker: carrier.pad_");
+  erase_lines_with("type: force_element, force: pad_");
+  insert("\nbodies:\n", false, "\nground:\n  markers:\n    - {name: base}\n");
+  insert("      - {name: slew, position: [0, 0, 2.0]}\n      - {name: pad_fl", false, "      - {name: base}\n");
+  insert("\njoints:\n", true, "  - {name: carrier_base, type: fixed, i: ground.base, j: carrier.base}\n");
+  insert("\nsensors:\n", true, "  - {name: base, type: joint_reaction, joint: carrier_base, frame: world}\n");
+  return text;
+}
+
+TEST_F(CraneExample, OutriggerPadLoadsFollowTheLeverRuleOfARigidCarrier) {
+  ASSERT_NO_FATAL_FAILURE(PrepareCrane());
+  const auto pads = RunCli(dir_, "statics crane.yaml --out pads --quiet");
+  ASSERT_EQ(pads.code, 0) << pads.err;
+  {
+    std::ofstream f(dir_ / "fixed.yaml");
+    f << CraneOnAFixedBase(flexmb::testing::ReadFile(dir_ / "crane.yaml"));
+  }
+  const auto fixed = RunCli(dir_, "statics fixed.yaml --out fixed --quiet");
+  ASSERT_EQ(fixed.code, 0) << fixed.err;
+  const ResultsCsv p = ReadResultsCsv(dir_ / "pads" / "results.csv");
+  const ResultsCsv b = ReadResultsCsv(dir_ / "fixed" / "results.csv");
+  ASSERT_FALSE(p.rows.empty());
+  ASSERT_FALSE(b.rows.empty());
+  const size_t lp = p.rows.size() - 1, lb = b.rows.size() - 1;
+  // the crane's weight: the rigid bodies of crane.yaml and the boom (the
+  // load stands on the ground, the rope slack)
+  const flexmb::reduction::ReducedBody boom = flexmb::io::ReadBody((dir_ / "boom.h5").string());
+  const double weight = (16000.0 + 12000.0 + 600.0 + 350.0 + 150.0 + boom.invariants.mvv(0, 0)) * kG;
+  const double Fz = b.At(lb, "base.fz"), Mx = b.At(lb, "base.mx"), My = b.At(lb, "base.my");
+  EXPECT_NEAR(Fz / weight, 1.0, 1e-6);
+  // the lever rule: a + b x + c y through the four pads (x, y of crane.yaml)
+  const char* names[4] = {"pad_fl", "pad_fr", "pad_rr", "pad_rl"};
+  const double x[4] = {2.8, 2.8, -3.4, -3.4}, y[4] = {3.0, -3.0, -3.0, 3.0};
+  Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+  for (int i = 0; i < 4; ++i) {
+    const Eigen::Vector3d r(1.0, x[i], y[i]);
+    A += r * r.transpose();
+  }
+  // sum F = Fz, sum F y = Mx, sum F x = -My (the joint's moment about the origin)
+  const Eigen::Vector3d abc = A.ldlt().solve(Eigen::Vector3d(Fz, -My, Mx));
+  double sum = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    const double lever = abc(0) + abc(1) * x[i] + abc(2) * y[i];
+    const double measured = p.At(lp, std::string(names[i]) + ".fz");
+    std::printf("pad %s: %.1f N, lever rule %.1f N\n", names[i], measured, lever);
+    EXPECT_NEAR(measured, lever, 1e-3 * Fz / 4.0) << names[i];
+    sum += measured;
+  }
+  EXPECT_NEAR(sum / weight, 1.0, 1e-6);
 }
 
 // The reduced boom against its full FE model, statically (issue 19: "static
