@@ -26,8 +26,11 @@ Metrics:
   cylinder are rigid, so it is the boom's), and the
   largest von Mises stress of the two flange elements beyond the
   cylinder eye;
-- the outrigger pads' loads: static, smallest and largest, and the
-  weakest pad's smallest share of the crane's weight (the tipping margin);
+- the outrigger pads' loads: static, smallest and largest, the weakest
+  pad's smallest share of the crane's weight (a pad at zero has lifted:
+  the carrier rocks on three pads), and the stability margin: the
+  smallest distance of the pad loads' centre of pressure from the edge of
+  the support rectangle (the crane tips when it reaches the edge);
 - the largest winch drum torque (the hoisting drive's reaction) and
   luffing cylinder force (the cylinder length driver's reaction);
 - phi_3, when the grab lets part of the load go (the `release`
@@ -161,6 +164,8 @@ def metrics(c, mass, falls=2):
 
 
 PADS = ("pad_fl", "pad_fr", "pad_rr", "pad_rl")
+# the pads' places on the carrier (crane.yaml; x forwards, y left) [m]
+PAD_XY = {"pad_fl": (2.8, 3.0), "pad_fr": (2.8, -3.0), "pad_rr": (-3.4, -3.0), "pad_rl": (-3.4, 3.0)}
 
 
 def outriggers(c):
@@ -172,6 +177,17 @@ def outriggers(c):
         return {}
     t = c["time"]
     total = [sum(c[p + ".fz"][k] for p in PADS) for k in range(len(t))]
+    # centre of pressure of the pad loads and its distance from the edge of
+    # the support rectangle: the crane tips when it reaches the edge
+    xs = [PAD_XY[p][0] for p in PADS]
+    ys = [PAD_XY[p][1] for p in PADS]
+    margin, k_m, centre = float("inf"), 0, (0.0, 0.0)
+    for k in range(len(t)):
+        x = sum(c[p + ".fz"][k] * PAD_XY[p][0] for p in PADS) / total[k]
+        y = sum(c[p + ".fz"][k] * PAD_XY[p][1] for p in PADS) / total[k]
+        d = min(max(xs) - x, x - min(xs), max(ys) - y, y - min(ys))
+        if d < margin:
+            margin, k_m, centre = d, k, (x, y)
     low = {p: min(range(len(t)), key=lambda k, p=p: c[p + ".fz"][k]) for p in PADS}
     weakest = min(PADS, key=lambda p: c[p + ".fz"][low[p]])
     k = low[weakest]
@@ -183,6 +199,9 @@ def outriggers(c):
         "pad_weakest_time_s": t[k],
         "pad_weakest_share": c[weakest + ".fz"][k] / total[k],
         "crane_weight_on_pads_N": total[0],
+        "pressure_centre_margin_min_m": margin,
+        "pressure_centre_margin_time_s": t[k_m],
+        "pressure_centre_at_margin_m": list(centre),
     }
 
 
