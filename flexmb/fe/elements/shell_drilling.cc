@@ -41,10 +41,10 @@ double LumpedDrillingRatio(const Eigen::MatrixXd& nn, const Eigen::VectorXd& sha
   return std::clamp(es.eigenvalues().minCoeff(), 0.0, 1.0);
 }
 
-double DrillingInertia(const SectionConstants& sc, double lambda_max, double mu) {
+double DrillingInertia(const SectionConstants& sc, double k, double lambda_max, double mu) {
   if (!(sc.m2 > 0.0) || !(lambda_max > 0.0) || !std::isfinite(lambda_max)) return sc.m2;
   const double target = kDrillingFrequencyRatio * kDrillingFrequencyRatio * lambda_max;
-  return std::min(sc.m2, mu * sc.drilling_stabilization / target);
+  return std::min(sc.m2, mu * k / target);
 }
 
 }  // namespace flexmb::fe::shell

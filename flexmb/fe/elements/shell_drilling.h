@@ -14,7 +14,7 @@ namespace flexmb::fe::shell {
 /// The drilling modes (rz patterns that the one-point tie does not reach,
 /// held only by the kDrillingStabilization penalty) get at least this many
 /// times the element's highest physical circular frequency.
-inline constexpr double kDrillingFrequencyRatio = 10.0;
+inline constexpr double kDrillingFrequencyRatio = 3.0;
 
 /// Largest generalized eigenvalue [rad^2/s^2] of the element's physical
 /// part, before any drilling term is added: the membrane (local u, v) and
@@ -28,12 +28,15 @@ double MaxPhysicalEigenvalue(const Eigen::MatrixXd& k, const Eigen::MatrixXd& m,
 /// rectangle, 1/4 for a triangle); `nn` = int N N^T dA, `share` = int N dA.
 double LumpedDrillingRatio(const Eigen::MatrixXd& nn, const Eigen::VectorXd& share);
 
-/// Drilling inertia [kg] per area of the drilling strain (rz - omega),
-/// consistent mass, or on rz with the area shares, lumped mass:
-/// min(m2, mu k_d / (kDrillingFrequencyRatio^2 lambda_max)), k_d the
-/// stabilization G t beta [N/m], m2 = rho t^3 / 12, mu = 1 (consistent) or
-/// LumpedDrillingRatio (lumped), lambda_max = MaxPhysicalEigenvalue. 0 when
-/// the section has no rotary inertia (m2 = 0).
-double DrillingInertia(const SectionConstants& sc, double lambda_max, double mu);
+/// Drilling inertia [kg] per area of a drilling strain energy with the
+/// stiffness `k` [N/m] per area (the stabilization beta G t on the full
+/// rule, or the tie alpha G t at the centroid), the consistent mass on the
+/// same strain (rz - omega), or lumped on rz with the area shares:
+/// min(m2, mu k / (kDrillingFrequencyRatio^2 lambda_max)), m2 = rho t^3 / 12,
+/// mu = 1 (consistent) or LumpedDrillingRatio (lumped), lambda_max =
+/// MaxPhysicalEigenvalue, so that the drilling modes of that term sit
+/// kDrillingFrequencyRatio times above the element's highest physical
+/// frequency. m2 when lambda_max is not positive and finite; 0 when m2 = 0.
+double DrillingInertia(const SectionConstants& sc, double k, double lambda_max, double mu);
 
 }  // namespace flexmb::fe::shell

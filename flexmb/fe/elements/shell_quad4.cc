@@ -155,25 +155,24 @@ void ShellQuad4Matrices(const ElementInput& in, MatX& K, MatX& M) {
     ml = shell::LumpedMass<4>(share, m0, m2, 0.0);
   }
 
-  // drilling inertia from the physical part (before any drilling term)
-  const double md =
-      m2 > 0.0 ? shell::DrillingInertia(sc, shell::MaxPhysicalEigenvalue(kl, ml, 4),
-                                        lumped ? shell::LumpedDrillingRatio(nn_sum, share) : 1.0)
-               : 0.0;
+  // drilling tie at the centroid
+  Shape(0.0, 0.0, n, dn);
+  const Eigen::Matrix<double, 1, 12> bd0 = shell::DrillingStrain<4>(Mat2x4(j0_inv * dn), n);
+  const Eigen::Matrix<double, 12, 12> drill_tie = bd0.transpose() * bd0 * (4.0 * det0);
+
+  // drilling inertia from the physical part (before any drilling term): the
+  // stabilized and the tied drilling modes both above the physical range
+  const double lambda = m2 > 0.0 ? shell::MaxPhysicalEigenvalue(kl, ml, 4) : 0.0;
+  const double mu = lumped && m2 > 0.0 ? shell::LumpedDrillingRatio(nn_sum, share) : 1.0;
+  const double md = m2 > 0.0 ? shell::DrillingInertia(sc, kd, lambda, mu) : 0.0;
+  const double mt = m2 > 0.0 ? shell::DrillingInertia(sc, sc.drilling_tie, lambda, 1.0) : 0.0;
   shell::AddNodal<4, 3>(dd_sum, shell::kDrillingDofs, kd, kl);
+  shell::AddNodal<4, 3>(drill_tie, shell::kDrillingDofs, sc.drilling_tie, kl);
   if (lumped) {
     for (int i = 0; i < 4; ++i) ml(6 * i + 5, 6 * i + 5) = md * share(i);
   } else {
     shell::AddNodal<4, 3>(dd_sum, shell::kDrillingDofs, md, ml);
-  }
-
-  // drilling tie at the centroid
-  {
-    Shape(0.0, 0.0, n, dn);
-    const Eigen::Matrix<double, 1, 12> bd = shell::DrillingStrain<4>(Mat2x4(j0_inv * dn), n);
-    const Eigen::Matrix<double, 12, 12> dd = bd.transpose() * bd;
-    shell::AddNodal<4, 3>(dd, shell::kDrillingDofs, 4.0 * det0 * sc.drilling_tie,
-                          kl);
+    shell::AddNodal<4, 3>(drill_tie, shell::kDrillingDofs, mt - md, ml);
   }
 
   shell::ToBasic<4>(f, kl, K);
