@@ -8,30 +8,37 @@
 namespace flexmb::fe::shell {
 namespace {
 
-// largest eigenvalue of (k, m) on the local components `comps` of every node
-double ShellDrillingBlockMax(const Eigen::MatrixXd& k, const Eigen::MatrixXd& m, int n_nodes,
-                             const int* comps, int n_comps) {
-  const int n = n_nodes * n_comps;
-  Eigen::MatrixXd kb(n, n), mb(n, n);
-  for (int i = 0; i < n_nodes; ++i)
-    for (int a = 0; a < n_comps; ++a)
-      for (int j = 0; j < n_nodes; ++j)
-        for (int b = 0; b < n_comps; ++b) {
-          kb(n_comps * i + a, n_comps * j + b) = k(6 * i + comps[a], 6 * j + comps[b]);
-          mb(n_comps * i + a, n_comps * j + b) = m(6 * i + comps[a], 6 * j + comps[b]);
+// largest eigenvalue of (k, m) on the C local components `comps` of every node
+template <int N, int C>
+double ShellDrillingBlockMax(const Eigen::Matrix<double, 6 * N, 6 * N>& k,
+                             const Eigen::Matrix<double, 6 * N, 6 * N>& m, const int (&comps)[C]) {
+  using Block = Eigen::Matrix<double, C * N, C * N>;
+  Block kb, mb;
+  for (int i = 0; i < N; ++i)
+    for (int a = 0; a < C; ++a)
+      for (int j = 0; j < N; ++j)
+        for (int b = 0; b < C; ++b) {
+          kb(C * i + a, C * j + b) = k(6 * i + comps[a], 6 * j + comps[b]);
+          mb(C * i + a, C * j + b) = m(6 * i + comps[a], 6 * j + comps[b]);
         }
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(kb, mb,
-                                                                     Eigen::EigenvaluesOnly);
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Block> es(kb, mb, Eigen::EigenvaluesOnly);
   if (es.info() != Eigen::Success) return 0.0;
   return es.eigenvalues().maxCoeff();
 }
 
 }  // namespace
 
-double MaxPhysicalEigenvalue(const Eigen::MatrixXd& k, const Eigen::MatrixXd& m, int n_nodes) {
-  return std::max(ShellDrillingBlockMax(k, m, n_nodes, kMembraneDofs, 2),
-                  ShellDrillingBlockMax(k, m, n_nodes, kPlateDofs, 3));
+template <int N>
+double MaxPhysicalEigenvalue(const Eigen::Matrix<double, 6 * N, 6 * N>& k,
+                             const Eigen::Matrix<double, 6 * N, 6 * N>& m) {
+  return std::max(ShellDrillingBlockMax<N, 2>(k, m, kMembraneDofs),
+                  ShellDrillingBlockMax<N, 3>(k, m, kPlateDofs));
 }
+
+template double MaxPhysicalEigenvalue<3>(const Eigen::Matrix<double, 18, 18>&,
+                                         const Eigen::Matrix<double, 18, 18>&);
+template double MaxPhysicalEigenvalue<4>(const Eigen::Matrix<double, 24, 24>&,
+                                         const Eigen::Matrix<double, 24, 24>&);
 
 double LumpedDrillingRatio(const Eigen::MatrixXd& nn, const Eigen::VectorXd& share) {
   const Eigen::MatrixXd lumped = share.asDiagonal();

@@ -19,9 +19,11 @@ inline constexpr double kDrillingFrequencyRatio = 3.0;
 /// Largest generalized eigenvalue [rad^2/s^2] of the element's physical
 /// part, before any drilling term is added: the membrane (local u, v) and
 /// the plate (local w, rx, ry) blocks of the local 6N x 6N stiffness `k`
-/// and mass `m` of an element with `n_nodes` nodes, node by node
-/// u v w rx ry rz. Both mass blocks must be positive definite.
-double MaxPhysicalEigenvalue(const Eigen::MatrixXd& k, const Eigen::MatrixXd& m, int n_nodes);
+/// and mass `m` of an element with N nodes, node by node u v w rx ry rz.
+/// Both mass blocks must be positive definite.
+template <int N>
+double MaxPhysicalEigenvalue(const Eigen::Matrix<double, 6 * N, 6 * N>& k,
+                             const Eigen::Matrix<double, 6 * N, 6 * N>& m);
 
 /// Smallest generalized eigenvalue of (nn, diag(share)): how far a lumped
 /// rz mass lowers the drilling modes against the consistent one (1/9 for a

@@ -109,7 +109,7 @@ void ShellTria3Matrices(const ElementInput& in, MatX& K, MatX& M) {
 
   // drilling inertia from the physical part (before any drilling term): the
   // stabilized and the tied drilling modes both above the physical range
-  const double lambda = m2 > 0.0 ? shell::MaxPhysicalEigenvalue(kl, ml, 3) : 0.0;
+  const double lambda = m2 > 0.0 ? shell::MaxPhysicalEigenvalue<3>(kl, ml) : 0.0;
   const double mu = lumped && m2 > 0.0 ? shell::LumpedDrillingRatio(nn, share) : 1.0;
   const double md = m2 > 0.0 ? shell::DrillingInertia(sc, kd, lambda, mu) : 0.0;
   const double mt = m2 > 0.0 ? shell::DrillingInertia(sc, sc.drilling_tie, lambda, 1.0) : 0.0;
