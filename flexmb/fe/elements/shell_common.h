@@ -185,14 +185,16 @@ void AddTranslationalAndRotaryMass(const Eigen::Matrix<double, N, N>& nn, double
 }
 
 /// Diagonal lumped mass: per node its area share int N_i dA [m^2] times m0
-/// on the translations and times m2 on all three rotations.
+/// on the translations, times m2 on the two bending rotations and times md
+/// (the drilling inertia, shell_drilling.h) on rz.
 template <int N>
 Eigen::Matrix<double, 6 * N, 6 * N> LumpedMass(const Eigen::Matrix<double, N, 1>& share, double m0,
-                                               double m2) {
+                                               double m2, double md) {
   Eigen::Matrix<double, 6 * N, 6 * N> m = Eigen::Matrix<double, 6 * N, 6 * N>::Zero();
   for (int i = 0; i < N; ++i) {
     for (int a = 0; a < 3; ++a) m(6 * i + a, 6 * i + a) = m0 * share(i);
-    for (int a = 3; a < 6; ++a) m(6 * i + a, 6 * i + a) = m2 * share(i);
+    for (int a = 3; a < 5; ++a) m(6 * i + a, 6 * i + a) = m2 * share(i);
+    m(6 * i + 5, 6 * i + 5) = md * share(i);
   }
   return m;
 }

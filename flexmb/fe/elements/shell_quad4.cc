@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "flexmb/fe/elements/shell_common.h"
+#include "flexmb/fe/elements/shell_drilling.h"
 
 namespace flexmb::fe {
 namespace {
@@ -91,6 +92,8 @@ void ShellQuad4Matrices(const ElementInput& in, MatX& K, MatX& M) {
   Eigen::Matrix<double, 8, 8> kcc = Eigen::Matrix<double, 8, 8>::Zero();
   Eigen::Matrix<double, 8, 4> kci = Eigen::Matrix<double, 8, 4>::Zero();
   Eigen::Matrix4d kii = Eigen::Matrix4d::Zero();
+  Eigen::Matrix<double, 12, 12> dd_sum = Eigen::Matrix<double, 12, 12>::Zero();
+  Eigen::Matrix4d nn_sum = Eigen::Matrix4d::Zero();
   Mat24 kl = Mat24::Zero();
   Mat24 ml = Mat24::Zero();
   const double g = 1.0 / std::sqrt(3.0);
@@ -128,37 +131,48 @@ void ShellQuad4Matrices(const ElementInput& in, MatX& K, MatX& M) {
 
     // drilling: theta_z - omega over (u, v, rz) per node
     const Eigen::Matrix<double, 1, 12> bd = shell::DrillingStrain<4>(dx, n);
-    const Eigen::Matrix<double, 12, 12> dd = bd.transpose() * bd * det;
+    dd_sum += bd.transpose() * bd * det;
     shell::AddNodal<4, 3>(kp, shell::kPlateDofs, 1.0, kl);
-    shell::AddNodal<4, 3>(dd, shell::kDrillingDofs, kd, kl);
-    shell::AddNodal<4, 3>(dd, shell::kDrillingDofs, m2, ml);
 
     // mass: translations and the two bending rotations
     const Eigen::Matrix4d nn = n * n.transpose() * det;
+    nn_sum += nn;
     shell::AddTranslationalAndRotaryMass<4>(nn, m0, m2, ml);
-  }
-
-  // drilling tie at the centroid
-  {
-    Shape(0.0, 0.0, n, dn);
-    const Eigen::Matrix<double, 1, 12> bd = shell::DrillingStrain<4>(Mat2x4(j0_inv * dn), n);
-    const Eigen::Matrix<double, 12, 12> dd = bd.transpose() * bd;
-    shell::AddNodal<4, 3>(dd, shell::kDrillingDofs, 4.0 * det0 * sc.drilling_tie,
-                          kl);
   }
 
   // condense the incompatible modes
   const Eigen::Matrix<double, 8, 8> km = kcc - kci * kii.ldlt().solve(kci.transpose());
   shell::AddNodal<4, 2>(km, shell::kMembraneDofs, 1.0, kl);
 
-  if (in.mass_form == MassForm::kLumped) {
+  const bool lumped = in.mass_form == MassForm::kLumped;
+  Eigen::Vector4d share = Eigen::Vector4d::Zero();
+  if (lumped) {
     // area shares int N_i dA; translations and all rotations diagonal
-    Eigen::Vector4d share = Eigen::Vector4d::Zero();
     for (int gp = 0; gp < 4; ++gp) {
       Shape(kQuadXi[gp] * g, kQuadEta[gp] * g, n, dn);
       share += n * (dn * xy).determinant();
     }
-    ml = shell::LumpedMass<4>(share, m0, m2);
+    ml = shell::LumpedMass<4>(share, m0, m2, 0.0);
+  }
+
+  // drilling tie at the centroid
+  Shape(0.0, 0.0, n, dn);
+  const Eigen::Matrix<double, 1, 12> bd0 = shell::DrillingStrain<4>(Mat2x4(j0_inv * dn), n);
+  const Eigen::Matrix<double, 12, 12> drill_tie = bd0.transpose() * bd0 * (4.0 * det0);
+
+  // drilling inertia from the physical part (before any drilling term): the
+  // stabilized and the tied drilling modes both above the physical range
+  const double lambda = m2 > 0.0 ? shell::MaxPhysicalEigenvalue<4>(kl, ml) : 0.0;
+  const double mu = lumped && m2 > 0.0 ? shell::LumpedDrillingRatio(nn_sum, share) : 1.0;
+  const double md = m2 > 0.0 ? shell::DrillingInertia(sc, kd, lambda, mu) : 0.0;
+  const double mt = m2 > 0.0 ? shell::DrillingInertia(sc, sc.drilling_tie, lambda, 1.0) : 0.0;
+  shell::AddNodal<4, 3>(dd_sum, shell::kDrillingDofs, kd, kl);
+  shell::AddNodal<4, 3>(drill_tie, shell::kDrillingDofs, sc.drilling_tie, kl);
+  if (lumped) {
+    for (int i = 0; i < 4; ++i) ml(6 * i + 5, 6 * i + 5) = md * share(i);
+  } else {
+    shell::AddNodal<4, 3>(dd_sum, shell::kDrillingDofs, md, ml);
+    shell::AddNodal<4, 3>(drill_tie, shell::kDrillingDofs, mt - md, ml);
   }
 
   shell::ToBasic<4>(f, kl, K);

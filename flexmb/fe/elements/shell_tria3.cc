@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "flexmb/fe/elements/shell_common.h"
+#include "flexmb/fe/elements/shell_drilling.h"
 
 namespace flexmb::fe {
 namespace {
@@ -100,14 +101,26 @@ void ShellTria3Matrices(const ElementInput& in, MatX& K, MatX& M) {
   const Eigen::Matrix<double, 9, 9> tie = bd0.transpose() * bd0;
 
   shell::AddNodal<3, 3>(kp, shell::kPlateDofs, 1.0, kl);
+  shell::AddNodal<3, 2>(km, shell::kMembraneDofs, 1.0, kl);
+  shell::AddTranslationalAndRotaryMass<3>(nn, m0, m2, ml);
+  const bool lumped = in.mass_form == MassForm::kLumped;
+  const Eigen::Vector3d share = Eigen::Vector3d::Constant(area / 3.0);
+  if (lumped) ml = shell::LumpedMass<3>(share, m0, m2, 0.0);
+
+  // drilling inertia from the physical part (before any drilling term): the
+  // stabilized and the tied drilling modes both above the physical range
+  const double lambda = m2 > 0.0 ? shell::MaxPhysicalEigenvalue<3>(kl, ml) : 0.0;
+  const double mu = lumped && m2 > 0.0 ? shell::LumpedDrillingRatio(nn, share) : 1.0;
+  const double md = m2 > 0.0 ? shell::DrillingInertia(sc, kd, lambda, mu) : 0.0;
+  const double mt = m2 > 0.0 ? shell::DrillingInertia(sc, sc.drilling_tie, lambda, 1.0) : 0.0;
   shell::AddNodal<3, 3>(dd, shell::kDrillingDofs, kd, kl);
   shell::AddNodal<3, 3>(tie, shell::kDrillingDofs, sc.drilling_tie * area, kl);
-  shell::AddNodal<3, 2>(km, shell::kMembraneDofs, 1.0, kl);
-  shell::AddNodal<3, 3>(dd, shell::kDrillingDofs, m2, ml);
-  shell::AddTranslationalAndRotaryMass<3>(nn, m0, m2, ml);
-
-  if (in.mass_form == MassForm::kLumped)
-    ml = shell::LumpedMass<3>(Eigen::Vector3d::Constant(area / 3.0), m0, m2);
+  if (lumped) {
+    for (int i = 0; i < 3; ++i) ml(6 * i + 5, 6 * i + 5) = md * share(i);
+  } else {
+    shell::AddNodal<3, 3>(dd, shell::kDrillingDofs, md, ml);
+    shell::AddNodal<3, 3>(tie, shell::kDrillingDofs, (mt - md) * area, ml);
+  }
 
   shell::ToBasic<3>(f, kl, K);
   shell::ToBasic<3>(f, ml, M);

@@ -7,7 +7,8 @@
 /// nastran_properties.cc (PSHELL, PSOLID, PBAR, PBARL, PBEAM, PBEAML),
 /// nastran_elements.cc (shells, solids, beams, CONM2, CONM1),
 /// nastran_rods.cc (PROD, PTUBE, CROD, CONROD, CTUBE),
-/// nastran_springs.cc (PELAS, CELAS1, CELAS2), nastran_bush.cc (PBUSH, CBUSH),
+/// nastran_springs.cc (PELAS, CELAS1, CELAS2), nastran_masses.cc (PMASS,
+/// CMASS1, CMASS2), nastran_bush.cc (PBUSH, CBUSH),
 /// nastran_cd.cc (components in a displacement system, GRID CD) and
 /// nastran_constraints.cc (RBE2, SPC, ASET / BSET, SET1) and
 /// nastran_rigid_elements.cc (RBAR, RBAR1, RBE3).
@@ -98,6 +99,7 @@ class Builder {
   std::map<int, PropertyRef> properties_;
   std::map<int, fe::Origin> property_origin_;
   std::vector<double> pelas_k_;                 // PELAS stiffness by property index
+  std::vector<double> pmass_m_;                 // PMASS mass by property index
   std::vector<BushProperty> pbush_;             // PBUSH by property index
   std::map<int, fe::Origin> element_ids_;       // elements, RBE2/RBAR/RBE3, masses and springs share the id space
   std::map<std::string, std::set<int>> set_members_;
@@ -164,6 +166,10 @@ class Builder {
   // nastran_springs.cc
   void AddPelas(const Entry& e);
   void AddCelas(const Entry& e);
+
+  // nastran_masses.cc
+  void AddPmass(const Entry& e);
+  void AddCmass(const Entry& e);
 
   // nastran_bush.cc
   void AddPbush(const Entry& e, int pid);

@@ -27,6 +27,7 @@ void ReadNastranStressPoints(const Entry& e, int f, fe::BeamSection& s) {
 
 void Builder::AddProperty(const Entry& e) {
   if (e.name() == "PELAS") return AddPelas(e);
+  if (e.name() == "PMASS") return AddPmass(e);
   const int pid = e.Id(1, "PID");
   CheckNewId(property_origin_, e, pid, "property");
   const std::string& n = e.name();

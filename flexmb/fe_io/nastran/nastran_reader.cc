@@ -32,8 +32,9 @@ const std::map<std::string, Phase>& Phases() {
         {Phase::kMaterials, {"MAT1", "MAT2", "MAT3", "MAT8", "MAT9", "MAT10", "MAT11"}},
         {Phase::kGrids, {"GRID"}},
         {Phase::kProperties, {"PSHELL", "PBAR", "PBARL", "PBEAM", "PBEAML", "PSOLID", "PELAS", "PROD", "PTUBE",
-                                 "PBUSH"}},
-        {Phase::kLinks, {"RBE2", "RBAR", "RBAR1", "RBE3", "CONM2", "CONM1", "CELAS1", "CELAS2", "CBUSH"}},
+                                 "PBUSH", "PMASS"}},
+        {Phase::kLinks, {"RBE2", "RBAR", "RBAR1", "RBE3", "CONM2", "CONM1", "CELAS1", "CELAS2", "CBUSH",
+                           "CMASS1", "CMASS2"}},
         {Phase::kSets, {"SPC1", "SPC", "ASET", "ASET1", "BSET", "BSET1", "SET1"}}};
     std::map<std::string, Phase> m;
     for (const auto& [phase, names] : groups)
@@ -55,11 +56,11 @@ const std::set<std::string> kUnsupported = {
     "CBUSH1D", "CBUSH2D",
     "CELAS3", "CELAS4", "CGAP",    "CQUAD",   "CQUAD8",  "CQUADR",  "CTRIA6", "CTRIAR",
     "CPENTA", "CPYRAM", "CSHEAR",  "CBEND",   "CBEAM3",  "CWELD",   "CFAST",  "CSEAM",
-    "CTRIAX", "CTRIAX6", "CQUADX", "CMASS1",  "CMASS2",  "CMASS3",  "CMASS4",
+    "CTRIAX", "CTRIAX6", "CQUADX", "CMASS3",  "CMASS4",
     "GENEL",  "CRAC2D", "CRAC3D",  "RBE1",    "RROD",
     "RTRPLT", "RTRPLT1", "RSPLINE", "RJOINT", "RSSCON",  "MPC",
     "PBUSH1D", "PBUSH2D", "PGAP",    "PCOMP",   "PCOMPG", "PCOMPLS",
-    "PSHEAR", "PBCOMP", "PBEND",   "PBEAM3",  "PMASS",   "PWELD",   "PFAST",  "PSEAM",
+    "PSHEAR", "PBCOMP", "PBEND",   "PBEAM3",  "PWELD",   "PFAST",  "PSEAM",
     "PLPLANE", "PLSOLID", "PSHLN1", "PSHLN2", "PSLDN1",  "PBRSECT", "PBMSECT", "PCONEAX"};
 
 // design optimisation cards (SOL 200): they change properties only in an
@@ -152,6 +153,7 @@ void Builder::Dispatch(const Entry& e) {
   if (n == "CONM2") return AddConm2(e);
   if (n == "CONM1") return AddConm1(e);
   if (n == "CELAS1" || n == "CELAS2") return AddCelas(e);
+  if (n == "CMASS1" || n == "CMASS2") return AddCmass(e);
   if (n == "CBUSH") return AddCbush(e);
   if (n == "SPC1" || n == "SPC") return AddSpc(e);
   if (n == "ASET" || n == "ASET1" || n == "BSET" || n == "BSET1") return AddBoundarySet(e);

@@ -149,26 +149,39 @@ inline void ExpectExactRigidBodyMass(ElementType type, const std::vector<Eigen::
   EXPECT_LT((got - expected).norm(), 1e-12 * expected.norm()) << got << "\n\n" << expected;
 }
 
-// Lumped mass of a flat element without offset: diagonal and positive,
-// exact total mass and first moment (the top rows of the rigid-body mass),
-// rotary inertia rho t^3 / 12 per area on every rotation.
+// Lumped mass of a flat element without offset: diagonal and positive on
+// the translations, one 3 x 3 rotation block per node, exact total mass and
+// first moment (the top rows of the rigid-body mass); on the rotations
+// rho t^3 / 12 per area about the in-plane axes and the drilling inertia
+// (shell_drilling.h, at most rho t^3 / 12 per area) about the normal.
 inline void ExpectLumpedMass(ElementType type, const std::vector<Eigen::Vector2d>& poly,
                              const Eigen::Matrix3d& R, const Vec3& c0) {
   const double t = 0.08, rho = 2700.0, nsm = 3.5;
   ShellFixture f(type, Place(poly, R, c0), t, 7e10, 0.33, rho, nsm);
   MatX K, M;
   f.Compute(K, M, MassForm::kLumped);
-  EXPECT_LT((M - MatX(M.diagonal().asDiagonal())).norm(), 1e-12 * M.norm());
+  MatX blocks = MatX::Zero(M.rows(), M.cols());
+  for (size_t i = 0; i < poly.size(); ++i) {
+    blocks.diagonal().segment<3>(6 * i) = M.diagonal().segment<3>(6 * i);
+    blocks.block<3, 3>(6 * i + 3, 6 * i + 3) = M.block<3, 3>(6 * i + 3, 6 * i + 3);
+  }
+  EXPECT_LT((M - blocks).norm(), 1e-12 * M.norm());
   EXPECT_GT(M.diagonal().minCoeff(), 0.0);
   const MatX r = RigidModes(f.x, 6);
   const Eigen::Matrix<double, 6, 6> expected = PlateRigidMass(poly, R, c0, t, 0.0, rho, nsm);
   EXPECT_LT(((r.transpose() * M * r).topRows(3) - expected.topRows(3)).norm(),
             1e-12 * expected.norm());
-  for (int a = 3; a < 6; ++a) {
-    double rot = 0.0;
-    for (size_t i = 0; i < poly.size(); ++i) rot += M(6 * i + a, 6 * i + a);
-    EXPECT_NEAR(rot, rho * t * t * t / 12.0 * PolygonArea(poly), 1e-12 * rot);
+  // rotation block in the element's axes (normal R e3): diag(a, a, b)
+  double in_plane = 0.0, drilling = 0.0;
+  for (size_t i = 0; i < poly.size(); ++i) {
+    const Eigen::Matrix3d b = R.transpose() * M.block<3, 3>(6 * i + 3, 6 * i + 3) * R;
+    EXPECT_NEAR(b(0, 0), b(1, 1), 1e-12 * b.norm());
+    EXPECT_LT((b - Eigen::Matrix3d(b.diagonal().asDiagonal())).norm(), 1e-12 * b.norm());
+    in_plane += b(0, 0);
+    drilling += b(2, 2);
   }
+  EXPECT_NEAR(in_plane, rho * t * t * t / 12.0 * PolygonArea(poly), 1e-12 * in_plane);
+  EXPECT_LE(drilling, in_plane * (1.0 + 1e-12));
 }
 
 // Renumbering the nodes cyclically by `shift` only permutes K and M.
