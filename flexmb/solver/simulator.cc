@@ -93,7 +93,7 @@ void Simulator::Run(double t_end, double output_interval, const Observer& observ
   }
   if (!limited.empty()) {
     RefreshWorkspace();
-    CheckJointLimits(limited);
+    CheckJointLimits(model_, ws_, state_.t);
   }
   if (observer) {
     RefreshWorkspace();
@@ -139,7 +139,7 @@ void Simulator::Run(double t_end, double output_interval, const Observer& observ
       CutStep(state_.t + h, h, eps, check_runaway);
     }
     if (next_release < releases.size() && state_.t >= releases[next_release] - eps) ReleaseJoints(eps);
-    if (!limited.empty()) CheckJointLimits(limited);
+    if (!limited.empty()) CheckJointLimits(model_, ws_, state_.t);
     if (hits_output && state_.t >= t_out - eps) ++out_index;
     if (observer && (output_interval <= 0 || hits_output || state_.t >= t_end - eps)) {
       RefreshWorkspace();
@@ -180,19 +180,6 @@ void Simulator::ReleaseJoints(double eps) {
   SparseLu lu;
   InitialAccelerations(model_, state_, ws_, lu);
   integrator_.Start(state_);
-}
-
-void Simulator::CheckJointLimits(const std::vector<int>& limited) const {
-  for (int k : limited) {
-    const Joint& j = *model_.joints[k];
-    const double c = j.Coordinate(0, ws_.markers[j.marker_i], ws_.markers[j.marker_j], nullptr);
-    if (c >= j.coordinate_min && c <= j.coordinate_max) continue;
-    const char* unit = j.CoordinateIsAngle(0) ? "rad" : "m";
-    throw NumericalError(SimulatorFormat("%s %.6g %s outside the joint's limits [%.6g, %.6g] %s at t = %g s",
-                                         j.CoordinateName(0), c, unit, j.coordinate_min, j.coordinate_max, unit,
-                                         state_.t),
-                         {"", 0, "joint '" + j.name() + "'"});
-  }
 }
 
 void Simulator::CutStep(double t_target, double h, double eps, const std::function<void()>& check_runaway) {

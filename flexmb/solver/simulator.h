@@ -100,10 +100,6 @@ class Simulator {
   /// accelerations and multipliers consistent again, as the acceleration
   /// jumps at a release (Joint::release_time).
   void ReleaseJoints(double eps);
-  /// Throws NumericalError naming the first joint of `limited` (indices
-  /// into Model::joints) whose coordinate 0 is outside its limits
-  /// (Joint::coordinate_min, coordinate_max) at the current state.
-  void CheckJointLimits(const std::vector<int>& limited) const;
   // throws NumericalError: `what`, the integrator's failure hint and the
   // elements with the largest shares of the residual (entity: the largest)
   [[noreturn]] void Fail(const std::string& what);

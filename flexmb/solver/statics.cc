@@ -103,6 +103,7 @@ class StaticsSolver {
       }
     }
     StoreLambda();
+    CheckJointLimits(m_, ws_, s_.t, true);
     return res_;
   }
 
@@ -286,6 +287,21 @@ class StaticsSolver {
 };
 
 }  // namespace
+
+void CheckJointLimits(const Model& m, const Workspace& ws, double t, bool statics) {
+  for (const auto& jp : m.joints) {
+    const Joint& j = *jp;
+    if (j.NumCoordinates() == 0 || (!std::isfinite(j.coordinate_min) && !std::isfinite(j.coordinate_max))) continue;
+    const double c = j.Coordinate(0, ws.markers[j.marker_i], ws.markers[j.marker_j], nullptr);
+    if (c >= j.coordinate_min && c <= j.coordinate_max) continue;
+    const char* unit = j.CoordinateIsAngle(0) ? "rad" : "m";
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%s %.6g %s outside the joint's limits [%.6g, %.6g] %s %s%g s%s",
+                  j.CoordinateName(0), c, unit, j.coordinate_min, j.coordinate_max, unit,
+                  statics ? "at the static equilibrium (t = " : "at t = ", t, statics ? ")" : "");
+    throw NumericalError(buf, {"", 0, "joint '" + j.name() + "'"});
+  }
+}
 
 StaticsResult SolveStatics(const Model& m, State& s, Workspace& ws, const StaticsSettings& set) {
   StaticsSolver solver(m, s, ws, set);

@@ -84,4 +84,11 @@ struct StaticsSettings {
 StaticsResult SolveStatics(const Model& model, State& s, Workspace& ws,
                            const StaticsSettings& settings = {});
 
+/// Throws NumericalError naming the first joint whose coordinate lies
+/// outside its limits (`Joint::coordinate_min/max`, a cylinder's stroke),
+/// read from the markers of `ws` (evaluated at the state of time `t`); the
+/// message ends "at t = T s", or with `statics` "at the static equilibrium
+/// (t = T s)". SolveStatics checks its equilibrium, the Simulator every step.
+void CheckJointLimits(const Model& model, const Workspace& ws, double t, bool statics = false);
+
 }  // namespace flexmb

@@ -11,6 +11,8 @@
 #include "flexmb/common/error.h"
 #include "flexmb/model_file/model_file.h"
 #include "flexmb/solver/simulator.h"
+#include "flexmb/solver/initial_conditions.h"
+#include "flexmb/solver/statics.h"
 
 namespace flexmb {
 namespace {
@@ -80,6 +82,38 @@ TEST(JointLimits, BadLimitsAndAStartOutsideThemAreNamed) {
   spherical.replace(spherical.find("prismatic"), 9, "spherical");
   EXPECT_NE(LimitsError(spherical).find("a spherical joint has no coordinate to limit"), std::string::npos)
       << LimitsError(spherical);
+}
+
+// statics: a slider hanging on a spring (k = 100 N/m, free length 0) sinks
+// to z = -m g / k = -0.1962 m; inside limits [-0.5, 0.5] the equilibrium is
+// that, with limits [-0.1, 0.5] SolveStatics stops naming the joint
+TEST(JointLimits, StaticEquilibriumOutsideTheLimitsIsNamed) {
+  auto text = [](const std::string& limits) {
+    std::string y = LimitsModel(limits);
+    y.insert(y.find("solver:"),
+             "forces:\n  - {name: spring, type: spring_damper, i: ground.guide, j: slider.c, stiffness: 100, "
+             "free_length: 0}\n");
+    return y;
+  };
+  auto solve = [](const std::string& yaml) {
+    auto m = LoadModelString(yaml, "limits.yaml");
+    State s = m->InitialState();
+    Workspace ws;
+    MakeConsistent(*m, s, ws);
+    SolveStatics(*m, s, ws);
+    return s.q(2);
+  };
+  EXPECT_NEAR(solve(text(", limits: [-0.5, 0.5]")), -2.0 * 9.81 / 100.0, 1e-9);
+  try {
+    solve(text(", limits: [-0.1, 0.5]"));
+    FAIL() << "expected the statics to stop at the limit";
+  } catch (const NumericalError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("joint 'stroke'"), std::string::npos) << what;
+    EXPECT_NE(what.find("translation -0.1962 m outside the joint's limits [-0.1, 0.5] m at the static equilibrium"),
+              std::string::npos)
+        << what;
+  }
 }
 
 }  // namespace
