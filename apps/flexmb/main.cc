@@ -189,6 +189,8 @@ int main(int argc, char** argv) {
   std::optional<double> check_speed;
   check->add_option("--frame", check_frame, "lane-change file: frame model, rigid or elastic (default: the file's)");
   check->add_option("--speed", check_speed, "lane-change file: entry speed [km/h] (default: the file's)");
+  std::string check_manoeuvre;
+  check->add_option("--manoeuvre", check_manoeuvre, "model file: check the model with this entry of its manoeuvres");
 
   CLI::App* fe = app.add_subcommand("fe", "finite-element models of parts: modes, info, export");
   fe->require_subcommand(1);
@@ -364,7 +366,7 @@ int main(int argc, char** argv) {
       flexmb::vehicle::CheckLaneChange(o, stdout);
       return 0;
     }
-    flexmb::CheckModel(model, stdout);
+    flexmb::CheckModel(model, stdout, check_manoeuvre);
     return 0;
   });
 }

@@ -231,6 +231,27 @@ TEST_F(Cli, CheckReportsDofAndRedundantEquations) {
   EXPECT_NE(r.out.find("3 redundant constraint equations removed ("), std::string::npos) << r.out;
 }
 
+// check --manoeuvre: the manoeuvre's values are checked without a run (a
+// negative release time is an error naming the joint and the manoeuvre)
+TEST_F(Cli, CheckAppliesAManoeuvre) {
+  WriteFile(dir_ / "manoeuvres.yaml", std::string(kPendulum) +
+                                          "manoeuvres:\n"
+                                          "  drop: {joints: {pin: {release_time: 0.5}}}\n"
+                                          "  broken: {joints: {pin: {release_time: -1}}}\n");
+  CliResult r = RunCli(dir_, "check manoeuvres.yaml --manoeuvre drop");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("degrees of freedom: 1\n"), std::string::npos) << r.out;
+  r = RunCli(dir_, "check manoeuvres.yaml");
+  EXPECT_EQ(r.code, 0) << r.err;
+  r = RunCli(dir_, "check manoeuvres.yaml --manoeuvre broken");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("joint 'pin': 'release_time' must be positive, got -1 (manoeuvre 'broken')"), std::string::npos)
+      << r.err;
+  r = RunCli(dir_, "check manoeuvres.yaml --manoeuvre nosuch");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("drop"), std::string::npos) << r.err;
+}
+
 TEST_F(Cli, BadModelIsAnInputErrorWithFileAndLine) {
   // line 8 has the misspelled key
   std::string text = kPendulum;

@@ -272,8 +272,8 @@ std::string SummaryJson(const RunSummary& s) {
   return j + "}\n";
 }
 
-void CheckModel(const std::string& model_path, std::FILE* out) {
-  std::unique_ptr<Model> model = LoadModelFile(model_path);
+void CheckModel(const std::string& model_path, std::FILE* out, const std::string& manoeuvre) {
+  std::unique_ptr<Model> model = LoadModelFile(model_path, SolverOverrides{std::nullopt, std::nullopt, manoeuvre});
   ReportModel(*model, model_path, out);
 }
 

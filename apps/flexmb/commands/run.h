@@ -93,8 +93,10 @@ std::string SummaryJson(const RunSummary& summary);
 /// Loads the model file, makes its initial state consistent and prints a
 /// report to `out`: counts of bodies, joints (with equations), forces and
 /// sensors, "degrees of freedom: N", "constraint equations: M (R redundant)"
-/// and the redundancy warnings. Throws InputError / NumericalError.
-void CheckModel(const std::string& model_path, std::FILE* out);
+/// and the redundancy warnings; with `manoeuvre`, of the model with that
+/// entry of the file's `manoeuvres` applied (as `flexmb run --manoeuvre`
+/// does). Throws InputError / NumericalError.
+void CheckModel(const std::string& model_path, std::FILE* out, const std::string& manoeuvre = "");
 
 class Model;
 
