@@ -14,6 +14,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <cstring>
 #include <filesystem>
 #include <string>
@@ -123,7 +125,14 @@ TEST(ModesFile, ImportedModesAreCraigBamptonModesOfTheImportedMatrices) {
   const Eigen::VectorXd lambda = eig.eigenvalues();
   const reduction::ReducedBody body = reduction::ReduceCraigBampton(p.model, p.options);
   ASSERT_EQ(body.frequencies_hz.size(), 11);
-  for (int k = 0; k < 6; ++k) EXPECT_LT(std::abs(lambda[k]), 1e-8 * lambda[6]) << k;
+  // the rigid-body eigenvalues are round-off: a backward-stable solve of
+  // (kr, mr) perturbs each eigenvalue by about eps times the largest one
+  // (the shells' drilling modes make that large); 100 times that
+  const double roundoff = std::numeric_limits<double>::epsilon() * lambda.cwiseAbs().maxCoeff();
+  std::printf("rigid-body eigenvalues up to %.3g; round-off scale %.3g; first flexible %.6g\n",
+              lambda.head(6).cwiseAbs().maxCoeff(), roundoff, lambda[6]);
+  for (int k = 0; k < 6; ++k) EXPECT_LT(std::abs(lambda[k]), 100.0 * roundoff) << k;
+  EXPECT_LT(100.0 * roundoff, 1e-5 * lambda[6]);  // still far below the flexible modes
   for (int k = 0; k < 11; ++k) {
     const double f = std::sqrt(lambda[6 + k]) / (2 * kPi);
     EXPECT_NEAR(f, body.frequencies_hz[k], 1e-9 * body.frequencies_hz[k]) << "flexible mode " << k + 1;

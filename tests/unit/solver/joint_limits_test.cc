@@ -84,15 +84,18 @@ TEST(JointLimits, BadLimitsAndAStartOutsideThemAreNamed) {
       << LimitsError(spherical);
 }
 
-// statics: a slider hanging on a spring (k = 100 N/m, free length 0) sinks
-// to z = -m g / k = -0.1962 m; inside limits [-0.5, 0.5] the equilibrium is
-// that, with limits [-0.1, 0.5] SolveStatics stops naming the joint
+// statics: a slider hanging on a spring (k = 100 N/m) from 1 m above it,
+// free length 1 m, sinks to z = -m g / k = -0.1962 m; inside limits
+// [-0.5, 0.5] the equilibrium is that, with limits [-0.1, 0.5] SolveStatics
+// stops naming the joint
 TEST(JointLimits, StaticEquilibriumOutsideTheLimitsIsNamed) {
   auto text = [](const std::string& limits) {
     std::string y = LimitsModel(limits);
+    const std::string ground = "ground: {markers: [{name: guide}]}";
+    y.replace(y.find(ground), ground.size(), "ground: {markers: [{name: guide}, {name: anchor, position: [0, 0, 1]}]}");
     y.insert(y.find("solver:"),
-             "forces:\n  - {name: spring, type: spring_damper, i: ground.guide, j: slider.c, stiffness: 100, "
-             "free_length: 0}\n");
+             "forces:\n  - {name: spring, type: spring_damper, i: ground.anchor, j: slider.c, stiffness: 100, "
+             "free_length: 1}\n");
     return y;
   };
   auto solve = [](const std::string& yaml) {
