@@ -84,14 +84,11 @@ void Simulator::Run(double t_end, double output_interval, const Observer& observ
   std::sort(releases.begin(), releases.end());
   size_t next_release = 0;
   ReleaseJoints(eps);
-  // joints with limits on their coordinate (a cylinder's stroke)
-  std::vector<int> limited;
-  for (size_t k = 0; k < model_.joints.size(); ++k) {
-    const Joint& j = *model_.joints[k];
-    if (j.NumCoordinates() > 0 && (std::isfinite(j.coordinate_min) || std::isfinite(j.coordinate_max)))
-      limited.push_back(static_cast<int>(k));
-  }
-  if (!limited.empty()) {
+  // any joint with limits on its coordinate (a cylinder's stroke)?
+  const bool limited = std::any_of(model_.joints.begin(), model_.joints.end(), [](const auto& j) {
+    return j->NumCoordinates() > 0 && (std::isfinite(j->coordinate_min) || std::isfinite(j->coordinate_max));
+  });
+  if (limited) {
     RefreshWorkspace();
     CheckJointLimits(model_, ws_, state_.t);
   }
@@ -139,7 +136,7 @@ void Simulator::Run(double t_end, double output_interval, const Observer& observ
       CutStep(state_.t + h, h, eps, check_runaway);
     }
     if (next_release < releases.size() && state_.t >= releases[next_release] - eps) ReleaseJoints(eps);
-    if (!limited.empty()) CheckJointLimits(model_, ws_, state_.t);
+    if (limited) CheckJointLimits(model_, ws_, state_.t);
     if (hits_output && state_.t >= t_out - eps) ++out_index;
     if (observer && (output_interval <= 0 || hits_output || state_.t >= t_end - eps)) {
       RefreshWorkspace();
