@@ -54,9 +54,14 @@ AncfBeam3dBody::AncfBeam3dBody(std::string name, const AncfBeam3dData& data)
     q0_.segment<3>(7 * k) = r;
     q0_.segment<3>(7 * k + 3) = a;
   }
+  if (!data_.element_sections.empty() && static_cast<int>(data_.element_sections.size()) != n_el_)
+    throw InputError("ANCF beam has " + std::to_string(data_.element_sections.size()) + " element sections for " +
+                         std::to_string(n_el_) + " elements (give one per element)",
+                     ctx);
   elements_.reserve(n_el_);
   for (int i = 0; i < n_el_; ++i) {
-    NamingBody([&] { elements_.emplace_back(h, data_.section, R_W0_, data_.order); });
+    const Beam3dSection& sec = data_.element_sections.empty() ? data_.section : data_.element_sections[i];
+    NamingBody([&] { elements_.emplace_back(h, sec, R_W0_, data_.order); });
     elements_.back().SetReference(q0_.segment<14>(7 * i));
   }
   AssembleMass();

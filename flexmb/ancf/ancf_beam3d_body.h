@@ -29,7 +29,10 @@ namespace flexmb::ancf {
 /// start_W with tangent direction_W; it is straight (radius 0) or an arc of
 /// the given radius turning about the normal (towards y0 = z0 x t0).
 struct AncfBeam3dData : AncfLineData {
-  Beam3dSection section;  ///< section, material and damping
+  Beam3dSection section;  ///< section, material and damping (of every element unless element_sections)
+  /// Sections of the elements 0..N-1 in order (a stepped or tapered beam);
+  /// empty: every element has `section`. Lengths stay equal.
+  std::vector<Beam3dSection> element_sections;
   /// Section z axis z0 at node 0 (its part normal to direction_W); a zero
   /// vector picks world z, or world x if direction_W is along z.
   Vec3 normal_W = Vec3::Zero();
@@ -40,7 +43,7 @@ struct AncfBeam3dData : AncfLineData {
 class AncfBeam3dBody final : public AncfLineBody<AncfBeam3dBody, AncfBeam3d, 7> {
  public:
   /// Throws InputError (naming the body) on a non-positive length, element
-  /// count or section value, a negative radius, an arc turning by 180 degrees
+  /// count or section value, element_sections not one per element, a negative radius, an arc turning by 180 degrees
   /// or more, a zero direction, or a normal parallel to it.
   AncfBeam3dBody(std::string name, const AncfBeam3dData& data);
 

@@ -66,10 +66,16 @@ class AncfLineBody : public Body {
   /// constant load per length, with their element-block tangents.
   void AddForces(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q,
                  Eigen::Ref<MatX> dQdq, Eigen::Ref<MatX> dQdv) const override {
-    const auto& sec = self().ElementAt(0).section();
-    const Vec3 f_W = sec.rho * sec.A * g_W + self().data_.load_per_length_W;
-    const ElVec Qf = self().ElementAt(0).DistributedLoad(self().LoadArg(f_W));
+    // the load vector of the elements' weight and the load per length,
+    // evaluated again only where rho A changes along the line (equal lengths)
+    double rhoA_of_Qf = -1.0;
+    ElVec Qf;
     for (int i = 0; i < n_el_; ++i) {
+      const auto& sec = self().ElementAt(i).section();
+      if (sec.rho * sec.A != rhoA_of_Qf) {
+        rhoA_of_Qf = sec.rho * sec.A;
+        Qf = self().ElementAt(i).DistributedLoad(self().LoadArg(rhoA_of_Qf * g_W + self().data_.load_per_length_W));
+      }
       const Eigen::Map<const ElVec> e(q + kNodeDof * i), edot(v + kNodeDof * i);
       ElVec Qe = Qf;
       ElMat K = ElMat::Zero(), C = ElMat::Zero();
@@ -98,11 +104,14 @@ class AncfLineBody : public Body {
     return T;
   }
   double GravityPotential(const double* q, const Vec3& g_W) const override {
-    const auto& sec = self().ElementAt(0).section();
-    const double rhoA = sec.rho * sec.A;
-    const ElVec Qg = self().ElementAt(0).DistributedLoad(rhoA * self().LoadArg(g_W));
-    double V = self().GravityPotentialOffset(rhoA, g_W);
-    for (int i = 0; i < n_el_; ++i) V -= Eigen::Map<const ElVec>(q + kNodeDof * i).dot(Qg);
+    // per element: the offset is linear in rho A and the length (1/N of the line's)
+    double V = 0.0;
+    for (int i = 0; i < n_el_; ++i) {
+      const auto& sec = self().ElementAt(i).section();
+      const double rhoA = sec.rho * sec.A;
+      const ElVec Qg = self().ElementAt(i).DistributedLoad(rhoA * self().LoadArg(g_W));
+      V += self().GravityPotentialOffset(rhoA, g_W) / n_el_ - Eigen::Map<const ElVec>(q + kNodeDof * i).dot(Qg);
+    }
     return V;
   }
   /// Strain energy of the whole line [J].

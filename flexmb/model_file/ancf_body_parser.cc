@@ -3,13 +3,15 @@
 // {diameter}, material {E, rho}, start [3], direction [3] (ancf_cable: or
 // end [3]), normal [3], damping, curvature (ancf_beam), angular_velocity [3]
 // (ancf_cable), load_per_length [3], axial_strain (engineering |
-// green_lagrange), markers [{name, node | end, position, orientation}]; ancf_beam3d: section {area, Iy, Iz, J}, material {E, G | nu,
+// green_lagrange), markers [{name, node | end, position, orientation}];
+// ancf_beam3d: section {area, Iy, Iz, J} or a list of one per element, material {E, G | nu,
 // rho}, radius instead of curvature
 #include "flexmb/model_file/ancf_body_parser.h"
 
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <vector>
 
 #include "flexmb/ancf/ancf_beam2d_body.h"
 #include "flexmb/ancf/ancf_beam3d_body.h"
@@ -142,13 +144,25 @@ void ParseBeam3d(const YAML::Node& node, ParseContext& ctx, std::map<std::string
   d.elements = ctx.Integer(node, "elements", 0);
   if (d.elements <= 0)
     ctx.Fail(node["elements"], "'elements' must be a positive whole number, got " + std::to_string(d.elements));
+  // one section {area, Iy, Iz, J}, or a list of one per element (stepped or tapered)
   const YAML::Node sec = node["section"];
-  if (!sec || !sec.IsMap()) ctx.Fail(sec ? sec : node, "expected 'section' as {area, Iy, Iz, J}");
-  ctx.CheckKeys(sec, {"area", "Iy", "Iz", "J"});
-  d.section.A = ctx.Positive(sec, "area");
-  d.section.Iy = ctx.Positive(sec, "Iy");
-  d.section.Iz = ctx.Positive(sec, "Iz");
-  d.section.J = ctx.Positive(sec, "J");
+  if (!sec || !(sec.IsMap() || sec.IsSequence()))
+    ctx.Fail(sec ? sec : node, "expected 'section' as {area, Iy, Iz, J} or a list of one per element");
+  if (sec.IsSequence() && static_cast<int>(sec.size()) != d.elements)
+    ctx.Fail(sec, "'section' lists " + std::to_string(sec.size()) + " sections for " + std::to_string(d.elements) +
+                      " elements (give one per element, or one map for all)");
+  std::vector<ancf::Beam3dSection> sections;
+  for (std::size_t i = 0; i < (sec.IsSequence() ? sec.size() : 1); ++i) {
+    const YAML::Node si = sec.IsSequence() ? sec[i] : sec;
+    if (!si.IsMap()) ctx.Fail(si, "expected each section as {area, Iy, Iz, J}");
+    ctx.CheckKeys(si, {"area", "Iy", "Iz", "J"});
+    ancf::Beam3dSection& s = sections.emplace_back();
+    s.A = ctx.Positive(si, "area");
+    s.Iy = ctx.Positive(si, "Iy");
+    s.Iz = ctx.Positive(si, "Iz");
+    s.J = ctx.Positive(si, "J");
+  }
+  d.section = sections.front();
   const YAML::Node mat = node["material"];
   if (!mat || !mat.IsMap()) ctx.Fail(mat ? mat : node, "expected 'material' as {E, G or nu, rho}");
   ctx.CheckKeys(mat, {"E", "G", "nu", "rho"});
@@ -167,6 +181,13 @@ void ParseBeam3d(const YAML::Node& node, ParseContext& ctx, std::map<std::string
   d.section.damping = ctx.Double(node, "damping", 0.0);
   if (d.section.damping < 0.0) ctx.Fail(node["damping"], "'damping' must not be negative");
   d.section.axial_strain = ParseAxialStrainMeasure(node, ctx);
+  if (sec.IsSequence())
+    for (ancf::Beam3dSection& s : sections) {
+      const double A = s.A, Iy = s.Iy, Iz = s.Iz, J = s.J;
+      s = d.section;  // material, damping and strain measure of the body
+      s.A = A, s.Iy = Iy, s.Iz = Iz, s.J = J;
+      d.element_sections.push_back(s);
+    }
   d.radius = ctx.Double(node, "radius", 0.0);
   if (d.radius < 0.0) ctx.Fail(node["radius"], "'radius' must not be negative (0: straight)");
   d.start_W = ctx.Vector3(node, "start", Vec3::Zero());

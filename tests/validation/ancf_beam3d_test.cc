@@ -5,7 +5,7 @@
 // the published tip position (Bathe & Bolourchi 1979; Simo & Vu-Quoc 1986);
 // energy balance of a 3D beam pendulum in the engine (Berzeri-Shabana
 // pendulum data, anisotropic section, spherical pin, skew gravity: bending
-// in both planes and twist).
+// in both planes and twist); a stepped cantilever (a section per element).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -92,6 +92,55 @@ TEST(AncfBeam3dValidation, CantileverBendingInBothPlanesIsPL3Over3EI) {
   EXPECT_NEAR(qz(tip + 5), Pz * L * L / (2.0 * E * d.section.Iy), 1e-6 * wz / L);
   EXPECT_NEAR(qz(tip + 1), 0.0, 1e-12);
   EXPECT_NEAR(qz(tip + 6), 0.0, 1e-12);
+}
+
+// A stepped cantilever (one section per element, AncfBeam3dData::element_sections):
+// tip deflection P int (L - x)^2 / (E I(x)) dx, twist T int dx / (G J(x))
+// (unit-load method of beam theory, exact for the Hermite elements under end
+// loads), and the weight of every element in the forces and the potential.
+TEST(AncfBeam3dValidation, SteppedCantileverBendingTorsionAndWeightPerElement) {
+  AncfBeam3dData d = Beam3dCantilever();
+  const double f[4] = {1.0, 0.7, 0.45, 0.3};  // section scale of the elements
+  for (double fi : f) {
+    Beam3dSection s = d.section;
+    s.A *= fi, s.Iy *= fi, s.Iz *= fi * fi, s.J *= fi * fi * fi;
+    d.element_sections.push_back(s);
+  }
+  const AncfBeam3dBody b("stepped", d);
+  const double L = d.length, h = L / d.elements, E = d.section.E, G = d.section.G;
+  const int tip = 7 * d.elements;
+  double flex_y = 0.0, flex_z = 0.0, twist_flex = 0.0;  // int (L-x)^2/EI, int 1/GJ
+  for (int i = 0; i < d.elements; ++i) {
+    const double a = L - i * h, c = L - (i + 1) * h;  // (L - x) at the element's ends
+    const double m2 = (a * a * a - c * c * c) / 3.0;
+    flex_y += m2 / (E * d.element_sections[i].Iy);
+    flex_z += m2 / (E * d.element_sections[i].Iz);
+    twist_flex += h / (G * d.element_sections[i].J);
+  }
+  const double Pz = 1e-4 * L / flex_y, Py = 1e-4 * L / flex_z, T = 1e-3 / twist_flex;
+  EXPECT_NEAR(Beam3dTipSolve(b, Vec3(0.0, 0.0, Pz), 0.0)(tip + 2), Pz * flex_y, 1e-6 * Pz * flex_y);
+  EXPECT_NEAR(Beam3dTipSolve(b, Vec3(0.0, Py, 0.0), 0.0)(tip + 1), Py * flex_z, 1e-6 * Py * flex_z);
+  EXPECT_NEAR(Beam3dTipSolve(b, Vec3::Zero(), T)(tip + 6), T * twist_flex, 1e-9 * T * twist_flex);
+  // the uniform beam's tip deflection differs (the test sees the sections)
+  const AncfBeam3dBody uniform("uniform", Beam3dCantilever());
+  EXPECT_GT(std::abs(Beam3dTipSolve(uniform, Vec3(0.0, 0.0, Pz), 0.0)(tip + 2) - Pz * flex_y), 0.1 * Pz * flex_y);
+
+  // weight: the z forces of a rigid lift sum to -(sum rho A_i h) g, and Q = -dV/dq
+  VecX q(b.nq()), v(b.nv()), Q = VecX::Zero(b.nv());
+  b.InitialCoordinates(q.data(), v.data());
+  const Vec3 g_W(0.0, 0.0, -9.81);
+  MatX K = MatX::Zero(b.nv(), b.nv()), C = K;
+  b.AddForces(q.data(), v.data(), g_W, Q, K, C);
+  double weight = 0.0, Qz = 0.0;
+  for (const Beam3dSection& s : d.element_sections) weight += s.rho * s.A * h * 9.81;
+  for (int k = 0; k <= d.elements; ++k) Qz += Q(7 * k + 2);
+  EXPECT_NEAR(Qz, -weight, 1e-12 * weight);
+  const double V0 = b.GravityPotential(q.data(), g_W);
+  for (int j = 0; j < b.nq(); ++j) {
+    VecX qj = q;
+    qj(j) += 1.0;  // V is linear in q
+    EXPECT_NEAR(b.GravityPotential(qj.data(), g_W) - V0, -Q(j), 1e-9 * weight) << j;
+  }
 }
 
 // Bathe-Bolourchi bend: arc R = 100, 45 degrees, in the x-y plane from the

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "flexmb/common/error.h"
 #include "flexmb/model_file/model_file.h"
@@ -219,8 +220,36 @@ TEST(AncfBeam3dModelFile, ArcWithMarkersAndBadInput) {
       {"nu: 0", "nu: 0, G: 1.0e6", "bend.yaml:9", "body 'arc'"},
       {"nu: 0, ", "", "bend.yaml:9", "body 'arc'"},
       {"{name: tip, node: 8}", "{name: tip, node: 9}", "bend.yaml:14", "marker 'arc.tip'"},
+      // a list of sections: one per element
+      {"section: {area: 1, Iy: 0.0833333, Iz: 0.0833333, J: 0.1666667}",
+       "section: [{area: 1, Iy: 0.08, Iz: 0.08, J: 0.16}, {area: 1, Iy: 0.08, Iz: 0.08, J: 0.16}]", "bend.yaml:8",
+       "body 'arc'"},
+      {"section: {area: 1, Iy: 0.0833333, Iz: 0.0833333, J: 0.1666667}", "section: [1, 2, 3, 4, 5, 6, 7, 8]",
+       "bend.yaml:8", "body 'arc'"},
   };
   test_util::ExpectModelFileErrorsNameLineAndEntity(kBeam3dModel, "bend.yaml", cases);
+}
+
+TEST(AncfBeam3dModelFile, SectionPerElement) {
+  std::string text = kBeam3dModel;
+  const std::string one = "section: {area: 1, Iy: 0.0833333, Iz: 0.0833333, J: 0.1666667}";
+  std::string list = "section: [";
+  for (int i = 0; i < 8; ++i)
+    list += (i ? ", " : "") + std::string("{area: ") + std::to_string(1.0 + i) + ", Iy: 0.08, Iz: 0.09, J: 0.16}";
+  text.replace(text.find(one), one.size(), list + "]");
+  text.replace(text.find("radius: 100\n"), 12, "radius: 100\n    damping: 0.01\n    axial_strain: green_lagrange\n");
+  auto model = LoadModelString(text, "stepped.yaml");
+  const auto& b = dynamic_cast<const AncfBeam3dBody&>(*model->bodies[model->FindBody("arc")]);
+  for (int i = 0; i < 8; ++i) {
+    const Beam3dSection& s = b.element(i).section();
+    EXPECT_DOUBLE_EQ(s.A, 1.0 + i);
+    EXPECT_DOUBLE_EQ(s.Iz, 0.09);
+    // the body's material, damping and strain measure in every element
+    EXPECT_DOUBLE_EQ(s.G, 0.5e7);
+    EXPECT_DOUBLE_EQ(s.rho, 1.0);
+    EXPECT_DOUBLE_EQ(s.damping, 0.01);
+    EXPECT_EQ(s.axial_strain, AxialStrainMeasure::kGreenLagrange);
+  }
 }
 
 }  // namespace
