@@ -1,7 +1,8 @@
 /// \file main.cc
 /// The flexmb command line: "run" and "check" over the library's RunModel and
 /// CheckModel (apps/flexmb/commands/run.h), the "fe" group ("fe modes", "fe info",
-/// "fe export") over apps/flexmb/commands/fe_commands.h, and "reduce" and "body info"
+/// "fe export") over apps/flexmb/commands/fe_commands.h, "fe static" over
+/// apps/flexmb/commands/fe_static.h, and "reduce" and "body info"
 /// over apps/flexmb/commands/reduce_commands.h.
 
 #include <unistd.h>
@@ -19,6 +20,7 @@
 #include "flexmb/common/process_tuning.h"
 #include "flexmb/common/error.h"
 #include "apps/flexmb/commands/fe_commands.h"
+#include "apps/flexmb/commands/fe_static.h"
 #include "apps/flexmb/commands/reduce_commands.h"
 #include "apps/flexmb/commands/run.h"
 #include "apps/flexmb/commands/lane_change.h"
@@ -192,7 +194,7 @@ int main(int argc, char** argv) {
   std::string check_manoeuvre;
   check->add_option("--manoeuvre", check_manoeuvre, "model file: check the model with this entry of its manoeuvres");
 
-  CLI::App* fe = app.add_subcommand("fe", "finite-element models of parts: modes, info, export");
+  CLI::App* fe = app.add_subcommand("fe", "finite-element models of parts: modes, static, info, export");
   fe->require_subcommand(1);
   flexmb::io::FeModesOptions modes_opt;
   CLI::App* modes = fe->add_subcommand("modes", "natural frequencies of a part's full FE model");
@@ -203,6 +205,17 @@ int main(int argc, char** argv) {
   modes->add_flag("--json", modes_opt.json, "print one JSON object instead of the table");
   modes->add_flag("--lumped", modes_opt.lumped, "lumped instead of consistent element mass");
   modes->add_option("--shift", modes_opt.shift, "spectral shift [rad^2/s^2], negative (default: automatic)");
+
+  flexmb::io::FeStaticOptions static_opt;
+  CLI::App* fe_static = fe->add_subcommand("static", "linear static solution of a part's full FE model");
+  fe_static->add_option("model", static_opt.model_path, "mesh file or FE model file (.yaml)")->required();
+  fe_static->add_option("--fix", static_opt.fix, "nodes to clamp: comma-separated node ids or a node set name");
+  fe_static->add_option("--support", static_opt.supports,
+                        "support of single components ID:COMPONENTS, digits 1-6 in basic axes (repeatable)");
+  fe_static->add_option("--gravity", static_opt.gravity, "gravity gx,gy,gz [m/s^2] in the model's axes");
+  fe_static->add_option("--force", static_opt.forces, "nodal load ID:fx,fy,fz[,mx,my,mz] [N, N m] (repeatable)");
+  fe_static->add_option("--nodes", static_opt.nodes, "nodes to report (ids or a set; default: the loaded nodes)");
+  fe_static->add_flag("--json", static_opt.json, "print one JSON object instead of the table");
 
   flexmb::io::FeInfoOptions info_opt;
   CLI::App* info = fe->add_subcommand("info", "counts, mass, centre of mass and bounding box of an FE model");
@@ -352,6 +365,7 @@ int main(int argc, char** argv) {
     });
   }
   if (modes->parsed()) return Guarded([&] { return flexmb::io::FeModes(modes_opt, std::cout); });
+  if (fe_static->parsed()) return Guarded([&] { return flexmb::io::FeStatic(static_opt, std::cout); });
   if (info->parsed()) return Guarded([&] { return flexmb::io::FeInfo(info_opt, std::cout); });
   if (fe_export->parsed()) return Guarded([&] { return flexmb::io::FeExport(export_opt, std::cout); });
   if (reduce->parsed()) return Guarded([&] { return flexmb::io::Reduce(reduce_opt, std::cout); });

@@ -12,9 +12,6 @@
 
 namespace flexmb::fe {
 
-namespace {
-
-// names a free DOF by its node id and component
 std::string DescribeFreeDof(const DofMap& dofs, int f) {
   for (size_t n = 0; n < dofs.free.size(); ++n) {
     for (int c = 0; c < 6; ++c) {
@@ -27,6 +24,8 @@ std::string DescribeFreeDof(const DofMap& dofs, int f) {
   }
   return "free DOF " + std::to_string(f);
 }
+
+namespace {
 
 // Default shift. The lowest modes are found well when sigma lies close below
 // them: nu = 1 / (lambda - sigma) separates the rigid modes (lambda = 0) from

@@ -34,6 +34,10 @@ struct ModalResult {
   Eigen::MatrixXd modes;   ///< n_free x count
 };
 
+/// Names free DOF f of `dofs` by its node id and component for messages:
+/// "free DOF 12 (node 7, rz)".
+std::string DescribeFreeDof(const DofMap& dofs, int f);
+
 /// Lowest `count` modes. Throws NumericalError if K - sigma M is not
 /// positive definite (e.g. a mechanism with zero mass) or Spectra does not
 /// converge; InputError if more modes are asked than DOF exist.

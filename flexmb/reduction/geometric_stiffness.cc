@@ -8,6 +8,7 @@
 #include "flexmb/fe/assembly.h"
 #include "flexmb/fe/element_traits.h"
 #include "flexmb/fe/elements/element_common.h"
+#include "flexmb/fe/modal.h"
 #include "flexmb/fe/sparse_cholesky.h"
 #include "flexmb/reduction/element_input.h"
 
@@ -99,14 +100,8 @@ std::vector<MatX> ComputeGeometricStiffness(const fe::Mesh& mesh, const MatX& mo
   const int nf = a.dofs.n_free;
   fe::SparseCholesky chol;
   if (nf > 0) {
-    chol.Factorize(a.K, "K of the held body (geometric stiffening)", [&](int dof) {
-      for (int k = 0; k < nn; ++k) {
-        for (int c = 0; c < 6; ++c) {
-          if (a.dofs.free[k][c] == dof) return "node " + std::to_string(a.dofs.node_ids[k]) + " component " + std::to_string(c + 1);
-        }
-      }
-      return std::string("free DOF ") + std::to_string(dof);
-    });
+    chol.Factorize(a.K, "K of the held body (geometric stiffening)",
+                   [&](int dof) { return fe::DescribeFreeDof(a.dofs, dof); });
   }
 
   // unit inertial loads -M_full a_c on the full DOF, to the free DOF, solved
