@@ -8,14 +8,6 @@ namespace flexmb::primitives {
 
 // Variations: da = dth_i x a = -skew(a) dth_i; db = -skew(b) dth_j; dd = dp_j - dp_i.
 
-void PointCoincidence(const MarkerState& mi, const MarkerState& mj, JointEval& e, int row) {
-  e.phi.segment<3>(row) = mj.p_WM - mi.p_WM;
-  auto D = e.D.middleRows(row, 3);
-  D.setZero();
-  D.block<3, 3>(0, 0) = -Mat3::Identity();
-  D.block<3, 3>(0, 6) = Mat3::Identity();
-}
-
 void Perpendicular(const Vec3& a, const Vec3& b, JointEval& e, int row) {
   e.phi(row) = a.dot(b);
   const Vec3 axb = a.cross(b);

@@ -10,9 +10,6 @@
 
 namespace flexmb::primitives {
 
-/// Phi = p_j - p_i (3 rows, world components). No geometric stiffness.
-void PointCoincidence(const MarkerState& mi, const MarkerState& mj, JointEval& e, int row);
-
 /// Phi = a . b (perpendicular axes). Geometric stiffness added to H.
 void Perpendicular(const Vec3& a, const Vec3& b, JointEval& e, int row);
 void PerpendicularStiffness(const Vec3& a, const Vec3& b, double lambda, Mat12& H);

@@ -37,7 +37,7 @@ std::string LowerPairJoint::EquationName(int k) const {
   if (!eq) return "?";
   switch (eq->kind) {
     case PairEquation::Kind::kOriginsCoincide:
-      return std::string(kAxis[sub]) + ": origins coincide";
+      return std::string(kAxis[sub]) + "_i . (p_j - p_i) = 0 (origins coincide)";
     case PairEquation::Kind::kPerpendicular:
       return std::string(kAxis[eq->axis_i]) + "_i . " + kAxis[eq->axis_j] + "_j = 0";
     case PairEquation::Kind::kPointInPlane:
@@ -52,9 +52,8 @@ void LowerPairJoint::Evaluate(const MarkerState& mi, const MarkerState& mj, doub
   for (int q = 0; q < count_; ++q) {
     const PairEquation& eq = equations_[q];
     switch (eq.kind) {
-      case PairEquation::Kind::kOriginsCoincide:
-        PointCoincidence(mi, mj, e, row);
-        row += 3;
+      case PairEquation::Kind::kOriginsCoincide:  // along the axes of marker i
+        for (int k = 0; k < 3; ++k) PointInPlane(mi.R_WM.col(k), d, e, row++);
         break;
       case PairEquation::Kind::kPerpendicular:
         Perpendicular(mi.R_WM.col(eq.axis_i), mj.R_WM.col(eq.axis_j), e, row++);
@@ -73,8 +72,8 @@ void LowerPairJoint::AddGeometricStiffness(const MarkerState& mi, const MarkerSt
   for (int q = 0; q < count_; ++q) {
     const PairEquation& eq = equations_[q];
     switch (eq.kind) {
-      case PairEquation::Kind::kOriginsCoincide:  // linear in the variations
-        row += 3;
+      case PairEquation::Kind::kOriginsCoincide:
+        for (int k = 0; k < 3; ++k) PointInPlaneStiffness(mi.R_WM.col(k), d, lambda[row++], H);
         break;
       case PairEquation::Kind::kPerpendicular:
         PerpendicularStiffness(mi.R_WM.col(eq.axis_i), mj.R_WM.col(eq.axis_j), lambda[row++], H);

@@ -18,7 +18,7 @@ namespace flexmb {
 /// (0 = x, 1 = y, 2 = z).
 struct PairEquation {
   enum class Kind {
-    kOriginsCoincide,  ///< p_j - p_i = 0 (three rows, world components)
+    kOriginsCoincide,  ///< R_i^T (p_j - p_i) = 0 (three rows, along the axes of marker i)
     kPerpendicular,    ///< a_i . b_j = 0 (axis_i of marker i, axis_j of marker j)
     kPointInPlane,     ///< a_i . (p_j - p_i) = 0 (axis_i of marker i)
   };
@@ -26,7 +26,11 @@ struct PairEquation {
   int axis_i = 0;
   int axis_j = 0;
 
-  /// p_j - p_i = 0.
+  /// p_j - p_i = 0, stated along the axes of marker i rather than world
+  /// axes: a row removed as redundant at the start (a closed loop) then stays
+  /// the loop's redundant direction when the loop turns as a whole (a crane's
+  /// luffing loop slewing by 90 degrees); in world axes it would turn into
+  /// an essential one and the Newton matrix would become singular there.
   static constexpr PairEquation Coincide() { return {Kind::kOriginsCoincide, 0, 0}; }
   /// Axis a of marker i perpendicular to axis b of marker j.
   static constexpr PairEquation Perpendicular(int a, int b) { return {Kind::kPerpendicular, a, b}; }
