@@ -25,8 +25,10 @@ the crane is stable while the rear pads carry load).
 """
 import argparse
 import csv
+import json
 import math
 import os
+import subprocess
 
 # crane.yaml's geometry [m] (make_boom.py for the boom)
 BOOM_LENGTH = 18.0
@@ -139,11 +141,41 @@ def write_study(path):
     print("wrote", path, "with", len(rows), "runs")
 
 
-def report(csv_path):
+def full_fe_drop(angle_deg, mass, flexmb, bdf):
+    """The head's drop [m] in the full FE model's linear static solution
+    (`flexmb fe static`), supported as the crane holds the boom: the foot
+    pin (node 1: translations and the rotations about x and z) and the
+    cylinder eye on a rigid cylinder (node 3: translations); loaded by its
+    weight and the rope at the head sheave (the falls straight down, the
+    lead span towards the winch exit), all in the boom's axes."""
+    a = math.radians(angle_deg)
+    c, s = math.cos(a), math.sin(a)
+    to_boom = lambda x, z: (x * c + z * s, -x * s + z * c)   # world (x, z) -> boom (x, z)
+    head = rotate(a, (BOOM_LENGTH, 0.0))
+    T = mass * 9.81 / FALLS
+    d = (WINCH_EXIT[0] - head[0], WINCH_EXIT[1] - head[1])
+    n = math.hypot(*d)
+    f = to_boom(T * d[0] / n, -FALLS * T + T * d[1] / n)
+    g = to_boom(0.0, -9.81)
+    out = subprocess.run([flexmb, "fe", "static", bdf, "--support", "1:12346", "--support", "3:123",
+                          "--gravity", f"{g[0]:.12g},0,{g[1]:.12g}", "--force", f"2:{f[0]:.12g},0,{f[1]:.12g}",
+                          "--nodes", "2", "--json"], capture_output=True, text=True, check=True).stdout
+    u = json.loads(out)["nodes"][0]["displacement_m"]
+    return -(u[0] * s + u[2] * c)   # world z of the boom-axes displacement, down positive
+
+
+def fe_column(drop, fe_drop):
+    """The full FE model's head drop [mm] and the run's difference from it."""
+    return f" {fe_drop * 1e3:.1f} (run {100 * (drop / fe_drop - 1):+.1f} %) |"
+
+
+def report(csv_path, flexmb=None, bdf=None):
     with open(csv_path) as f:
         rows = list(csv.DictReader(f))
-    print("| luffing angle [deg] | radius [m] | rated load [kg] | head deflection down [mm] | rope tension [kN] | cylinder force [kN] | flange von Mises [MPa] | front pads [kN] | rear pads [kN] | status |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
+    fe = flexmb is not None and bdf is not None
+    print("| luffing angle [deg] | radius [m] | rated load [kg] | head deflection down [mm] | rope tension [kN] | cylinder force [kN] | flange von Mises [MPa] | front pads [kN] | rear pads [kN] | status |"
+          + (" full FE, linear: head deflection down [mm] |" if fe else ""))
+    print("|---|---|---|---|---|---|---|---|---|---|" + ("---|" if fe else ""))
     for r in rows:
         a = -float(r["boom_pitch"])
         head_z = rotate(math.radians(a), (BOOM_LENGTH, 0.0))[1]
@@ -154,16 +186,20 @@ def report(csv_path):
         vm = max(num("top_flange_von_mises_Pa", 1e-6), num("bottom_flange_von_mises_Pa", 1e-6))
         print(f"| {a:.0f} | {num('radius_m'):.2f} | {mass:.0f} | {(head_z - num('head_z_m')) * 1e3:.0f} | "
               f"{num('rope_tension_N', 1e-3):.1f} | {math.hypot(num('cylinder_x_N'), num('cylinder_z_N')) * 1e-3:.0f} | "
-              f"{vm:.0f} | {num('pad_fl_N', 1e-3):.0f} | {num('pad_rl_N', 1e-3):.0f} | {r.get('status')} |")
+              f"{vm:.0f} | {num('pad_fl_N', 1e-3):.0f} | {num('pad_rl_N', 1e-3):.0f} | {r.get('status')} |"
+              + (fe_column(head_z - num('head_z_m'), full_fe_drop(a, mass, flexmb, bdf)) if fe else ""))
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--out", default="load_chart_study.yaml")
     ap.add_argument("--report", default=None, help="study.csv of the study: print the chart")
+    ap.add_argument("--fe", default=None, help="with --report: the boom's FE model (boom.bdf): add the full FE "
+                    "model's linear static head deflection (flexmb fe static) to each row")
+    ap.add_argument("--flexmb", default="flexmb", help="the flexmb program (for --fe)")
     a = ap.parse_args()
     if a.report:
-        report(a.report)
+        report(a.report, a.flexmb if a.fe else None, a.fe)
     else:
         write_study(a.out)
 
