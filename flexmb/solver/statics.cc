@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "flexmb/common/error.h"
@@ -185,7 +186,11 @@ class StaticsSolver {
       fscale_ = std::max(fscale_, ws_.Q.lpNorm<Eigen::Infinity>());
       res_.residual = r_.head(nv_).lpNorm<Eigen::Infinity>();
       const double phi_norm = na_ > 0 ? r_.tail(na_).lpNorm<Eigen::Infinity>() : 0.0;
-      if (last_step <= set_.tolerance && res_.residual <= set_.residual_tol * fscale_ &&
+      // the residual cannot fall below the round-off of the internal forces,
+      // eps |K| |q| (a stiff ANCF boom under a small load: 2e-6 N of 2e-2 N)
+      const double floor = 100.0 * std::numeric_limits<double>::epsilon() * kscale_ *
+                           std::max(1.0, s_.q.lpNorm<Eigen::Infinity>());
+      if (last_step <= set_.tolerance && res_.residual <= std::max(set_.residual_tol * fscale_, floor) &&
           phi_norm <= m_.solver.assembly_tol)
         return StaticsNewton::kConverged;
       // a direction held by its inertia alone that does not settle is a
@@ -196,6 +201,7 @@ class StaticsSolver {
       ++used;
       StoreLambda();
       AssembleIterationMatrix(m_, s_, ws_, MatrixCoefficients{0.0, 0.0, 1.0, m_.solver.geometric_stiffness});
+      for (int k = 0; k < nv_; ++k) kscale_ = std::max(kscale_, std::abs(ws_.S.coeff(k, k)));
       if (!FactorizeScaled()) {
         singular_ = lu.singular_column();
         // directions without stiffness: held by the damping, if any (file comment)
@@ -281,6 +287,7 @@ class StaticsSolver {
   SparseLu lu_;
   StaticsResult res_;
   double fscale_ = 1.0;
+  double kscale_ = 0.0;  // largest diagonal entry of the tangent stiffness seen [N/m, N m/rad]
   int worst_ = -1;
   double worst_value_ = 0.0;
   int singular_ = -1;
