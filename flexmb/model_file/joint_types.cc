@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "flexmb/bodies/flexible_body.h"
 #include "flexmb/joints/cylindrical.h"
 #include "flexmb/joints/distance.h"
 #include "flexmb/joints/fixed.h"
@@ -84,6 +85,21 @@ void ParseCoordinateDriver(const YAML::Node& node, const std::string& name, Pars
   ctx.lines()["joint '" + name + "'"] = ParseContext::Line(node);
 }
 
+// A joint on a flexible body must sit on an interface node of its body file:
+// elsewhere the reduction has no static mode for the joint's load, so the
+// attachment would be stiffer than the FE model says (a different model)
+void CheckJointNodeIsInterface(const YAML::Node& node, const char* key, int marker, ParseContext& ctx) {
+  const Model& model = ctx.model();
+  const Marker& m = model.markers[marker];
+  const auto* flex = dynamic_cast<const FlexibleBody*>(model.bodies[m.body].get());
+  if (!flex || m.node < 0 || flex->IsInterfaceNode(m.node)) return;
+  ctx.Fail(node[key], "marker '" + m.name + "' sits on node " + std::to_string(flex->reduced().mesh.nodes[m.node].id) +
+                          " of flexible body '" + flex->name() +
+                          "', which is not an interface node of its body file: a joint there would be only as "
+                          "stiff as the kept modes make it, not as the FE model; reduce the part with the node in "
+                          "--interface");
+}
+
 }  // namespace
 
 void AddJointEntry(const YAML::Node& node, const std::string& name, ParseContext& ctx,
@@ -94,6 +110,8 @@ void AddJointEntry(const YAML::Node& node, const std::string& name, ParseContext
   ctx.CheckKeys(node, keys);
   const int mi = ctx.Marker(node, "i");
   const int mj = ctx.Marker(node, "j");
+  CheckJointNodeIsInterface(node, "i", mi, ctx);
+  CheckJointNodeIsInterface(node, "j", mj, ctx);
   const Model& model = ctx.model();
   if (model.markers[mi].body == model.markers[mj].body)
     ctx.Fail(node, "markers '" + model.markers[mi].name + "' and '" + model.markers[mj].name +

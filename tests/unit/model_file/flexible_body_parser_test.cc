@@ -1,6 +1,7 @@
 // Model-file bodies of type flexible: body file relative to the model file,
 // initial state, damping override, markers by node id (warning off the
-// interface, error naming file, line, body and node for a missing node).
+// interface, error naming file, line, body and node for a missing node; a
+// joint off the interface is an error at the joint).
 
 #include "flexmb/model_file/flexible_body_parser.h"
 
@@ -178,6 +179,22 @@ TEST(FlexibleBodyParser, MissingNodeNamesFileLineBodyAndNode) {
   EXPECT_NE(e.find("node 99 does not exist"), std::string::npos) << e;
   EXPECT_NE(e.find("'bar'"), std::string::npos) << e;
   EXPECT_NE(e.find("bar.z"), std::string::npos) << e;
+}
+
+// a joint may attach only at an interface node (nodes 1 and 7 of the bar);
+// a sensor or force elsewhere only warns (LoadsBodyAndMarkers)
+TEST(FlexibleBodyParser, JointOffTheInterfaceIsAnErrorAtTheJoint) {
+  const std::string markers = "      - {name: a, node: 1}\n      - {name: b, node: 4}\n";
+  const std::string joints = "ground:\n  markers: [{name: o, position: [1, 2, 3]}]\njoints:\n";
+  const std::string ok = ModelText("", markers) + joints + "  - {name: pin, type: spherical, i: ground.o, j: bar.a}\n";
+  EXPECT_EQ(ErrorOf(ok), "no error");
+  const std::string bad = ModelText("", markers) + joints + "  - {name: pin, type: spherical, i: ground.o, j: bar.b}\n";
+  const std::string e = ErrorOf(bad);
+  EXPECT_NE(e.find("model.yaml:14:"), std::string::npos) << e;
+  EXPECT_NE(e.find("joint 'pin'"), std::string::npos) << e;
+  EXPECT_NE(e.find("marker 'bar.b' sits on node 4 of flexible body 'bar', which is not an interface node"),
+            std::string::npos)
+      << e;
 }
 
 TEST(FlexibleBodyParser, BadInput) {
