@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -192,6 +193,35 @@ TEST(TirFile, TireFromTheFileGivesTheWrenchOfTheSameTireData) {
   from_file.Wrench(p, R, states[1].v, Vec3(0, states[1].omega, 0), &c);
   EXPECT_NE(c.fx, 0.0);
   EXPECT_NE(c.fy, 0.0);
+}
+
+// MF 5.2 pure-slip forces in the ISO sign convention of the file, written
+// from Pacejka, 3rd ed., sec. 4.3.2 with the file's coefficients as they
+// stand (PKY1 < 0), shifts, camber and scaling neutral, times the combined
+// slip weights G = cos(atan(RB*1 slip)) (RC*1 = 1)
+TEST(TirFile, ForcesFollowTheMagicFormulaInIsoSigns) {
+  const Tire tire("f", ReadTirFile(TirWrite("iso.tir", kTirText)).data, 1.0);
+  Mat3 R;
+  R << 1, 0, 0, 0, 0, 1, 0, -1, 0;
+  auto mf = [](double x, double b, double c, double d, double e) {
+    return d * std::sin(c * std::atan(b * x - e * (b * x - std::atan(b * x))));
+  };
+  const double fz0 = 4000.0;
+  for (const Vec3& v : {Vec3(10, 0.6, 0), Vec3(10, -0.3, 0), Vec3(6, 1.2, 0)}) {
+    for (double omega : {20.4, 21.0, 19.0}) {
+      TireContact c;
+      tire.Wrench(Vec3(0, 0, 0.485), R, v, Vec3(0, omega, 0), &c);
+      const double fz = c.fz, dfz = (fz - fz0) / fz0;
+      const double dx = (1.25 - 0.25 * dfz) * fz, kx = 20.0 * fz;
+      const double dy = (0.5 - 0.125 * dfz) * fz, ky = -12.0 * fz0 * std::sin(2.0 * std::atan(fz / (1.5 * fz0)));
+      const double fx = mf(c.kappa, kx / (1.6 * dx), 1.6, dx, 0.5) * std::cos(std::atan(10.0 * c.alpha));
+      const double fy = mf(c.alpha, ky / (1.3 * dy), 1.3, dy, -0.5) * std::cos(std::atan(8.0 * c.kappa));
+      EXPECT_NEAR(c.fx, fx, 1e-12 * fz) << v.transpose() << " " << omega;
+      EXPECT_NEAR(c.fy, fy, 1e-12 * fz) << v.transpose() << " " << omega;
+      // a side slip velocity to the left (ISO alpha > 0) gives a force to the right
+      EXPECT_EQ(c.alpha > 0, c.fy < 0);
+    }
+  }
 }
 
 TEST(TirFile, LoadTireFileReadsTirAndWarnsOfIgnoredKeys) {
