@@ -155,13 +155,17 @@ class TirReader {
         e.text = value;
         e.is_number = TirParseNumber(value, &e.number);
       }
-      if (const auto it = entries_.find(key); it != entries_.end())
+      // [UNITS] keys have their own names (MF 6.1 files have MASS in [UNITS] and [INERTIA])
+      auto& entries = section == "UNITS" ? units_ : entries_;
+      if (const auto it = entries.find(key); it != entries.end())
         TirFail(path_, line, key, "duplicate key (first on line " + std::to_string(it->second.line) + ")");
-      entries_.emplace(key, e);
-      order_.push_back(key);
-      if (section == "UNITS" && !TirUnitIsSi(key, e.text))
+      entries.emplace(key, e);
+      if (section != "UNITS") {
+        order_.push_back(key);
+      } else if (!TirUnitIsSi(key, e.text)) {
         TirFail(path_, line, key,
                 "unit '" + e.text + "' is not SI (meter, newton, radian, kg, second, pascal); convert the file");
+      }
     }
     if (const TirEntry* t = Find("FILE_TYPE"); t && TirUpper(t->text) != "TIR")
       TirFail(path_, t->line, "FILE_TYPE", "FILE_TYPE is '" + t->text + "', expected 'tir'");
@@ -199,7 +203,7 @@ class TirReader {
         continue;
       }
       const TirEntry& e = entries_.at(key);
-      if (used_.count(key) || e.section == "UNITS" || e.section == "MDI_HEADER" || !e.is_number) continue;
+      if (used_.count(key) || e.section == "MDI_HEADER" || !e.is_number) continue;
       if (e.number != TirNeutralValue(key, e.section)) out.push_back(key);
     }
     return out;
@@ -216,6 +220,7 @@ class TirReader {
 
   std::string path_;
   std::map<std::string, TirEntry> entries_;
+  std::map<std::string, TirEntry> units_;
   std::vector<std::string> order_;
   std::set<std::string> used_;
 };

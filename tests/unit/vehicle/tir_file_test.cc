@@ -40,6 +40,8 @@ TIME                     = 'second'
 [MODEL]
 PROPERTY_FILE_FORMAT     = 'PAC2002'
 TYRESIDE                 = 'LEFT'      $ a string: never listed
+[INERTIA]
+MASS                     = 0                   $ MASS of [UNITS] again: MF 6.1 files do so
 [DIMENSION]
 UNLOADED_RADIUS          = 0.5         $Free tyre radius
 WIDTH                    = 0.2
