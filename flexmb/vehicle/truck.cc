@@ -9,6 +9,7 @@
 #include "flexmb/bodies/rigid_body.h"
 #include "flexmb/forces/bushing.h"
 #include "flexmb/common/error.h"
+#include "flexmb/common/log.h"
 #include "flexmb/forces/joint_motor.h"
 #include "flexmb/forces/rotational_spring_damper.h"
 #include "flexmb/forces/spring_damper.h"
@@ -19,6 +20,7 @@
 #include "flexmb/joints/revolute.h"
 #include "flexmb/vehicle/command_signal.h"
 #include "flexmb/vehicle/contact_patch_joint.h"
+#include "flexmb/vehicle/tir_file.h"
 #include "flexmb/vehicle/wheel_brake.h"
 
 namespace flexmb::vehicle {
@@ -522,6 +524,16 @@ TireData ReadTireData(const YAML::Node& t, YamlContext& ctx) {
 }
 
 TireData LoadTireFile(const std::string& path) {
+  if (IsTirPath(path)) {
+    // a Magic Formula property file (tir_file.h); warn of what the simplified model leaves out
+    TirFile tir = ReadTirFile(path);
+    if (!tir.ignored.empty()) {
+      std::string list;
+      for (const std::string& k : tir.ignored) list += (list.empty() ? "" : ", ") + k;
+      LogWarning(path + ": ignored by the simplified tire model (not used, values not neutral): " + list);
+    }
+    return tir.data;
+  }
   YAML::Node root;
   try {
     root = YAML::LoadFile(path);

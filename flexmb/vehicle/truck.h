@@ -182,7 +182,9 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
 /// tire data come from the YAML files named there, relative to `dir`.
 TruckData ParseTruck(const YAML::Node& node, YamlContext& ctx, const std::string& dir);
 
-/// Reads a tire data file (keys as the TireData members).
+/// Reads a tire data file: YAML (keys as the TireData members) or, for a
+/// path ending in .tir, a Magic Formula property file (tir_file.h), whose
+/// ignored coefficients are listed in one warning (LogWarning).
 TireData LoadTireFile(const std::string& path);
 
 /// Reads tire data from the map `t` (the keys of TireData; unknown keys are
