@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "flexmb/common/error.h"
+#include "flexmb/common/text.h"
 
 namespace flexmb::vehicle {
 namespace {
@@ -227,9 +228,7 @@ class TirReader {
 
 }  // namespace
 
-bool IsTirPath(const std::string& path) {
-  return path.size() >= 4 && TirUpper(path.substr(path.size() - 4)) == ".TIR";
-}
+bool IsTirPath(const std::string& path) { return LowerExtension(path) == ".tir"; }
 
 TirFile ReadTirFile(const std::string& path) {
   TirReader r(path);

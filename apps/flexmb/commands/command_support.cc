@@ -1,9 +1,11 @@
 #include "apps/flexmb/commands/command_support.h"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
 #include "flexmb/fe_io/fe_model_file.h"
+#include "flexmb/fe_io/matrix_text.h"
 
 namespace flexmb::io::command {
 
@@ -40,6 +42,23 @@ void WriteMassText(std::ostream& out, double mass, const Eigen::Vector3d& center
   out << "inertia about the centre of mass (" << axes << " axes): [" << ShortVector(inertia.row(0).transpose())
       << ", " << ShortVector(inertia.row(1).transpose()) << ", " << ShortVector(inertia.row(2).transpose())
       << "] kg m^2\n";
+}
+
+std::vector<double> NumberList(const std::string& text, const std::string& option) {
+  std::vector<double> v;
+  size_t start = 0;
+  while (true) {
+    const size_t end = text.find(',', start);
+    const std::string_view token = std::string_view(text).substr(start, end == std::string::npos ? end : end - start);
+    double x = 0.0;
+    if (!io::ParseDoubleToken(token, x) || !std::isfinite(x))
+      throw InputError(option + " expects comma-separated numbers, got '" + text + "': '" + std::string(token) +
+                       "' is not a number");
+    v.push_back(x);
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return v;
 }
 
 std::vector<int> NodeListOption(const fe::Mesh& mesh, const std::string& list, const std::string& path) {

@@ -60,6 +60,10 @@ auto InFile(const std::string& path, F&& f) -> decltype(f()) {
   }
 }
 
+/// The comma-separated finite numbers of an option's value ("0.1,2e-4");
+/// InputError naming the option, the value and the item that is not a number.
+std::vector<double> NumberList(const std::string& text, const std::string& option);
+
 /// Node indices of a node-list option (comma-separated node ids or a node
 /// set name, io::ResolveNodeList); none if `list` is empty. Errors name the
 /// model file `path`.

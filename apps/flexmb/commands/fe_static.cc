@@ -1,7 +1,6 @@
 #include "apps/flexmb/commands/fe_static.h"
 
 #include <cmath>
-#include <cstdlib>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -22,20 +21,9 @@ namespace {
 
 using namespace command;
 
-// "a,b,c" -> numbers; an InputError naming the option and its value unless
-// there are `n_min` or `n_max` finite numbers
-std::vector<double> NumberList(const std::string& text, int n_min, int n_max, const std::string& option) {
-  std::vector<double> x;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    char* end = nullptr;
-    const double v = std::strtod(item.c_str(), &end);
-    while (end && (*end == ' ' || *end == '\t')) ++end;
-    if (item.empty() || !end || *end != '\0' || !std::isfinite(v))
-      throw InputError(option + " '" + text + "': '" + item + "' is not a number");
-    x.push_back(v);
-  }
+// the numbers of an option's value, `n_min` or `n_max` of them
+std::vector<double> CountedNumbers(const std::string& text, int n_min, int n_max, const std::string& option) {
+  const std::vector<double> x = NumberList(text, option);
   const int n = static_cast<int>(x.size());
   if (n != n_min && n != n_max)
     throw InputError(option + " '" + text + "': expected " + std::to_string(n_min) +
@@ -58,7 +46,7 @@ NodalLoad ParseForce(const fe::Mesh& mesh, const std::string& text, const std::s
   const std::vector<int> node = NodeListOption(mesh, text.substr(0, colon), path);
   if (node.size() != 1) throw InputError("--force '" + text + "': expected one node id before ':'");
   l.node = node.front();
-  const std::vector<double> v = NumberList(text.substr(colon + 1), 3, 6, "--force");
+  const std::vector<double> v = CountedNumbers(text.substr(colon + 1), 3, 6, "--force");
   for (size_t c = 0; c < v.size(); ++c) l.f[c] = v[c];
   return l;
 }
@@ -97,7 +85,7 @@ int FeStatic(const FeStaticOptions& opt, std::ostream& out) {
   for (const std::string& text : opt.supports) model.mesh.constraints.push_back(ParseSupport(mesh, text, path));
   Eigen::Vector3d g = Eigen::Vector3d::Zero();
   if (!opt.gravity.empty()) {
-    const std::vector<double> v = NumberList(opt.gravity, 3, 3, "--gravity");
+    const std::vector<double> v = CountedNumbers(opt.gravity, 3, 3, "--gravity");
     g = Eigen::Vector3d(v[0], v[1], v[2]);
   }
   std::vector<NodalLoad> loads;

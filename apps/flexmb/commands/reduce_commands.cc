@@ -34,24 +34,6 @@ namespace fs = std::filesystem;
 using reduction::Mat3;
 using reduction::Vec3;
 
-// comma-separated finite numbers of an option ("0.1,2e-4")
-std::vector<double> NumberList(const std::string& text, const std::string& option) {
-  std::vector<double> v;
-  size_t start = 0;
-  while (true) {
-    const size_t end = text.find(',', start);
-    const std::string_view token = std::string_view(text).substr(start, end == std::string::npos ? end : end - start);
-    double x = 0.0;
-    if (!ParseDoubleToken(token, x) || !std::isfinite(x)) {
-      throw InputError(option + " expects comma-separated numbers, got '" + text + "'");
-    }
-    v.push_back(x);
-    if (end == std::string::npos) break;
-    start = end + 1;
-  }
-  return v;
-}
-
 // mass, centre of mass and inertia about it from the inertia invariants:
 // M_vv = m I, M_vo = -skew(m c) + (rotational coupling, symmetric), M_oo =
 // inertia about the body-frame origin
