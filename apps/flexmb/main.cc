@@ -252,6 +252,9 @@ int main(int argc, char** argv) {
                      "computing them; the interface is the file's");
   reduce->add_flag("--geometric-stiffening", reduce_opt.geometric_stiffening,
                    "also store the centrifugal geometric stiffness (beams, shells, solids)");
+  reduce->add_flag("--deformation-stiffening", reduce_opt.deformation_stiffening,
+                   "also store the geometric stiffness of the body's own deformation (P-delta of the "
+                   "interface forces; beams, shells, solids)");
   reduce->add_flag("--solid-corner-stress", reduce_opt.solid_corner_stress,
                    "also store solid stress modes at the corner nodes (post: stresses at nodes; a larger body "
                    "file)");

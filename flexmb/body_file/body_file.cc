@@ -131,6 +131,15 @@ void CheckBody(const ReducedBody& b, const std::string& path) {
     shape(field, b.geometric_stiffness[c], n, n);
     finite_m(field, b.geometric_stiffness[c]);
   }
+  if (!b.deformation_stiffness.empty() && b.deformation_stiffness.size() != un) {
+    fail("deformation_stiffness", "has " + std::to_string(b.deformation_stiffness.size()) +
+                                      " matrices, expected one per mode (" + std::to_string(un) + ") or none");
+  }
+  for (size_t j = 0; j < b.deformation_stiffness.size(); ++j) {
+    const std::string field = "deformation_stiffness[" + std::to_string(j) + "]";
+    shape(field, b.deformation_stiffness[j], n, n);
+    finite_m(field, b.deformation_stiffness[j]);
+  }
 }
 
 // a non-negative count attribute of /counts
@@ -214,6 +223,17 @@ void WriteContents(hdf5::Writer& w, const ReducedBody& body) {
     }
     w.Group("/geometric_stiffness");
     w.Doubles("/geometric_stiffness/centrifugal", {6, hn, hn}, kg.data());
+  }
+  if (!body.deformation_stiffness.empty()) {
+    // optional: n x n x n, matrix j = G_j of mode j
+    std::vector<double> gd;
+    gd.reserve(static_cast<size_t>(n) * n * n);
+    for (const MatX& m : body.deformation_stiffness) {
+      const RowMat rm = m;
+      gd.insert(gd.end(), rm.data(), rm.data() + rm.size());
+    }
+    if (body.geometric_stiffness.empty()) w.Group("/geometric_stiffness");
+    w.Doubles("/geometric_stiffness/deformation", {hn, hn, hn}, gd.data());
   }
 
   w.Group("/stress");
@@ -326,6 +346,14 @@ ReducedBody ReadBody(const std::string& path) {
     for (int c = 0; c < 6; ++c) {
       body.geometric_stiffness[c] =
           Eigen::Map<const RowMat>(kg.data() + static_cast<size_t>(n) * n * c, n, n);
+    }
+  }
+  if (r.Exists("/geometric_stiffness/deformation")) {
+    const std::vector<double> gd = r.Doubles("/geometric_stiffness/deformation", {hn, hn, hn});
+    body.deformation_stiffness.resize(n);
+    for (int j = 0; j < n; ++j) {
+      body.deformation_stiffness[j] =
+          Eigen::Map<const RowMat>(gd.data() + static_cast<size_t>(n) * n * j, n, n);
     }
   }
 

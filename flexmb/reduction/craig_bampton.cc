@@ -13,6 +13,7 @@
 #include "flexmb/common/error.h"
 #include "flexmb/reduction/craig_bampton_basis.h"
 #include "flexmb/reduction/inertia_invariants.h"
+#include "flexmb/reduction/deformation_stiffness.h"
 #include "flexmb/reduction/geometric_stiffness.h"
 #include "flexmb/reduction/stress_modes.h"
 #include "flexmb/reduction/rigid_modes.h"
@@ -325,6 +326,7 @@ ReducedBody ReduceBasis(const fe::FeModel& model, const fe::AssembledModel& a, c
   const auto t_stress = Clock::now();
   if (!model.imported) body.stress = ComputeStressModes(mesh, body.modes, options.solid_corner_stress);
   t.stress_modes = Seconds(t_stress);
+  const auto t_stiffening = Clock::now();
   if (options.geometric_stiffening) {
     if (model.imported)
       throw InputError("geometric stiffening needs the elements (imported matrices have none)",
@@ -333,6 +335,13 @@ ReducedBody ReduceBasis(const fe::FeModel& model, const fe::AssembledModel& a, c
         mesh, body.modes, options.fixed_nodes.empty() ? options.interface_nodes : options.fixed_nodes,
         options.mass_form);
   }
+  if (options.deformation_stiffening) {
+    if (model.imported)
+      throw InputError("deformation stiffening needs the elements (imported matrices have none)",
+                       {mesh.source, 0, "reduction options"});
+    body.deformation_stiffness = ComputeDeformationStiffness(mesh, body.modes);
+  }
+  t.stiffening = Seconds(t_stiffening);
   body.frequencies_hz.resize(nk);
   for (int j = 0; j < nk; ++j) {
     body.frequencies_hz[j] = std::copysign(std::sqrt(std::abs(lambda[j])), lambda[j]) / (2.0 * M_PI);
@@ -378,11 +387,13 @@ ReducedBody ReduceBasis(const fe::FeModel& model, const fe::AssembledModel& a, c
            ? std::string("centrifugal (6 load cases), held at the ") +
                  (options.fixed_nodes.empty() ? "interface nodes" : "fixed nodes")
            : std::string("none")},
+      {"deformation_stiffening",
+       options.deformation_stiffening ? std::string("per mode (n matrices G_j = H^T K_G(H e_j) H)") : std::string("none")},
       {"stress_modes", model.imported ? "none (imported matrices have no element properties)" : "per element"},
       {"flexmb_version", FLEXMB_VERSION},
       {"date", UtcNow()},
   };
-  t.orthonormalize += Seconds(t0) - t.invariants - t.stress_modes;
+  t.orthonormalize += Seconds(t0) - t.invariants - t.stress_modes - t.stiffening;
   return body;
 }
 

@@ -42,6 +42,11 @@ struct ReductionOptions {
   /// them, at the interface nodes. Every element type (beams, shells,
   /// solids); not for imported matrices (InputError).
   bool geometric_stiffening = false;
+  /// Also compute the geometric stiffness of the body's own deformation
+  /// (reduction/deformation_stiffness.h: one n x n matrix per mode, the
+  /// P-delta of the forces at the interface nodes). Every element type;
+  /// not for imported matrices (InputError).
+  bool deformation_stiffening = false;
   /// Also store the stress modes of solids at their corner nodes
   /// (StressModes::solid_node: 6 rows per corner, up to 8 per element, so
   /// the body file grows by about that factor for the solid part).
@@ -53,7 +58,7 @@ struct ReductionOptions {
 /// their sum may exceed the time they took together.
 struct ReductionTimings {
   double assemble = 0, factorize = 0, static_modes = 0, normal_modes = 0, orthonormalize = 0,
-         invariants = 0, stress_modes = 0;
+         invariants = 0, stress_modes = 0, stiffening = 0;
 };
 
 /// Reduces `model` and fills a ReducedBody (modes, frequencies, reduced

@@ -164,6 +164,11 @@ struct ReducedBody {
   /// (wx*wx, wy*wy, wz*wz, wx*wy, wy*wz, wz*wx); the modal force is
   /// -(sum_c p_c(om) Kg_c) w for the products p_c of the angular velocity.
   std::vector<MatX> geometric_stiffness;
+  /// Geometric stiffness of the body's own deformation
+  /// (reduction/deformation_stiffness.h): empty (none) or n symmetric
+  /// n x n matrices G_j = H^T K_G(H e_j) H [units of `stiffness` per unit
+  /// modal coordinate]; the strain energy gains 1/2 sum_j w_j w^T G_j w.
+  std::vector<MatX> deformation_stiffness;
   std::string units = "SI (m, kg, s, N, Pa)";
   /// Provenance: source file, options, counts, flexmb version, date.
   std::vector<std::pair<std::string, std::string>> provenance;

@@ -39,13 +39,16 @@ def fe_export(model, hb_dir, fix="", interface="", modes=10):
 
 
 def reduce(model, output, interface="", modes=-1, cutoff_hz=0.0, keep=-1, fix="", rayleigh="",
-           damping_ratio="", modes_file="", geometric_stiffening=False, units="SI", solid_corner_stress=False):
+           damping_ratio="", modes_file="", geometric_stiffening=False, units="SI", solid_corner_stress=False,
+           deformation_stiffening=False):
     """`flexmb reduce --json`: Craig-Bampton reduction of a part into the body
     file `output` (.h5). interface: node ids "1,2,3" or a node set; modes:
     fixed-interface normal modes (or cutoff_hz [Hz]); keep: lowest flexible
     modes kept; rayleigh "ALPHA,BETA" or damping_ratio "Z[,Z2...]";
     solid_corner_stress: also the solids' stress modes at their corner nodes
-    (`flexmb reduce --solid-corner-stress`). Returns
+    (`flexmb reduce --solid-corner-stress`); geometric_stiffening and
+    deformation_stiffening: `--geometric-stiffening` (centrifugal) and
+    `--deformation-stiffening` (the body's own deformation). Returns
     the report (frequencies_hz, mass_kg, timings_s, ...)."""
     if isinstance(interface, (list, tuple)):
         interface = ",".join(str(i) for i in interface)
@@ -59,7 +62,7 @@ def reduce(model, output, interface="", modes=-1, cutoff_hz=0.0, keep=-1, fix=""
         damping_ratio = repr(float(damping_ratio))
     return json.loads(_core.reduce(os.fspath(model), os.fspath(output), interface, modes, cutoff_hz, keep, fix,
                                    rayleigh, damping_ratio, os.fspath(modes_file), geometric_stiffening, units,
-                                   solid_corner_stress))
+                                   solid_corner_stress, deformation_stiffening))
 
 
 def body_info(body):

@@ -102,6 +102,7 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
   ro.cutoff_hz = opt.cutoff_hz;
   ro.keep = opt.keep;
   ro.geometric_stiffening = opt.geometric_stiffening;
+  ro.deformation_stiffening = opt.deformation_stiffening;
   ro.solid_corner_stress = opt.solid_corner_stress;
   if (!opt.rayleigh.empty()) {
     const std::vector<double> ab = NumberList(opt.rayleigh, "--rayleigh");
@@ -183,7 +184,7 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
       << ", \"factorize\": " << Short(t.factorize) << ", \"static_modes\": " << Short(t.static_modes)
       << ", \"normal_modes\": " << Short(t.normal_modes) << ", \"orthonormalize\": " << Short(t.orthonormalize)
       << ", \"invariants\": " << Short(t.invariants) << ", \"stress_modes\": " << Short(t.stress_modes)
-      << ", \"write\": " << Short(Seconds(t2, t3)) << ", \"total\": " << Short(Seconds(t0, t3)) << "}\n}\n";
+      << ", \"stiffening\": " << Short(t.stiffening) << ", \"write\": " << Short(Seconds(t2, t3)) << ", \"total\": " << Short(Seconds(t0, t3)) << "}\n}\n";
   } else {
     s << ModelName(path) << ": " << mesh.nodes.size() << " nodes, " << mesh.elements.size() << " elements; "
       << body.interface_nodes.size() << " interface nodes";
@@ -197,7 +198,8 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
     s << "read " << Short(Seconds(t0, t1)) << " s, assemble " << Short(t.assemble) << " s, factorize "
       << Short(t.factorize) << " s, static modes " << Short(t.static_modes) << " s, normal modes "
       << Short(t.normal_modes) << " s, orthonormalize " << Short(t.orthonormalize) << " s, invariants "
-      << Short(t.invariants) << " s, stress modes " << Short(t.stress_modes) << " s, write "
+      << Short(t.invariants) << " s, stress modes " << Short(t.stress_modes) << " s, stiffening "
+      << Short(t.stiffening) << " s, write "
       << Short(Seconds(t2, t3)) << " s, total " << Short(Seconds(t0, t3)) << " s\n";
   }
   out << s.str() << std::flush;
@@ -238,6 +240,7 @@ int BodyInfo(const BodyInfoOptions& opt, std::ostream& out) {
     }
     s << "},\n";
     s << "  \"geometric_stiffening\": " << (body.geometric_stiffness.empty() ? "false" : "true") << ",\n";
+    s << "  \"deformation_stiffening\": " << (body.deformation_stiffness.empty() ? "false" : "true") << ",\n";
     s << "  \"provenance\": {";
     std::set<std::string> seen;
     bool first = true;
@@ -278,6 +281,8 @@ int BodyInfo(const BodyInfoOptions& opt, std::ostream& out) {
       << (body.geometric_stiffness.empty() ? "none"
                                            : "centrifugal, 6 load cases (wx*wx, wy*wy, wz*wz, wx*wy, wy*wz, wz*wx)")
       << "\n";
+    s << "deformation stiffness: "
+      << (body.deformation_stiffness.empty() ? "none" : std::to_string(nk) + " matrices (one per mode)") << "\n";
     s << "provenance:\n";
     for (const auto& [key, value] : body.provenance) s << "  " << key << ": " << value << "\n";
   }

@@ -39,6 +39,9 @@ struct ReduceOptions {
   /// Also compute the centrifugal geometric stiffness (beams, shells and
   /// solids; reduction/geometric_stiffness.h).
   bool geometric_stiffening = false;
+  /// Also compute the geometric stiffness of the body's own deformation
+  /// (reduction/deformation_stiffness.h).
+  bool deformation_stiffening = false;
   /// Also store solid stress modes at the corner nodes (the solid_node
   /// table: stresses at nodes for `flexmb post`; a larger body file).
   bool solid_corner_stress = false;
