@@ -66,6 +66,8 @@ FlexibleBody::FlexibleBody(std::string name, FlexibleBodyData data)
   theta_cols_.setZero(6 + n_, 3);
   nu_.setZero(6 + n_);
   stiffening_ = MakeGeometricStiffening(this->name(), *data_.reduced, data_.geometric_stiffening);
+  deformation_stiffening_ =
+      MakeDeformationStiffening(this->name(), *data_.reduced, data_.deformation_stiffening);
   const auto diagonal = [](const MatX& a) {
     MatX off = a;
     off.diagonal().setZero();
@@ -198,6 +200,7 @@ void FlexibleBody::AddForces(const double* q, const double* v, const Vec3& g_W, 
   dQdq.block(3, 6, N - 3, n) += Fw.bottomRows(N - 3);
   dQdq.bottomRightCorner(n, n) -= K;
   if (stiffening_) stiffening_->Add(om, q + 7, Q.tail(n), dQdv.block(6, 3, n, 3), dQdq.bottomRightCorner(n, n));
+  if (deformation_stiffening_) deformation_stiffening_->Add(q + 7, Q.tail(n), dQdq.bottomRightCorner(n, n));
 }
 
 bool FlexibleBody::AddForceVector(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q) const {
@@ -215,6 +218,7 @@ bool FlexibleBody::AddForceVector(const double* q, const double* v, const Vec3& 
     stiffening_->Matrix(om, G);
     Q.tail(n).noalias() -= G * Eigen::Map<const VecX>(q + 7, n);
   }
+  if (deformation_stiffening_) deformation_stiffening_->Add(q + 7, Q.tail(n));
   return true;
 }
 
@@ -329,7 +333,9 @@ void FlexibleBody::BodyFramePose(const double* q, Vec3& p_WB, Mat3& R_WB) const 
 
 double FlexibleBody::StrainEnergy(const double* q) const {
   const Eigen::Map<const VecX> w(q + 7, n_);
-  return 0.5 * w.dot(data_.reduced->stiffness * w);
+  double u = 0.5 * w.dot(data_.reduced->stiffness * w);
+  if (deformation_stiffening_) u += deformation_stiffening_->Energy(q + 7);
+  return u;
 }
 
 void FlexibleBody::CheckNode(int node) const {

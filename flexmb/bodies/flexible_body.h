@@ -29,13 +29,16 @@
 /// (flexible_inertia.h), elastic -K w and damping -D wd with the reduced
 /// stiffness and damping of the body (or a damping override), and, if the
 /// body file has it and FlexibleBodyData::geometric_stiffening allows, the
-/// centrifugal geometric stiffening -G(om) w (geometric_stiffening.h).
+/// centrifugal geometric stiffening -G(om) w (geometric_stiffening.h) and
+/// the stiffening by the body's own deformation, the force of the cubic
+/// strain energy 1/2 w^T G(w) w (deformation_stiffening.h).
 
 #include <memory>
 
 #include "flexmb/bodies/body.h"
 #include "flexmb/bodies/flexible_inertia.h"
 #include "flexmb/bodies/flexible_mass_tangent.h"
+#include "flexmb/bodies/deformation_stiffening.h"
 #include "flexmb/bodies/geometric_stiffening.h"
 #include "flexmb/reduction/reduced_body.h"
 
@@ -55,6 +58,10 @@ struct FlexibleBodyData {
   /// Geometric stiffening from the body file's centrifugal geometric
   /// stiffness (bodies/geometric_stiffening.h): by default used if present.
   GeometricStiffening geometric_stiffening = GeometricStiffening::kAuto;
+  /// Stiffening by the body's own deformation from the body file's
+  /// deformation stiffness (bodies/deformation_stiffening.h): by default
+  /// used if present.
+  GeometricStiffening deformation_stiffening = GeometricStiffening::kAuto;
 };
 
 /// Floating-frame flexible body; see the file comment.
@@ -89,11 +96,12 @@ class FlexibleBody final : public Body {
   /// -g . (m r + R (S0 + M_vw w)), S0 the first moment about the frame origin [J].
   double GravityPotential(const double* q, const Vec3& g_W) const override;
   Vec6 Momentum(const double* q, const double* v) const override;
-  /// The strain energy 1/2 w^T K w [J] (StrainEnergy).
+  /// The strain energy [J] (StrainEnergy).
   double ElasticEnergy(const double* q) const override { return StrainEnergy(q); }
   void BodyFramePose(const double* q, Vec3& p_WB, Mat3& R_WB) const override;
 
-  /// Elastic strain energy 1/2 w^T K w [J].
+  /// Elastic strain energy 1/2 w^T K w [J], plus the cubic energy
+  /// 1/2 w^T G(w) w of the deformation stiffening when the body has it.
   double StrainEnergy(const double* q) const;
   /// Elastic displacement of node `node` (index) relative to the floating
   /// frame, H_k^t w, body axes [m].
@@ -113,6 +121,8 @@ class FlexibleBody final : public Body {
   const MatX& damping() const { return damping_; }
   /// True if the body adds the geometric stiffening force.
   bool HasGeometricStiffening() const { return stiffening_ != nullptr; }
+  /// True if the body adds the deformation stiffening force.
+  bool HasDeformationStiffening() const { return deformation_stiffening_ != nullptr; }
 
  private:
   // Q_w -= K w + D wd
@@ -144,6 +154,7 @@ class FlexibleBody final : public Body {
   mutable FlexibleInertia::MatN3 theta_cols_;  // scratch: nv x 3
   mutable VecX nu_;                   // scratch: nv
   std::unique_ptr<GeometricStiffeningForce> stiffening_;  // null: no geometric stiffening
+  std::unique_ptr<DeformationStiffeningForce> deformation_stiffening_;  // null: none
 };
 
 }  // namespace flexmb

@@ -1,7 +1,8 @@
 // Reads a model-file body of type flexible (docs/model-file.md, "Flexible
 // bodies"): name, type, file, position, orientation, velocity,
 // angular_velocity, modal_coordinates, modal_velocities, damping
-// {rayleigh: [alpha, beta]} | {ratios: [..]}, geometric_stiffening
+// {rayleigh: [alpha, beta]} | {ratios: [..]}, geometric_stiffening and
+// deformation_stiffening
 // (true | false; default: used if the body file has it), markers [{name,
 // node, position, orientation}].
 #include "flexmb/model_file/flexible_body_parser.h"
@@ -67,7 +68,7 @@ MatX ParseDamping(const YAML::Node& d, const reduction::ReducedBody& body, const
 
 void ParseFlexibleBody(const YAML::Node& node, ParseContext& ctx, std::map<std::string, int>& lines) {
   ctx.CheckKeys(node, {"name", "type", "file", "position", "orientation", "velocity", "angular_velocity",
-                       "modal_coordinates", "modal_velocities", "damping", "geometric_stiffening", "markers"});
+                       "modal_coordinates", "modal_velocities", "damping", "geometric_stiffening", "deformation_stiffening", "markers"});
   const std::string name = ctx.String(node, "name");
   if (name.empty()) ctx.Fail(node["name"], "a body name must not be empty");
   if (name.find('.') != std::string::npos || name == "ground")
@@ -110,6 +111,13 @@ void ParseFlexibleBody(const YAML::Node& node, ParseContext& ctx, std::map<std::
       ctx.Fail(node["geometric_stiffening"], "body file " + Quoted(path.string()) +
                                                  " has no geometric stiffness: reduce it with --geometric-stiffening");
     d.geometric_stiffening = on ? GeometricStiffening::kOn : GeometricStiffening::kOff;
+  }
+  if (node["deformation_stiffening"]) {
+    const bool on = ctx.Bool(node, "deformation_stiffening", false);
+    if (on && reduced->deformation_stiffness.empty())
+      ctx.Fail(node["deformation_stiffening"], "body file " + Quoted(path.string()) +
+                                                   " has no deformation stiffness: reduce it with --deformation-stiffening");
+    d.deformation_stiffening = on ? GeometricStiffening::kOn : GeometricStiffening::kOff;
   }
   d.reduced = reduced;
 

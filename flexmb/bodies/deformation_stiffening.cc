@@ -1,0 +1,72 @@
+#include "flexmb/bodies/deformation_stiffening.h"
+
+#include <string>
+
+#include "flexmb/common/error.h"
+
+namespace flexmb {
+
+DeformationStiffeningForce::DeformationStiffeningForce(const std::vector<MatX>& g, int n) : g_(g), n_(n) {
+  if (static_cast<int>(g.size()) != n)
+    throw InputError("deformation stiffness has " + std::to_string(g.size()) + " matrices, expected " +
+                         std::to_string(n) + " (one per mode)",
+                     {"", 0, "deformation stiffening"});
+  for (const MatX& m : g) {
+    if (m.rows() != n || m.cols() != n)
+      throw InputError("deformation stiffness matrix is " + std::to_string(m.rows()) + " x " +
+                           std::to_string(m.cols()) + ", expected " + std::to_string(n) + " x " + std::to_string(n),
+                       {"", 0, "deformation stiffening"});
+  }
+  y_.setZero(n, n);
+  gw_.setZero(n, n);
+}
+
+void DeformationStiffeningForce::Add(const double* w_ptr, Eigen::Ref<VecX> Qw) const {
+  const Eigen::Map<const VecX> w(w_ptr, n_);
+  for (int m = 0; m < n_; ++m) y_.col(m).noalias() = g_[m] * w;
+  // (dU3/dw)_m = 1/2 w . (G_m w) + sum_j w_j (G_j w)_m; G_m symmetric
+  Qw.noalias() -= 0.5 * (y_.transpose() * w);
+  Qw.noalias() -= y_ * w;
+}
+
+void DeformationStiffeningForce::Add(const double* w_ptr, Eigen::Ref<VecX> Qw, Eigen::Ref<MatX> dQw_dw) const {
+  Add(w_ptr, Qw);  // fills y_
+  const Eigen::Map<const VecX> w(w_ptr, n_);
+  gw_.setZero();
+  for (int j = 0; j < n_; ++j) {
+    if (w(j) != 0.0) gw_.noalias() += w(j) * g_[j];
+  }
+  dQw_dw -= y_;
+  dQw_dw -= y_.transpose();
+  dQw_dw -= gw_;
+}
+
+double DeformationStiffeningForce::Energy(const double* w_ptr) const {
+  const Eigen::Map<const VecX> w(w_ptr, n_);
+  double u = 0.0;
+  for (int j = 0; j < n_; ++j) {
+    if (w(j) == 0.0) continue;
+    y_.col(j).noalias() = g_[j] * w;
+    u += w(j) * w.dot(y_.col(j));
+  }
+  return 0.5 * u;
+}
+
+std::unique_ptr<DeformationStiffeningForce> MakeDeformationStiffening(const std::string& body,
+                                                                      const reduction::ReducedBody& reduced,
+                                                                      GeometricStiffening mode) {
+  if (mode == GeometricStiffening::kOff) return nullptr;
+  if (reduced.deformation_stiffness.empty()) {
+    if (mode == GeometricStiffening::kAuto) return nullptr;
+    throw InputError("deformation stiffening asked for, but the body file has no deformation stiffness "
+                     "(reduce with --deformation-stiffening)",
+                     {"", 0, "flexible body '" + body + "'"});
+  }
+  try {
+    return std::make_unique<DeformationStiffeningForce>(reduced.deformation_stiffness, reduced.invariants.n);
+  } catch (const InputError& e) {
+    throw InputError(e.what(), {"", 0, "flexible body '" + body + "'"});
+  }
+}
+
+}  // namespace flexmb
