@@ -24,8 +24,7 @@ DeformationStiffeningForce::DeformationStiffeningForce(const std::vector<MatX>& 
 void DeformationStiffeningForce::Add(const double* w_ptr, Eigen::Ref<VecX> Qw) const {
   const Eigen::Map<const VecX> w(w_ptr, n_);
   for (int m = 0; m < n_; ++m) y_.col(m).noalias() = g_[m] * w;
-  // (dU3/dw)_m = 1/2 w . (G_m w) + sum_j w_j (G_j w)_m; G_m symmetric
-  Qw.noalias() -= 0.5 * (y_.transpose() * w);
+  // G(w) w = sum_j w_j (G_j w) = Y w
   Qw.noalias() -= y_ * w;
 }
 
@@ -36,20 +35,9 @@ void DeformationStiffeningForce::Add(const double* w_ptr, Eigen::Ref<VecX> Qw, E
   for (int j = 0; j < n_; ++j) {
     if (w(j) != 0.0) gw_.noalias() += w(j) * g_[j];
   }
-  dQw_dw -= y_;
-  dQw_dw -= y_.transpose();
+  // d(G(w) w)/dw_n = G(w) e_n + G_n w
   dQw_dw -= gw_;
-}
-
-double DeformationStiffeningForce::Energy(const double* w_ptr) const {
-  const Eigen::Map<const VecX> w(w_ptr, n_);
-  double u = 0.0;
-  for (int j = 0; j < n_; ++j) {
-    if (w(j) == 0.0) continue;
-    y_.col(j).noalias() = g_[j] * w;
-    u += w(j) * w.dot(y_.col(j));
-  }
-  return 0.5 * u;
+  dQw_dw -= y_;
 }
 
 std::unique_ptr<DeformationStiffeningForce> MakeDeformationStiffening(const std::string& body,

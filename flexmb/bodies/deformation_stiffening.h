@@ -1,16 +1,20 @@
 #pragma once
 /// \file deformation_stiffening.h
 /// Run-time stiffening of a floating-frame flexible body by the stress of
-/// its own deformation (reduction/deformation_stiffness.h): the cubic strain
-/// energy
+/// its own deformation (reduction/deformation_stiffness.h): the geometric
+/// stiffness of the current linear stress acting on the deformation,
 ///
-///   U3(w) = 1/2 w^T G(w) w,   G(w) = sum_j w_j G_j,
+///   Q_w = -G(w) w,   G(w) = sum_j w_j G_j,
 ///
-/// its modal force Q_w = -dU3/dw, (dU3/dw)_m = 1/2 w^T G_m w + (G(w) w)_m,
-/// and its tangent dQ_w/dw = -(Y + Y^T + G(w)) with Y = [G_1 w, ..., G_n w].
-/// The force is conservative (U3 belongs to the body's elastic energy) and
-/// depends on w only. Cost: n^3 for the force (Y), another n^3 for the
-/// tangent (G(w)); no allocation per call.
+/// and its tangent dQ_w/dw = -(G(w) + Y) with Y = [G_1 w, ..., G_n w] (not
+/// symmetric). This is the second-order (P-delta) analysis of an FE
+/// package in the modal basis: the stress is that of the linear strain,
+/// and the force has no back-coupling onto the axial coordinates, which
+/// without the quartic energy term would make a cantilever softer under a
+/// pure transverse load (docs/design.md, "Stiffening by the body's own
+/// deformation"). It is not the gradient of a potential; depends on w
+/// only. Cost: n^3 for the force (Y), another n^3 for the tangent (G(w));
+/// no allocation per call.
 
 #include <memory>
 #include <string>
@@ -29,14 +33,11 @@ class DeformationStiffeningForce {
   /// object); throws InputError if there are not n of size n x n.
   DeformationStiffeningForce(const std::vector<MatX>& g, int n);
 
-  /// Adds -dU3/dw to Qw (n) at the modal coordinates `w` (n).
+  /// Adds -G(w) w to Qw (n) at the modal coordinates `w` (n).
   void Add(const double* w, Eigen::Ref<VecX> Qw) const;
 
-  /// Adds -dU3/dw to Qw (n) and -d^2U3/dw^2 to dQw_dw (n x n).
+  /// Adds -G(w) w to Qw (n) and its derivative -(G(w) + Y) to dQw_dw (n x n).
   void Add(const double* w, Eigen::Ref<VecX> Qw, Eigen::Ref<MatX> dQw_dw) const;
-
-  /// The cubic strain energy U3(w) [J].
-  double Energy(const double* w) const;
 
  private:
   const std::vector<MatX>& g_;

@@ -333,9 +333,7 @@ void FlexibleBody::BodyFramePose(const double* q, Vec3& p_WB, Mat3& R_WB) const 
 
 double FlexibleBody::StrainEnergy(const double* q) const {
   const Eigen::Map<const VecX> w(q + 7, n_);
-  double u = 0.5 * w.dot(data_.reduced->stiffness * w);
-  if (deformation_stiffening_) u += deformation_stiffening_->Energy(q + 7);
-  return u;
+  return 0.5 * w.dot(data_.reduced->stiffness * w);
 }
 
 void FlexibleBody::CheckNode(int node) const {

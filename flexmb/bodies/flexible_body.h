@@ -30,8 +30,8 @@
 /// stiffness and damping of the body (or a damping override), and, if the
 /// body file has it and FlexibleBodyData::geometric_stiffening allows, the
 /// centrifugal geometric stiffening -G(om) w (geometric_stiffening.h) and
-/// the stiffening by the body's own deformation, the force of the cubic
-/// strain energy 1/2 w^T G(w) w (deformation_stiffening.h).
+/// the stiffening by the body's own deformation -G(w) w
+/// (deformation_stiffening.h).
 
 #include <memory>
 
@@ -96,12 +96,12 @@ class FlexibleBody final : public Body {
   /// -g . (m r + R (S0 + M_vw w)), S0 the first moment about the frame origin [J].
   double GravityPotential(const double* q, const Vec3& g_W) const override;
   Vec6 Momentum(const double* q, const double* v) const override;
-  /// The strain energy [J] (StrainEnergy).
+  /// The strain energy 1/2 w^T K w [J] (StrainEnergy).
   double ElasticEnergy(const double* q) const override { return StrainEnergy(q); }
   void BodyFramePose(const double* q, Vec3& p_WB, Mat3& R_WB) const override;
 
-  /// Elastic strain energy 1/2 w^T K w [J], plus the cubic energy
-  /// 1/2 w^T G(w) w of the deformation stiffening when the body has it.
+  /// Elastic strain energy 1/2 w^T K w [J] (the stiffening forces have no
+  /// potential; docs/design.md, "Geometric stiffening").
   double StrainEnergy(const double* q) const;
   /// Elastic displacement of node `node` (index) relative to the floating
   /// frame, H_k^t w, body axes [m].

@@ -123,6 +123,11 @@ void ParseFlexibleBody(const YAML::Node& node, ParseContext& ctx, std::map<std::
 
   auto body = ctx.Guard(node, [&] { return std::make_unique<FlexibleBody>(name, d); });
   const FlexibleBody* flex = body.get();
+  if (flex->HasGeometricStiffening() && flex->HasDeformationStiffening())
+    LogWarning(ctx.file() + ":" + std::to_string(ParseContext::Line(node)) + ": " + entity +
+               ": both the centrifugal and the deformation stiffening are on; where the modes represent the "
+               "centrifugal stretch both count the same stress (set one of geometric_stiffening, "
+               "deformation_stiffening to false; docs/model-file.md)");
   const int b = ctx.Guard(node["name"], [&] { return ctx.model().AddBody(std::move(body)); });
   lines[entity] = ParseContext::Line(node);
 
