@@ -216,6 +216,8 @@ int main(int argc, char** argv) {
   fe_static->add_option("--force", static_opt.forces, "nodal load ID:fx,fy,fz[,mx,my,mz] [N, N m] (repeatable)");
   fe_static->add_option("--nodes", static_opt.nodes, "nodes to report (ids or a set; default: the loaded nodes)");
   fe_static->add_flag("--json", static_opt.json, "print one JSON object instead of the table");
+  fe_static->add_flag("--second-order", static_opt.second_order,
+                      "second-order (P-delta) solution (K + K_G) u = f, K_G from the linear solution's stresses");
 
   flexmb::io::FeInfoOptions info_opt;
   CLI::App* info = fe->add_subcommand("info", "counts, mass, centre of mass and bounding box of an FE model");

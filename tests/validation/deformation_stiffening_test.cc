@@ -116,7 +116,7 @@ TEST(DeformationStiffening, BeamColumnTipDeflection) {
     std::printf("beam-column, %d modes, P = %+.1f P_Euler: tip %.6e m, Timoshenko %.6e m (x%.4f of linear), "
                 "error %+.2e\n",
                 reduced->invariants.n, f, got, ref, ref / linear, got / ref - 1.0);
-    EXPECT_NEAR(got / ref, 1.0, 2e-3) << "P = " << f << " P_Euler";
+    EXPECT_NEAR(got / ref, 1.0, 5e-4) << "P = " << f << " P_Euler";
   }
 }
 

@@ -6,7 +6,11 @@
 // q L^4 / (8 E I1) with q = rho A g, the load resultant and the strain energy
 // 1/2 u.f against the closed forms; a simply supported beam by --support
 // (P L^3 / (48 E I)); errors for bad options, a missing node,
-// a moment on a node without rotations and a free (singular) model.
+// a moment on a node without rotations and a free (singular) model. With
+// --second-order: the beam column under an axial force of 0.3 and 0.9 of the
+// Euler load and a small lateral tip load against Timoshenko and Gere's
+// closed form (compression and tension), and beyond the Euler load a clear
+// error.
 // References: docs/validation.md, "FE: command line".
 
 #include <gtest/gtest.h>
@@ -101,6 +105,30 @@ TEST_F(FeStaticCli, SupportsOfSingleComponentsMakeASimplySupportedBeam) {
   const CliResult bad = RunCli(dir_, "fe static cantilever.bdf --support 1:1237 --force 3:0,0,-800");
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("--support '1:1237': components are the digits 1 to 6"), std::string::npos) << bad.err;
+}
+
+TEST_F(FeStaticCli, SecondOrderBeamColumnAgainstTimoshenko) {
+  // plane 1 (x-z, I1): Euler load of the cantilever pi^2 E I1 / (4 L^2)
+  const double EI = kE * kI1, euler = M_PI * M_PI * EI / (4.0 * kL * kL), H = -50.0;
+  const double linear = H * kL * kL * kL / (3.0 * EI);
+  for (double f : {-0.9, -0.3, 0.3, 0.9}) {
+    const double P = f * euler, k = std::sqrt(std::abs(P) / EI), kl = k * kL;
+    const double ref = f < 0 ? H * (std::tan(kl) - kl) / (k * k * k * EI) : H * (kl - std::tanh(kl)) / (k * k * k * EI);
+    char load[80];
+    std::snprintf(load, sizeof load, "--force 5:%.17g,0,%.17g --second-order", P, H);
+    Json j = Static(load);
+    EXPECT_TRUE(j["second_order"].boolean);
+    const double uz = j["nodes"].array[0]["displacement_m"].Numbers()[2];
+    std::printf("fe static --second-order, P = %+.1f P_Euler: tip %.6e m, Timoshenko %.6e m (x%.3f of linear)\n", f,
+                uz, ref, ref / linear);
+    EXPECT_NEAR(uz / ref, 1.0, 2e-3) << f;
+  }
+  // at the Euler load K + K_G is singular or indefinite
+  char load[80];
+  std::snprintf(load, sizeof load, "--force 5:%.17g,0,-50 --second-order", -1.2 * euler);
+  const CliResult r = RunCli(dir_, std::string("fe static cantilever.bdf --fix 1 ") + load);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("beyond the first buckling load"), std::string::npos) << r.err;
 }
 
 TEST_F(FeStaticCli, TableAndErrors) {

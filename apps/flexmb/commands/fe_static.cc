@@ -15,6 +15,7 @@
 #include "flexmb/fe/modal.h"
 #include "flexmb/fe/sparse_cholesky.h"
 #include "flexmb/fe_io/fe_model_file.h"
+#include "flexmb/reduction/geometric_stiffness.h"
 
 namespace flexmb::io {
 namespace {
@@ -130,8 +131,21 @@ int FeStatic(const FeStaticOptions& opt, std::ostream& out) {
     chol.Factorize(a.K, "fe static: K with the supports (a mechanism if singular)",
                    [&](int dof) { return fe::DescribeFreeDof(a.dofs, dof); });
   });
-  const Eigen::VectorXd u_free = chol.Solve(a.T.transpose() * f);
-  const Eigen::VectorXd u = a.T * u_free;
+  Eigen::VectorXd u = a.T * chol.Solve(a.T.transpose() * f);
+  if (opt.second_order) {
+    // (K + K_G(sigma(u_linear))) u = f: the element stresses of the linear
+    // solution stiffen or soften the structure (P-delta)
+    const fe::SparseMat kg = InFile(path, [&] { return reduction::AssembleGeometricStiffness(model.mesh, a.dofs, u); });
+    const fe::SparseMat kt = a.K + fe::SparseMat(a.T.transpose() * kg * a.T);
+    fe::SparseCholesky chol2;
+    InFile(path, [&] {
+      chol2.Factorize(kt,
+                      "fe static --second-order: K + K_G is not positive definite (the load is at or beyond "
+                      "the first buckling load of the supported part)",
+                      [&](int dof) { return fe::DescribeFreeDof(a.dofs, dof); });
+    });
+    u = a.T * chol2.Solve(a.T.transpose() * f);
+  }
   const Clock::time_point t2 = Clock::now();
 
   auto component = [&](int node, int c) {
@@ -150,6 +164,7 @@ int FeStatic(const FeStaticOptions& opt, std::ostream& out) {
   if (opt.json) {
     s << "{\n  \"file\": " << JsonString(path) << ",\n  \"dofs\": " << a.dofs.n_free
       << ",\n  \"fixed_nodes\": " << fixed.size() << ",\n  \"supports\": " << opt.supports.size()
+      << ",\n  \"second_order\": " << (opt.second_order ? "true" : "false")
       << ",\n  \"gravity_m_s2\": " << JsonVector(g)
       << ",\n  \"load_resultant_n\": " << JsonVector(resultant) << ",\n  \"nodes\": [";
     for (size_t r = 0; r < report.size(); ++r) {
@@ -166,6 +181,7 @@ int FeStatic(const FeStaticOptions& opt, std::ostream& out) {
     s << ModelName(path) << ": " << a.dofs.n_free << " free DOF";
     if (!fixed.empty()) s << " (" << fixed.size() << " nodes fixed by --fix)";
     if (!opt.supports.empty()) s << " (" << opt.supports.size() << " supports)";
+    if (opt.second_order) s << "; second order (K + K_G of the linear solution's stresses)";
     s << "; load resultant " << ShortVector(resultant) << " N\n";
     s << "node        ux [m]        uy [m]        uz [m]      rx [rad]      ry [rad]      rz [rad]\n";
     for (const int k : report) {

@@ -28,6 +28,12 @@ struct FeStaticOptions {
   /// empty: the loaded nodes.
   std::string nodes;
   bool json = false;  ///< one JSON object instead of the table
+  /// Second-order (P-delta) solution: (K + K_G) u = f with the element
+  /// geometric stiffness K_G of the linear solution's stresses
+  /// (reduction/geometric_stiffness.h), as an FE package's linear buckling
+  /// prestress or differential stiffness; the reference for a reduced body
+  /// with `--deformation-stiffening`.
+  bool second_order = false;
 };
 
 /// "fe static": assembles K (the model's constraints, rigid links, the
@@ -35,8 +41,9 @@ struct FeStaticOptions {
 /// K u = T^T f by sparse Cholesky and reports, for each reported node, the
 /// displacement [m] and rotation [rad] in basic axes, the largest
 /// translation over all nodes and where, the applied load's resultant [N]
-/// and the strain energy 1/2 u.f [J]. JSON keys: file, dofs, fixed_nodes,
-/// gravity_m_s2, load_resultant_n, nodes [{id, displacement_m,
+/// and the strain energy 1/2 u.f [J]. With `second_order` the solution is
+/// that of (K + K_G) u = f (FeStaticOptions::second_order). JSON keys: file,
+/// dofs, fixed_nodes, second_order, gravity_m_s2, load_resultant_n, nodes [{id, displacement_m,
 /// rotation_rad}], max_displacement_m, max_displacement_node,
 /// strain_energy_j, timings_s. Throws InputError for a bad option (naming
 /// it), a support component outside 1-6, a load on a missing node or on a component the node does not have
