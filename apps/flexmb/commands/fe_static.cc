@@ -140,8 +140,8 @@ int FeStatic(const FeStaticOptions& opt, std::ostream& out) {
     fe::SparseCholesky chol2;
     InFile(path, [&] {
       chol2.Factorize(kt,
-                      "fe static --second-order: K + K_G is not positive definite (the load is at or beyond "
-                      "the first buckling load of the supported part)",
+                      "fe static --second-order: K + K_G of the supported part under this load (the linear K "
+                      "was positive definite, so the load is at or beyond the part's first buckling load)",
                       [&](int dof) { return fe::DescribeFreeDof(a.dofs, dof); });
     });
     u = a.T * chol2.Solve(a.T.transpose() * f);
