@@ -121,7 +121,7 @@ TEST_F(FeStaticCli, SecondOrderBeamColumnAgainstTimoshenko) {
     const double uz = j["nodes"].array[0]["displacement_m"].Numbers()[1];
     std::printf("fe static --second-order, P = %+.1f P_Euler: tip %.6e m, Timoshenko %.6e m (x%.3f of linear)\n", f,
                 uz, ref, ref / linear);
-    EXPECT_NEAR(uz / ref, 1.0, 2e-3) << f;
+    EXPECT_NEAR(uz / ref, 1.0, 1e-3) << f;
   }
   // at the Euler load K + K_G is singular or indefinite
   char load[80];
