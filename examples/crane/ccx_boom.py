@@ -386,15 +386,19 @@ def main():
         res["head_equation_nlgeom_over_linear_normal"] = normal("nlgeom_head_equation") / normal("linear_head_equation")
         res["linear_over_rigid_bodies_normal"] = normal("linear") / normal("linear_rigid_bodies")
     if a.flexmb:
-        p = subprocess.run([a.flexmb, "fe", "static", a.bdf, "--support", "1:12346", "--support", "3:123",
-                            "--gravity", ",".join(f"{v:.12g}" for v in g_B),
-                            "--force", "2:" + ",".join(f"{v:.12g}" for v in f_B), "--nodes", "2", "--json"],
-                           capture_output=True, text=True)
-        if p.returncode != 0:
-            sys.exit(f"ccx_boom.py: flexmb fe static failed ({p.returncode}):\n{p.stderr}")
-        node = json.loads(p.stdout)["nodes"][0]
-        res["flexmb_fe_static"] = {"head_displacement_B_m": node["displacement_m"], "head_rotation_B_rad": node["rotation_rad"]}
-        res["ccx_linear_over_flexmb_normal"] = normal("linear") / node["displacement_m"][2]
+        # flexmb's full FE model, linear and second order (K + K_G)
+        for key, extra in (("flexmb_fe_static", []), ("flexmb_fe_static_second_order", ["--second-order"])):
+            p = subprocess.run([a.flexmb, "fe", "static", a.bdf, "--support", "1:12346", "--support", "3:123",
+                                "--gravity", ",".join(f"{v:.12g}" for v in g_B),
+                                "--force", "2:" + ",".join(f"{v:.12g}" for v in f_B), "--nodes", "2", "--json",
+                                *extra], capture_output=True, text=True)
+            if p.returncode != 0:
+                sys.exit(f"ccx_boom.py: flexmb fe static {' '.join(extra)} failed ({p.returncode}):\n{p.stderr}")
+            node = json.loads(p.stdout)["nodes"][0]
+            res[key] = {"head_displacement_B_m": node["displacement_m"], "head_rotation_B_rad": node["rotation_rad"]}
+        res["ccx_linear_over_flexmb_normal"] = normal("linear") / res["flexmb_fe_static"]["head_displacement_B_m"][2]
+        res["flexmb_second_order_over_linear_normal"] = (res["flexmb_fe_static_second_order"]["head_displacement_B_m"][2]
+                                                         / res["flexmb_fe_static"]["head_displacement_B_m"][2])
     print(json.dumps(res, indent=1))
 
 
