@@ -30,7 +30,9 @@ For each method it writes and runs, in --out:
      and the run time.
 The reference is the full FE model itself: `flexmb fe modes boom.bdf --fix
 1,3`, `flexmb fe static boom.bdf --fix 1,3` and, on the pins, `--support
-1:12346 --support 3:123`, with the same loads. The
+1:12346 --support 3:123`, with the same loads, linear and with
+`--second-order` (K + K_G of the linear stresses: the P-delta reference of
+the rated load; CalculiX's NLGEOM agrees, ccx_boom.py). The
 results go to methods.json, methods.md (the table of the README) and
 methods.png (the slewing histories).
 """
@@ -344,16 +346,24 @@ def main():
     text, _ = run(fx + ["fe", "static", a.bdf, "--fix", "1,3", "--gravity", ",".join(f"{v:.12g}" for v in g_B),
                         "--force", "2:" + ",".join(f"{v:.12g}" for v in f_B), "--nodes", "2", "--json"], a.out)
     full_static = json.loads(text)["nodes"][0]["displacement_m"]
-    text, _ = run(fx + ["fe", "static", a.bdf, "--support", "1:12346", "--support", "3:123",
-                        "--gravity", ",".join(f"{v:.12g}" for v in g_B),
-                        "--force", "2:" + ",".join(f"{v:.12g}" for v in f_B), "--nodes", "2", "--json"], a.out)
+    text, _ = run(fx + ["fe", "static", a.bdf, "--fix", "1,3", "--gravity", ",".join(f"{v:.12g}" for v in g_B),
+                        "--force", "2:" + ",".join(f"{v:.12g}" for v in f_B), "--nodes", "2", "--json",
+                        "--second-order"], a.out)
+    full_static_2nd = json.loads(text)["nodes"][0]["displacement_m"]
+    pins = ["--support", "1:12346", "--support", "3:123", "--gravity", ",".join(f"{v:.12g}" for v in g_B),
+            "--force", "2:" + ",".join(f"{v:.12g}" for v in f_B), "--nodes", "2", "--json"]
+    text, _ = run(fx + ["fe", "static", a.bdf] + pins, a.out)
     full_pinned = json.loads(text)["nodes"][0]["displacement_m"]
+    text, _ = run(fx + ["fe", "static", a.bdf] + pins + ["--second-order"], a.out)
+    full_pinned_2nd = json.loads(text)["nodes"][0]["displacement_m"]
     info = json.loads(run(fx + ["body", "info", a.body, "--json"], a.out)[0])
     omega1 = 2.0 * math.pi * full["frequencies_hz"][0]
     beta = 2.0 * DAMPING_RATIO / omega1   # stiffness-proportional damping: 1 % at the first clamped mode
 
     result = {"full_fe": {"frequencies_hz": full["frequencies_hz"][:a.modes], "head_deflection_B_m": full_static,
                           "pinned_deflection_B_m": full_pinned,
+                          "head_deflection_second_order_B_m": full_static_2nd,
+                          "pinned_deflection_second_order_B_m": full_pinned_2nd,
                           "dof": full["dofs"]},
               "rope_force_W_N": rope_force_W(), "damping_time_s": beta, "methods": {}}
     for m in METHODS:
@@ -402,6 +412,12 @@ def drop(d):
     return -d[2]
 
 
+def second(full, key, lin):
+    """The full FE model's second-order (P-delta) deflection, as table text."""
+    d = drop(full[key + "_second_order_B_m"])
+    return f"{d * 1e3:.1f} (second order, {100 * (d / lin - 1):+.1f} %)"
+
+
 def table(res, a):
     full = res["full_fe"]
     fref = full["frequencies_hz"]
@@ -412,7 +428,8 @@ def table(res, a):
              "slew: largest head sag under the rigid boom's [mm] | run time [s] |",
              "|---|---|---|---|---|---|---|---|",
              f"| full FE model (`fe modes`, `fe static`) | {full['dof']} | " + ", ".join(f"{f:.2f}" for f in fref) +
-             f" | {cref * 1e3:.1f} (linear) | {pref * 1e3:.1f} (linear) | | | |"]
+             f" | {cref * 1e3:.1f} (linear); {second(full, 'head_deflection', cref)} | "
+             f"{pref * 1e3:.1f} (linear); {second(full, 'pinned_deflection', pref)} | | | |"]
     labels = {"rigid": "rigid body", "rfe": f"rigid finite elements ({a.segments} springs)",
               "cb": "floating frame, Craig-Bampton (boom.h5)", "ancf": f"ANCF 3D beam ({a.elements} elements)"}
 
