@@ -42,7 +42,7 @@ def main():
         t_sim = 24.0
         rows = []
         for label, modes in (("Guyan (static modes only)", "0"), ("20 normal modes", "20"), ("40 normal modes", "40")):
-            out = run([a.cli, "reduce", os.path.join(work, "boom.bdf"), "--interface", "1,2,3", "--modes", modes,
+            out = run([a.cli, "reduce", os.path.join(work, "boom.bdf"), "--interface", "1,2,3", "--modes", modes, "--deformation-stiffening",
                        "-o", os.path.join(work, "boom.h5")]).stdout
             n = int(re.search(r"(\d+) flexible modes kept", out).group(1))
             best = float("inf")
