@@ -34,6 +34,17 @@ def test_fe_modes_free_strip(strip):
     assert flexmb.fe_info(strip)["nodes"] == 63
 
 
+def test_reduce_stiffening_options(strip, tmp_path):
+    rep = flexmb.reduce(strip, tmp_path / "s.h5", interface=ENDS, modes=4, deformation_stiffening=True,
+                        geometric_stiffening=True)
+    assert rep["timings_s"]["stiffening"] >= 0.0
+    info = flexmb.body_info(tmp_path / "s.h5")
+    assert info["deformation_stiffening"] and info["geometric_stiffening"]
+    flexmb.reduce(strip, tmp_path / "p.h5", interface=ENDS, modes=4)
+    info = flexmb.body_info(tmp_path / "p.h5")
+    assert not info["deformation_stiffening"] and not info["geometric_stiffening"]
+
+
 def test_reduce_and_body_file_match_cli(cli, strip, tmp_path):
     rep = flexmb.reduce(strip, tmp_path / "py.h5", interface=ENDS, modes=10)
     proc = subprocess.run([cli, "reduce", strip, "--interface", ENDS, "--modes", "10", "-o",
