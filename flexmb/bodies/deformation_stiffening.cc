@@ -43,18 +43,8 @@ void DeformationStiffeningForce::Add(const double* w_ptr, Eigen::Ref<VecX> Qw, E
 std::unique_ptr<DeformationStiffeningForce> MakeDeformationStiffening(const std::string& body,
                                                                       const reduction::ReducedBody& reduced,
                                                                       GeometricStiffening mode) {
-  if (mode == GeometricStiffening::kOff) return nullptr;
-  if (reduced.deformation_stiffness.empty()) {
-    if (mode == GeometricStiffening::kAuto) return nullptr;
-    throw InputError("deformation stiffening asked for, but the body file has no deformation stiffness "
-                     "(reduce with --deformation-stiffening)",
-                     {"", 0, "flexible body '" + body + "'"});
-  }
-  try {
-    return std::make_unique<DeformationStiffeningForce>(reduced.deformation_stiffness, reduced.invariants.n);
-  } catch (const InputError& e) {
-    throw InputError(e.what(), {"", 0, "flexible body '" + body + "'"});
-  }
+  return MakeStiffening<DeformationStiffeningForce>(body, reduced.deformation_stiffness, reduced.invariants.n, mode,
+                                                    "deformation stiffness", "--deformation-stiffening");
 }
 
 }  // namespace flexmb

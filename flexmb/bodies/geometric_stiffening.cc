@@ -47,18 +47,8 @@ void GeometricStiffeningForce::Add(const Vec3& om, const double* w, Eigen::Ref<V
 std::unique_ptr<GeometricStiffeningForce> MakeGeometricStiffening(const std::string& body,
                                                                   const reduction::ReducedBody& reduced,
                                                                   GeometricStiffening mode) {
-  if (mode == GeometricStiffening::kOff) return nullptr;
-  if (reduced.geometric_stiffness.empty()) {
-    if (mode == GeometricStiffening::kAuto) return nullptr;
-    throw InputError("geometric stiffening asked for, but the body file has no geometric stiffness "
-                     "(reduce with --geometric-stiffening)",
-                     {"", 0, "flexible body '" + body + "'"});
-  }
-  try {
-    return std::make_unique<GeometricStiffeningForce>(reduced.geometric_stiffness, reduced.invariants.n);
-  } catch (const InputError& e) {
-    throw InputError(e.what(), {"", 0, "flexible body '" + body + "'"});
-  }
+  return MakeStiffening<GeometricStiffeningForce>(body, reduced.geometric_stiffness, reduced.invariants.n, mode,
+                                                  "geometric stiffness", "--geometric-stiffening");
 }
 
 }  // namespace flexmb

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "flexmb/bodies/body.h"
+#include "flexmb/common/error.h"
 #include "flexmb/reduction/reduced_body.h"
 
 namespace flexmb {
@@ -51,6 +52,27 @@ class GeometricStiffeningForce {
   int n_;
   mutable Eigen::Matrix<double, Eigen::Dynamic, 6> y_;  // scratch: Kg_c w
 };
+
+/// A body's stiffening force of type Force, made from its body-file matrices
+/// `matrices` (Force(matrices, n)) under `mode`: null for kOff, or for kAuto
+/// when `matrices` is empty; for kOn without them an InputError naming the
+/// body, `what` (e.g. "geometric stiffness") and the reduce `option` that
+/// makes them. Errors of Force's constructor are rethrown naming the body.
+template <class Force>
+std::unique_ptr<Force> MakeStiffening(const std::string& body, const std::vector<MatX>& matrices, int n,
+                                      GeometricStiffening mode, const std::string& what, const std::string& option) {
+  const ErrorContext ctx{"", 0, "flexible body '" + body + "'"};
+  if (mode == GeometricStiffening::kOff) return nullptr;
+  if (matrices.empty()) {
+    if (mode == GeometricStiffening::kAuto) return nullptr;
+    throw InputError(what + " asked for, but the body file has none (reduce with " + option + ")", ctx);
+  }
+  try {
+    return std::make_unique<Force>(matrices, n);
+  } catch (const InputError& e) {
+    throw InputError(e.what(), ctx);
+  }
+}
 
 /// The stiffening force of the flexible body `body` (named in errors) for
 /// `mode`: null for kOff or for kAuto without geometric stiffness in

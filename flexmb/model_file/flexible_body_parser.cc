@@ -105,20 +105,19 @@ void ParseFlexibleBody(const YAML::Node& node, ParseContext& ctx, std::map<std::
   d.w0 = NumberList(node, "modal_coordinates", n, ctx);
   d.wd0 = NumberList(node, "modal_velocities", n, ctx);
   if (node["damping"]) d.damping = ParseDamping(node["damping"], *reduced, ctx);
-  if (node["geometric_stiffening"]) {
-    const bool on = ctx.Bool(node, "geometric_stiffening", false);
-    if (on && reduced->geometric_stiffness.empty())
-      ctx.Fail(node["geometric_stiffening"], "body file " + Quoted(path.string()) +
-                                                 " has no geometric stiffness: reduce it with --geometric-stiffening");
-    d.geometric_stiffening = on ? GeometricStiffening::kOn : GeometricStiffening::kOff;
-  }
-  if (node["deformation_stiffening"]) {
-    const bool on = ctx.Bool(node, "deformation_stiffening", false);
-    if (on && reduced->deformation_stiffness.empty())
-      ctx.Fail(node["deformation_stiffening"], "body file " + Quoted(path.string()) +
-                                                   " has no deformation stiffness: reduce it with --deformation-stiffening");
-    d.deformation_stiffening = on ? GeometricStiffening::kOn : GeometricStiffening::kOff;
-  }
+  // a stiffening switch: absent = auto; true needs the body file's matrices
+  auto stiffening = [&](const char* key, bool present, const char* what, const char* option,
+                        GeometricStiffening& out) {
+    if (!node[key]) return;
+    const bool on = ctx.Bool(node, key, false);
+    if (on && !present)
+      ctx.Fail(node[key], "body file " + Quoted(path.string()) + " has no " + what + ": reduce it with " + option);
+    out = on ? GeometricStiffening::kOn : GeometricStiffening::kOff;
+  };
+  stiffening("geometric_stiffening", !reduced->geometric_stiffness.empty(), "geometric stiffness",
+             "--geometric-stiffening", d.geometric_stiffening);
+  stiffening("deformation_stiffening", !reduced->deformation_stiffness.empty(), "deformation stiffness",
+             "--deformation-stiffening", d.deformation_stiffening);
   d.reduced = reduced;
 
   auto body = ctx.Guard(node, [&] { return std::make_unique<FlexibleBody>(name, d); });
