@@ -48,7 +48,7 @@ def main():
                  ("20 normal modes, stiffened", "20", ["--deformation-stiffening"]),
                  ("40 normal modes, stiffened", "40", ["--deformation-stiffening"]))
         for label, modes, extra in cases:
-            out = run([a.cli, "reduce", os.path.join(work, "boom.bdf"), "--interface", "1,2,3", "--modes", modes,
+            out = run([a.cli, "reduce", os.path.join(work, "boom.bdf"), "--fix", "1", "--interface", "1,2,3", "--modes", modes,
                        *extra, "-o", os.path.join(work, "boom.h5")]).stdout
             n = int(re.search(r"(\d+) flexible modes kept", out).group(1))
             best = float("inf")

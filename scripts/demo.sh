@@ -34,7 +34,7 @@ crane="$out/crane"
 mkdir -p "$crane"
 cp examples/crane/crane.yaml "$crane/"
 /usr/bin/python3 examples/crane/make_boom.py --out "$crane/boom.bdf"
-"$bin" reduce "$crane/boom.bdf" --interface 1,2,3 --modes 20 --deformation-stiffening -o "$crane/boom.h5" > "$crane/reduce.txt"
+"$bin" reduce "$crane/boom.bdf" --fix 1 --interface 1,2,3 --modes 20 --deformation-stiffening -o "$crane/boom.h5" > "$crane/reduce.txt"
 sed -n 1,3p "$crane/reduce.txt"
 "$bin" run "$crane/crane.yaml" --out "$crane/run" --animation
 /usr/bin/python3 examples/crane/plot.py "$crane/run" --out "$crane/plots" > "$crane/plots.txt"

@@ -99,7 +99,7 @@ class CraneExample : public flexmb::testing::CliTest {
     const std::string gen = "cd '" + dir_.string() + "' && /usr/bin/python3 '" + src +
                             "/examples/crane/make_boom.py' --out boom.bdf > make_boom.txt";
     ASSERT_EQ(std::system(gen.c_str()), 0);
-    const auto r = RunCli(dir_, "reduce boom.bdf --interface 1,2,3 --modes 20 --deformation-stiffening -o boom.h5");
+    const auto r = RunCli(dir_, "reduce boom.bdf --fix 1 --interface 1,2,3 --modes 20 --deformation-stiffening -o boom.h5");
     ASSERT_EQ(r.code, 0) << r.err;
   }
 };
