@@ -141,8 +141,9 @@ def write_study(path):
     print("wrote", path, "with", len(rows), "runs")
 
 
-def full_fe_drop(angle_deg, mass, flexmb, bdf):
-    """The head's drop [m] in the full FE model's linear static solution
+def full_fe_drop(angle_deg, mass, flexmb, bdf, second_order=False):
+    """The head's drop [m] in the full FE model's linear (or, with
+    `second_order`, second-order: `--second-order`) static solution
     (`flexmb fe static`), supported as the crane holds the boom: the foot
     pin (node 1: translations and the rotations about x and z) and the
     cylinder eye on a rigid cylinder (node 3: translations); loaded by its
@@ -159,14 +160,16 @@ def full_fe_drop(angle_deg, mass, flexmb, bdf):
     g = to_boom(0.0, -9.81)
     out = subprocess.run([flexmb, "fe", "static", bdf, "--support", "1:12346", "--support", "3:123",
                           "--gravity", f"{g[0]:.12g},0,{g[1]:.12g}", "--force", f"2:{f[0]:.12g},0,{f[1]:.12g}",
-                          "--nodes", "2", "--json"], capture_output=True, text=True, check=True).stdout
+                          "--nodes", "2", "--json"] + (["--second-order"] if second_order else []),
+                         capture_output=True, text=True, check=True).stdout
     u = json.loads(out)["nodes"][0]["displacement_m"]
     return -(u[0] * s + u[2] * c)   # world z of the boom-axes displacement, down positive
 
 
-def fe_column(drop, fe_drop):
-    """The full FE model's head drop [mm] and the run's difference from it."""
-    return f" {fe_drop * 1e3:.1f} (run {100 * (drop / fe_drop - 1):+.1f} %) |"
+def fe_column(drop, fe_drop, fe_drop_2nd):
+    """The full FE model's linear and second-order head drops [mm] and the
+    run's difference from the second-order one."""
+    return f" {fe_drop * 1e3:.1f}; {fe_drop_2nd * 1e3:.1f} (run {100 * (drop / fe_drop_2nd - 1):+.1f} %) |"
 
 
 def report(csv_path, flexmb=None, bdf=None):
@@ -174,7 +177,7 @@ def report(csv_path, flexmb=None, bdf=None):
         rows = list(csv.DictReader(f))
     fe = flexmb is not None and bdf is not None
     print("| luffing angle [deg] | radius [m] | rated load [kg] | head deflection down [mm] | rope tension [kN] | cylinder force [kN] | flange von Mises [MPa] | front pads [kN] | rear pads [kN] | status |"
-          + (" full FE, linear: head deflection down [mm] |" if fe else ""))
+          + (" full FE, linear; second order: head deflection down [mm] |" if fe else ""))
     print("|---|---|---|---|---|---|---|---|---|---|" + ("---|" if fe else ""))
     for r in rows:
         a = -float(r["boom_pitch"])
@@ -187,7 +190,8 @@ def report(csv_path, flexmb=None, bdf=None):
         print(f"| {a:.0f} | {num('radius_m'):.2f} | {mass:.0f} | {(head_z - num('head_z_m')) * 1e3:.0f} | "
               f"{num('rope_tension_N', 1e-3):.1f} | {math.hypot(num('cylinder_x_N'), num('cylinder_z_N')) * 1e-3:.0f} | "
               f"{vm:.0f} | {num('pad_fl_N', 1e-3):.0f} | {num('pad_rl_N', 1e-3):.0f} | {r.get('status')} |"
-              + (fe_column(head_z - num('head_z_m'), full_fe_drop(a, mass, flexmb, bdf)) if fe else ""))
+              + (fe_column(head_z - num('head_z_m'), full_fe_drop(a, mass, flexmb, bdf),
+                           full_fe_drop(a, mass, flexmb, bdf, True)) if fe else ""))
 
 
 def main():
@@ -195,7 +199,7 @@ def main():
     ap.add_argument("--out", default="load_chart_study.yaml")
     ap.add_argument("--report", default=None, help="study.csv of the study: print the chart")
     ap.add_argument("--fe", default=None, help="with --report: the boom's FE model (boom.bdf): add the full FE "
-                    "model's linear static head deflection (flexmb fe static) to each row")
+                    "model's linear and second-order static head deflections (flexmb fe static) to each row")
     ap.add_argument("--flexmb", default="flexmb", help="the flexmb program (for --fe)")
     a = ap.parse_args()
     if a.report:
