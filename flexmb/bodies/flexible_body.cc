@@ -99,7 +99,12 @@ Eigen::Block<const MatX, 3, Eigen::Dynamic> FlexibleBody::Hr(int node) const {
 
 bool FlexibleBody::IsInterfaceNode(int node) const {
   const auto& in = data_.reduced->interface_nodes;
-  return std::find(in.begin(), in.end(), node) != in.end();
+  if (std::find(in.begin(), in.end(), node) != in.end()) return true;
+  // a node clamped in the reduction (--fix) has no modal motion: it is the
+  // floating frame itself
+  const MatX& H = data_.reduced->modes;
+  return node >= 0 && 6 * static_cast<Eigen::Index>(node) + 6 <= H.rows() &&
+         H.middleRows(6 * static_cast<Eigen::Index>(node), 6).isZero(0.0);
 }
 
 void FlexibleBody::MarkerGeometry(const Marker& m, const double* w, Vec3& s, Vec3& theta) const {

@@ -115,7 +115,9 @@ class FlexibleBody final : public Body {
   int modes() const { return n_; }
   /// The reduced body.
   const reduction::ReducedBody& reduced() const { return *data_.reduced; }
-  /// True if `node` (index) is an interface node of the reduction.
+  /// True if `node` (index) moves exactly as the FE model's node: an
+  /// interface node of the reduction, or a node clamped in it (`reduce
+  /// --fix`: no modal motion, the node is fixed to the floating frame).
   bool IsInterfaceNode(int node) const;
   /// Reduced damping matrix in use (n x n).
   const MatX& damping() const { return damping_; }

@@ -197,6 +197,27 @@ TEST(FlexibleBodyParser, JointOffTheInterfaceIsAnErrorAtTheJoint) {
       << e;
 }
 
+TEST(FlexibleBodyParser, JointOnANodeFixedInTheReductionIsExact) {
+  // the bar reduced with node 1 clamped (--fix 1, the frame attached to it)
+  // and node 7 as interface: node 1 is the floating frame, a joint there is
+  // as exact as on an interface node
+  reduction::ReductionOptions o;
+  o.fixed_nodes = {0};
+  o.interface_nodes = {6};
+  o.normal_modes = 3;
+  io::WriteBody(reduction::ReduceCraigBampton(testing::BentBar(3), o), (Shared().dir / "fixed.h5").string());
+  std::string text = ModelText("", "      - {name: a, node: 1}\n      - {name: b, node: 4}\n") +
+                     "ground:\n  markers: [{name: o, position: [1, 2, 3]}]\njoints:\n"
+                     "  - {name: pin, type: spherical, i: ground.o, j: bar.a}\n";
+  text.replace(text.find("bar.h5"), 6, "fixed.h5");
+  EXPECT_EQ(ErrorOf(text), "no error");
+  auto m = LoadModelFile(Shared().Write(text));
+  const auto& bar = dynamic_cast<const FlexibleBody&>(*m->bodies[1]);
+  EXPECT_TRUE(bar.IsInterfaceNode(0));   // fixed: no modal motion
+  EXPECT_TRUE(bar.IsInterfaceNode(6));   // interface
+  EXPECT_FALSE(bar.IsInterfaceNode(3));  // interior
+}
+
 TEST(FlexibleBodyParser, BadInput) {
   std::string yaml = ModelText("", "      - {name: a, node: 1}\n");
   const std::string missing = ErrorOf(yaml.replace(yaml.find("bar.h5"), 6, "nope.h5"));
