@@ -9,12 +9,20 @@ with the same 20 normal modes.
 
   /usr/bin/python3 bench/crane_cycle.py [--cli build/release/bin/flexmb] [--reps 3]
 
-Per basis: the reduction's flexible modes, the best wall time of `flexmb
-run` over the repetitions (process start and model load included), the
-real-time factor (simulated / wall time) and the ratio to the Guyan run.
+Each basis is run twice: with the example's modified Newton (`solver:
+jacobian_reuse: true`, the iteration matrix kept while the iterations
+contract fast) and with full Newton (a fresh matrix every iteration, the
+baseline), alternately. Per basis and solver: the reduction's flexible
+modes, the best wall time of `flexmb run` over the repetitions (process
+start and model load included), the real-time factor (simulated / wall
+time), the ratio to the Guyan run of the same solver, and for the kept
+matrix the largest difference of any results.csv column from the full
+Newton run, relative to that column's range (columns whose range is below
+1e-6 are noise and skipped).
 """
 
 import argparse
+import csv
 import os
 import re
 import shutil
@@ -38,7 +46,13 @@ def main():
     a = ap.parse_args()
     work = tempfile.mkdtemp(prefix="crane_bench_")
     try:
-        shutil.copy(os.path.join(ROOT, "examples", "crane", "crane.yaml"), work)
+        text = open(os.path.join(ROOT, "examples", "crane", "crane.yaml")).read()
+        if text.count("jacobian_reuse: true") != 1:
+            sys.exit("crane.yaml no longer sets 'jacobian_reuse: true' once: update this bench")
+        models = {"kept": text, "full": text.replace("jacobian_reuse: true", "jacobian_reuse: false")}
+        for name, body in models.items():
+            with open(os.path.join(work, name + ".yaml"), "w") as f:
+                f.write(body)
         run([sys.executable, os.path.join(ROOT, "examples", "crane", "make_boom.py"), "--out",
              os.path.join(work, "boom.bdf")])
         t_sim = 24.0
@@ -51,20 +65,40 @@ def main():
             out = run([a.cli, "reduce", os.path.join(work, "boom.bdf"), "--fix", "1", "--interface", "1,2,3", "--modes", modes,
                        *extra, "-o", os.path.join(work, "boom.h5")]).stdout
             n = int(re.search(r"(\d+) flexible modes kept", out).group(1))
-            best = float("inf")
+            best = {"full": float("inf"), "kept": float("inf")}
             for _ in range(a.reps):
-                t0 = time.perf_counter()
-                run([a.cli, "run", os.path.join(work, "crane.yaml"), "--out", os.path.join(work, "run"), "--quiet"])
-                best = min(best, time.perf_counter() - t0)
-            rows.append((label, n, best))
-        base = rows[0][2]
+                for name in ("full", "kept"):
+                    t0 = time.perf_counter()
+                    run([a.cli, "run", os.path.join(work, name + ".yaml"), "--out", os.path.join(work, name), "--quiet"])
+                    best[name] = min(best[name], time.perf_counter() - t0)
+            diff = largest_difference(os.path.join(work, "full", "results.csv"),
+                                      os.path.join(work, "kept", "results.csv"))
+            rows.append((label, n, best["full"], best["kept"], diff))
         print(f"load average {os.getloadavg()[0]:.2f}")
-        print(f"{'boom basis':28s} {'modes':>5s} {'wall [s]':>9s} {'x real time':>11s} {'/ Guyan':>8s}")
-        for label, n, wall in rows:
-            print(f"{label:28s} {n:5d} {wall:9.3f} {t_sim / wall:11.1f} {wall / base:8.2f}")
+        print(f"{'boom basis':28s} {'modes':>5s} {'full [s]':>9s} {'x real':>7s} {'/ Guyan':>8s}"
+              f" {'kept [s]':>9s} {'x real':>7s} {'/ Guyan':>8s} {'full/kept':>9s} {'max diff':>9s}")
+        for label, n, full, kept, diff in rows:
+            print(f"{label:28s} {n:5d} {full:9.3f} {t_sim / full:7.1f} {full / rows[0][2]:8.2f}"
+                  f" {kept:9.3f} {t_sim / kept:7.1f} {kept / rows[0][3]:8.2f} {full / kept:9.2f} {diff:9.1e}")
     finally:
         shutil.rmtree(work, ignore_errors=True)
 
+
+def largest_difference(path_a, path_b):
+    """Largest |a - b| over the rows of two results.csv files, per column
+    relative to the column's range in a, over the columns (range > 1e-6)."""
+    with open(path_a) as fa, open(path_b) as fb:
+        a, b = list(csv.DictReader(fa)), list(csv.DictReader(fb))
+    if len(a) != len(b):
+        sys.exit(f"{path_a} has {len(a)} rows, {path_b} {len(b)}")
+    worst = 0.0
+    for key in a[0]:
+        col_a = [float(r[key]) for r in a]
+        col_b = [float(r[key]) for r in b]
+        span = max(col_a) - min(col_a)
+        if span > 1e-6:
+            worst = max(worst, max(abs(x - y) for x, y in zip(col_a, col_b)) / span)
+    return worst
 
 if __name__ == "__main__":
     main()
