@@ -246,6 +246,9 @@ int main(int argc, char** argv) {
   reduce->add_option("--cutoff", reduce_opt.cutoff_hz, "all fixed-interface modes below this frequency [Hz]");
   reduce->add_option("--keep", reduce_opt.keep, "keep the lowest N flexible modes (default: all)");
   reduce->add_option("--fix", reduce_opt.fix, "nodes to clamp: comma-separated node ids or a node set name");
+  reduce->add_option("--frame", reduce_opt.frame,
+                     "floating frame: mean (mean axes; also tisserand, buckens) or node:ID (attached to node ID, "
+                     "clamped in the reduction); default mean, or the --fix nodes");
   auto* rayleigh = reduce->add_option("--rayleigh", reduce_opt.rayleigh, "Rayleigh damping ALPHA,BETA");
   reduce->add_option("--damping-ratio", reduce_opt.damping_ratio, "modal damping ratio Z (or Z1,Z2,...)")
       ->excludes(rayleigh);

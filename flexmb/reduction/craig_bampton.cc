@@ -365,11 +365,23 @@ ReducedBody ReduceBasis(const fe::FeModel& model, const fe::AssembledModel& a, c
 
   std::string ratios;
   for (double v : options.damping_ratios) ratios += (ratios.empty() ? "" : ",") + Num(v);
+  // the floating frame the modes leave (docs/design.md, "The floating frame")
+  std::string frame;
+  if (!options.fixed_nodes.empty()) {
+    frame = "attached to the clamped nodes ";
+    frame += NodeIds(mesh, options.fixed_nodes);
+  } else if (split.count == 6) {
+    frame = "mean axes (flexible modes mass-orthogonal to the rigid-body modes: Tisserand's and Buckens' "
+            "conditions to first order in the deformation)";
+  } else {
+    frame = "held by the model's own constraints (" + std::to_string(split.count) + " rigid-body modes removed)";
+  }
   body.provenance = {
       {"source", mesh.source},
       {"method", "Craig-Bampton (fixed-interface), orthonormalized, rigid-body modes removed"},
       {"interface_nodes", NodeIds(mesh, options.interface_nodes)},
       {"fixed_nodes", NodeIds(mesh, options.fixed_nodes)},
+      {"frame", frame},
       {"normal_modes_requested", std::to_string(options.normal_modes)},
       {"cutoff_hz", Num(options.cutoff_hz)},
       {"keep", std::to_string(options.keep)},

@@ -273,6 +273,37 @@ TEST_F(ReduceCli, BodyFromExportedModesEqualsDirectReduction) {
   EXPECT_FALSE(fs::exists(dir_ / "b.h5"));
 }
 
+TEST_F(ReduceCli, FrameOption) {
+  // the mean axes by default, by name, and by the names of the frames that
+  // coincide with them to first order (Tisserand, Buckens): the same body
+  const Json plain = Reduce("--interface " + kEnds + " --modes 4");
+  EXPECT_NE(plain["frame"].string.find("mean axes"), std::string::npos) << plain["frame"].string;
+  const std::vector<double> f = plain["frequencies_hz"].Numbers();
+  for (const char* name : {"mean", "tisserand", "buckens"}) {
+    const Json j = Reduce("--interface " + kEnds + " --modes 4 --frame " + name, std::string(name) + ".h5");
+    EXPECT_EQ(j["frame"].string, plain["frame"].string) << name;
+    EXPECT_EQ(j["frequencies_hz"].Numbers(), f) << name;
+  }
+  // attached to node 1: as --fix 1 with node 1 in the interface
+  const Json fixed = Reduce("--interface " + kEnds + " --fix 1 --modes 4", "fix1.h5");
+  const Json node = Reduce("--interface " + kEnds + " --frame node:1 --modes 4", "node1.h5");
+  EXPECT_EQ(node["frame"].string, "attached to the clamped nodes 1");
+  EXPECT_EQ(node["frame"].string, fixed["frame"].string);
+  EXPECT_EQ(node["rigid_modes_removed"].number, 0.0);
+  EXPECT_EQ(node["interface_nodes"].number, fixed["interface_nodes"].number);
+  EXPECT_EQ(node["frequencies_hz"].Numbers(), fixed["frequencies_hz"].Numbers());
+  // the frame is in the body file's provenance
+  const CliResult info = RunCli(dir_, "body info node1.h5");
+  EXPECT_NE(info.out.find("frame: attached to the clamped nodes 1"), std::string::npos) << info.out;
+
+  const std::string strip = "reduce '" + kStrip + "' --interface " + kEnds + " --modes 2 -o b.h5 ";
+  ExpectFailure(strip + "--frame mean --fix 1", 2, {"--frame mean asks for the mean axes", "--fix"});
+  ExpectFailure(strip + "--frame nodes:1", 2, {"--frame expects mean, tisserand, buckens or node:ID", "nodes:1"});
+  ExpectFailure(strip + "--frame node:", 2, {"--frame expects"});
+  ExpectFailure(strip + "--frame node:999", 2, {"cli_strip.bdf", "999"});
+  ExpectFailure(strip + "--frame node:SET1_1", 2, {"--frame node:ID takes one node", "3 nodes"});
+}
+
 TEST_F(ReduceCli, BadInput) {
   const std::string strip = "reduce '" + kStrip + "' ";
   ExpectFailure("reduce nope.bdf --interface 1 --modes 2 -o b.h5 --json", 2, {"error: nope.bdf"});

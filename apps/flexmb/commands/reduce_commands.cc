@@ -71,15 +71,42 @@ void JsonModesAndMass(std::ostream& s, const reduction::ReducedBody& body, const
   s << "  \"inertia_kg_m2\": " << (mp.mass > 0.0 ? JsonMatrix(mp.inertia) : "null") << ",\n";
 }
 
+// The node index of `--frame node:ID`, or -1 for the mean axes ("mean",
+// "tisserand", "buckens" or not given). Throws InputError for another
+// value, a missing node, or the mean axes asked for together with --fix
+// (clamped nodes leave no rigid-body modes: the frame is attached to them).
+int FrameNode(const std::string& frame, bool has_fix, const fe::Mesh& mesh, const std::string& path) {
+  if (frame.empty()) return -1;
+  if (frame == "mean" || frame == "tisserand" || frame == "buckens") {
+    if (has_fix) {
+      throw InputError("--frame " + frame + " asks for the mean axes, but --fix clamps nodes: the body keeps no "
+                       "rigid-body modes and its frame is attached to the fixed nodes. Leave out --fix, or give "
+                       "--frame node:ID");
+    }
+    return -1;
+  }
+  const std::string prefix = "node:";
+  if (frame.rfind(prefix, 0) != 0 || frame.size() == prefix.size()) {
+    throw InputError("--frame expects mean, tisserand, buckens or node:ID, got '" + frame + "'");
+  }
+  const std::vector<int> node = command::NodeListOption(mesh, frame.substr(prefix.size()), path);
+  if (node.size() != 1) {
+    throw InputError("--frame node:ID takes one node, got '" + frame + "' (" + std::to_string(node.size()) +
+                     " nodes)");
+  }
+  return node[0];
+}
+
 }  // namespace
 
 int Reduce(const ReduceOptions& opt, std::ostream& out) {
   const std::string& path = opt.model_path;
   if (opt.output.empty()) throw InputError("-o needs the body file to write (BODY.h5)");
   const bool imported_modes = !opt.modes_file.empty();
-  if (imported_modes && (!opt.interface.empty() || opt.modes >= 0 || opt.cutoff_hz != 0.0 || !opt.fix.empty())) {
-    throw InputError("--modes-file brings the interface and the modes: do not give --interface, --modes, --cutoff "
-                     "or --fix with it");
+  if (imported_modes && (!opt.interface.empty() || opt.modes >= 0 || opt.cutoff_hz != 0.0 || !opt.fix.empty() ||
+                         !opt.frame.empty())) {
+    throw InputError("--modes-file brings the interface and the modes: do not give --interface, --modes, --cutoff, "
+                     "--fix or --frame with it");
   }
   if (!imported_modes && opt.interface.empty()) throw InputError("--interface needs node ids or a node set name");
   if (!imported_modes && opt.modes < 0 && !(opt.cutoff_hz > 0.0)) {
@@ -144,6 +171,12 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
   } else {
     ro.interface_nodes = command::NodeListOption(model.mesh, opt.interface, path);
     ro.fixed_nodes = command::NodeListOption(model.mesh, opt.fix, path);
+    const int frame_node = FrameNode(opt.frame, !opt.fix.empty(), model.mesh, path);
+    for (std::vector<int>* list : {&ro.fixed_nodes, &ro.interface_nodes}) {
+      if (frame_node >= 0 && std::find(list->begin(), list->end(), frame_node) == list->end()) {
+        list->push_back(frame_node);
+      }
+    }
   }
   const Clock::time_point t1 = Clock::now();
 
@@ -170,6 +203,10 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
   const BodyMass mp = MassOf(body.invariants);
   const int nk = static_cast<int>(body.frequencies_hz.size());
   const fe::Mesh& mesh = model.mesh;
+  std::string frame;
+  for (const auto& [key, value] : body.provenance) {
+    if (key == "frame") frame = value;
+  }
   std::ostringstream s;
   if (opt.json) {
     s << "{\n  \"file\": " << JsonString(path) << ",\n";
@@ -178,6 +215,7 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
     s << "  \"elements\": " << mesh.elements.size() << ",\n";
     s << "  \"interface_nodes\": " << body.interface_nodes.size() << ",\n";
     s << "  \"fixed_nodes\": " << ro.fixed_nodes.size() << ",\n";
+    s << "  \"frame\": " << JsonString(frame) << ",\n";
     JsonModesAndMass(s, body, mp);
     // wall times need no 17 digits
     s << "  \"timings_s\": {\"read\": " << Short(Seconds(t0, t1)) << ", \"assemble\": " << Short(t.assemble)
@@ -188,8 +226,9 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
   } else {
     s << ModelName(path) << ": " << mesh.nodes.size() << " nodes, " << mesh.elements.size() << " elements; "
       << body.interface_nodes.size() << " interface nodes";
-    if (!ro.fixed_nodes.empty()) s << ", " << ro.fixed_nodes.size() << " nodes fixed by --fix";
+    if (!ro.fixed_nodes.empty()) s << ", " << ro.fixed_nodes.size() << " nodes clamped";
     s << "\n";
+    if (!frame.empty()) s << "floating frame: " << frame << "\n";
     s << "Craig-Bampton basis: " << body.static_modes << " static + " << body.normal_modes << " normal modes; "
       << body.rigid_modes_removed << " rigid-body modes removed; " << nk << " flexible modes kept\n";
     if (mp.mass > 0.0) s << "mass " << Short(mp.mass) << " kg, centre of mass " << ShortVector(mp.center) << " m\n";

@@ -27,6 +27,12 @@ struct ReduceOptions {
   double cutoff_hz = 0.0;  ///< > 0: all fixed-interface modes below this frequency [Hz] instead of `modes`
   int keep = -1;           ///< keep the lowest N flexible modes (-1 = all)
   std::string fix;         ///< nodes to clamp (ids or a set), as FeModesOptions::fix; empty: none
+  /// The body's floating frame: "mean" (the mean axes; "tisserand" and
+  /// "buckens" name the same frame, see docs/design.md "The floating frame")
+  /// or "node:ID" (attached to node ID: the node is clamped in the
+  /// reduction, as by `fix`, and is an interface node). Empty: mean axes
+  /// without `fix`, attached to the fixed nodes with it.
+  std::string frame;
   std::string rayleigh;    ///< Rayleigh damping "ALPHA,BETA" (D = alpha M + beta K); empty: none
   /// Modal damping ratios "Z" or "Z1,Z2,..." (the last one repeats for
   /// higher modes); empty: none. Not together with `rayleigh`.
