@@ -45,6 +45,19 @@ def test_reduce_stiffening_options(strip, tmp_path):
     assert not info["deformation_stiffening"] and not info["geometric_stiffening"]
 
 
+def test_reduce_frame_option(strip, tmp_path):
+    mean = flexmb.reduce(strip, tmp_path / "m.h5", interface=ENDS, modes=4, frame="buckens")
+    assert mean["frame"].startswith("mean axes")
+    assert mean["rigid_modes_removed"] == 6
+    node = flexmb.reduce(strip, tmp_path / "n.h5", interface=ENDS, modes=4, frame=1)
+    assert node["frame"] == "attached to the clamped nodes 1"
+    assert node["rigid_modes_removed"] == 0
+    assert node["frequencies_hz"] == flexmb.reduce(strip, tmp_path / "f.h5", interface=ENDS, modes=4,
+                                                   fix="1")["frequencies_hz"]
+    with pytest.raises(flexmb.InputError, match="--frame expects"):
+        flexmb.reduce(strip, tmp_path / "x.h5", interface=ENDS, modes=4, frame="centre")
+
+
 def test_reduce_and_body_file_match_cli(cli, strip, tmp_path):
     rep = flexmb.reduce(strip, tmp_path / "py.h5", interface=ENDS, modes=10)
     proc = subprocess.run([cli, "reduce", strip, "--interface", ENDS, "--modes", "10", "-o",
