@@ -158,5 +158,63 @@ TEST(FloatingFrameChoice, FreeBodyFrequenciesAreTheSameInBothFrames) {
   }
 }
 
+// The attached frame's body has non-zero invariants where the mean axes
+// have zeros (the modes' linear and angular momentum coupling with the
+// frame), so its inertia terms take paths the mean-axis tests skip. Free,
+// spinning, undamped, no gravity: its energy and momenta are invariants of
+// the exact motion; the drift must be an integration error, O(h^2).
+TEST(FloatingFrameChoice, AttachedFrameBodyKeepsEnergyAndMomentum) {
+  const auto attached = Reduce(true), mean = Reduce(false);
+  const auto drift = [&](double h, bool on_node = true) {
+    Model m;
+    m.gravity_W = Vec3::Zero();
+    FlexibleBodyData d;
+    d.reduced = on_node ? attached : mean;
+    d.p_WB = Vec3(0.1, 0.2, 0.3);
+    d.R_WB = ExpSO3(Vec3(0.3, -0.2, 0.5));
+    d.v_WB = Vec3(0.5, -0.3, 0.2);
+    d.w_WB = Vec3(2.0, 6.0, -3.0);
+    d.damping = MatX::Zero(attached->invariants.n, attached->invariants.n);
+    const int b = m.AddBody(std::make_unique<FlexibleBody>("bar", d));
+    testing::UseReferenceIntegrator(m, h);
+    m.Finalize();
+    Simulator sim(m);
+    sim.Initialize();
+    const auto& body = static_cast<const FlexibleBody&>(*m.bodies[b]);
+    const auto energy = [&](const State& s) {
+      const double* q = s.q.data() + body.q_offset;
+      return body.KineticEnergy(q, s.v.data() + body.v_offset) + body.StrainEnergy(q);
+    };
+    const auto momentum = [&](const State& s) {
+      return body.Momentum(s.q.data() + body.q_offset, s.v.data() + body.v_offset);
+    };
+    const double E0 = energy(sim.state());
+    const Vec6 p0 = momentum(sim.state());
+    double strain = 0.0;
+    Vec3 out = Vec3::Zero();  // largest relative deviation: energy, linear, angular momentum
+    sim.Run(0.5, 0.0, [&](const State& s, const Workspace&) {
+      const Vec6 p = momentum(s);
+      out = out.cwiseMax(Vec3(std::abs(energy(s) - E0) / E0, (p.head<3>() - p0.head<3>()).norm() / p0.head<3>().norm(),
+                              (p.tail<3>() - p0.tail<3>()).norm() / p0.tail<3>().norm()));
+      strain = std::max(strain, body.StrainEnergy(s.q.data() + body.q_offset));
+    });
+    std::printf("%s, h = %.1e s: dE/E %.2e, |dL|/|L| %.2e, |dH|/|H| %.2e; strain energy up to %.3e J of %.3e J\n",
+                on_node ? "attached frame" : "mean axes", h, out(0), out(1), out(2), strain, E0);
+    return out;
+  };
+  // measured at h = 0.05 ms: 2.9e-5, 2.1e-5, 3.2e-5; the same bar with the
+  // mean axes (printed for comparison) drifts 1000 times less at the same
+  // steps, and its largest strain energy is 0.030 J against 0.051 J here
+  // (both converged in h; the tip paths agree to 3e-6 m at 1 ms): see
+  // docs/design.md, "The floating frame", open question
+  const Vec3 a = drift(1e-4), b = drift(5e-5);
+  drift(1e-4, false);
+  drift(5e-5, false);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_LT(b(k), 5e-5) << k;
+    EXPECT_NEAR(a(k) / b(k), 4.0, 0.8) << k;
+  }
+}
+
 }  // namespace floating_frame_choice_test
 }  // namespace flexmb
