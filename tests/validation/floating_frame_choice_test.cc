@@ -23,6 +23,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "flexmb/bodies/flexible_body.h"
 #include "flexmb/joints/spherical.h"
@@ -36,12 +37,21 @@ namespace floating_frame_choice_test {
 
 constexpr int kPerLeg = 6;  // 12 beam elements, nodes 0..12
 
-std::shared_ptr<reduction::ReducedBody> Reduce(bool attached) {
+// The bar's tip mass: as in BentBar (1.5 kg, 6.2 cm off the node, with
+// rotary inertia), or centred on the node without rotary inertia.
+enum class TipMass { kOffset, kCentred };
+
+std::shared_ptr<reduction::ReducedBody> Reduce(bool attached, TipMass tip = TipMass::kOffset) {
   reduction::ReductionOptions o;
   o.interface_nodes = {0, 2 * kPerLeg};
   o.normal_modes = 6;
   if (attached) o.fixed_nodes = {0};
-  return std::make_shared<reduction::ReducedBody>(reduction::ReduceCraigBampton(testing::BentBar(kPerLeg), o));
+  fe::FeModel model = testing::BentBar(kPerLeg);
+  if (tip == TipMass::kCentred) {
+    model.mesh.point_masses.at(0).offset.setZero();
+    model.mesh.point_masses.at(0).inertia.setZero();
+  }
+  return std::make_shared<reduction::ReducedBody>(reduction::ReduceCraigBampton(model, o));
 }
 
 struct Paths {
@@ -96,7 +106,7 @@ Paths Simulate(const std::shared_ptr<reduction::ReducedBody>& reduced, double dt
 }
 
 TEST(FloatingFrameChoice, MeanAxesAndAttachedFrameMoveTheMaterialPointsAlike) {
-  const auto mean = Reduce(false), attached = Reduce(true);
+  const auto mean = Reduce(false, TipMass::kCentred), attached = Reduce(true, TipMass::kCentred);
   ASSERT_EQ(mean->rigid_modes_removed, 6);
   ASSERT_EQ(attached->rigid_modes_removed, 0);
   ASSERT_EQ(mean->invariants.n, attached->invariants.n);
@@ -123,11 +133,14 @@ TEST(FloatingFrameChoice, MeanAxesAndAttachedFrameMoveTheMaterialPointsAlike) {
   // the bar deforms by millimetres and swings by metres
   EXPECT_GT(b.elastic_tip, 5e-3);
   EXPECT_GT(swing, 1.0);
-  // measured: 2.2e-5 m up to 0.25 s (the integration error 2.1e-5 m), then
-  // a slow drift of phase: 6.9e-4 m up to 1 s
-  EXPECT_LT(frames_early, 3e-3 * b.elastic_tip);
-  EXPECT_LT(frames, 0.1 * b.elastic_tip);
-  EXPECT_LT(frames, 1e-3 * swing);
+  // measured with the tip mass centred: 2.3e-6 m up to 0.25 s (the
+  // integration error of either run is 1.8e-5 m: both share most of it),
+  // then a slow drift of phase, 1.1e-4 m after 1 s (the beams' rotary
+  // inertia, docs/design.md "Inertia of the nodes' rotations"; with the
+  // test bar's offset tip mass 6.9e-4 m)
+  EXPECT_LT(frames_early, 5e-4 * b.elastic_tip);
+  EXPECT_LT(frames, 0.02 * b.elastic_tip);
+  EXPECT_LT(frames, 1e-4 * swing);
 }
 
 // The free body's vibration frequencies (the linearized system about its
@@ -158,62 +171,99 @@ TEST(FloatingFrameChoice, FreeBodyFrequenciesAreTheSameInBothFrames) {
   }
 }
 
+// A free body spinning and moving, undeformed at the start, undamped, no
+// gravity, 0.5 s: the largest relative deviation of its energy, linear and
+// angular momentum (invariants of the exact motion) and its largest strain
+// energy [J].
+struct Spin {
+  Vec3 drift = Vec3::Zero();
+  double strain = 0.0;
+};
+Spin Spinning(const std::shared_ptr<reduction::ReducedBody>& reduced, double h, const char* label) {
+  Model m;
+  m.gravity_W = Vec3::Zero();
+  FlexibleBodyData d;
+  d.reduced = reduced;
+  d.p_WB = Vec3(0.1, 0.2, 0.3);
+  d.R_WB = ExpSO3(Vec3(0.3, -0.2, 0.5));
+  d.v_WB = Vec3(0.5, -0.3, 0.2);
+  d.w_WB = Vec3(2.0, 6.0, -3.0);
+  d.damping = MatX::Zero(reduced->invariants.n, reduced->invariants.n);
+  const int b = m.AddBody(std::make_unique<FlexibleBody>("bar", d));
+  testing::UseReferenceIntegrator(m, h);
+  m.Finalize();
+  Simulator sim(m);
+  sim.Initialize();
+  const auto& body = static_cast<const FlexibleBody&>(*m.bodies[b]);
+  const auto energy = [&](const State& s) {
+    const double* q = s.q.data() + body.q_offset;
+    return body.KineticEnergy(q, s.v.data() + body.v_offset) + body.StrainEnergy(q);
+  };
+  const auto momentum = [&](const State& s) {
+    return body.Momentum(s.q.data() + body.q_offset, s.v.data() + body.v_offset);
+  };
+  const double E0 = energy(sim.state());
+  const Vec6 p0 = momentum(sim.state());
+  Spin out;
+  sim.Run(0.5, 0.0, [&](const State& s, const Workspace&) {
+    const Vec6 p = momentum(s);
+    out.drift = out.drift.cwiseMax(Vec3(std::abs(energy(s) - E0) / E0,
+                                        (p.head<3>() - p0.head<3>()).norm() / p0.head<3>().norm(),
+                                        (p.tail<3>() - p0.tail<3>()).norm() / p0.tail<3>().norm()));
+    out.strain = std::max(out.strain, body.StrainEnergy(s.q.data() + body.q_offset));
+  });
+  std::printf("%s, h = %.1e s: dE/E %.2e, |dL|/|L| %.2e, |dH|/|H| %.2e; strain energy up to %.4e J of %.4e J\n",
+              label, h, out.drift(0), out.drift(1), out.drift(2), out.strain, E0);
+  return out;
+}
+
 // The attached frame's body has non-zero invariants where the mean axes
 // have zeros (the modes' linear and angular momentum coupling with the
-// frame), so its inertia terms take paths the mean-axis tests skip. Free,
-// spinning, undamped, no gravity: its energy and momenta are invariants of
-// the exact motion; the drift must be an integration error, O(h^2).
+// frame), so its inertia terms take paths the mean-axis tests skip. Its
+// energy and momenta must drift only by the integration error, O(h^2).
 TEST(FloatingFrameChoice, AttachedFrameBodyKeepsEnergyAndMomentum) {
-  const auto attached = Reduce(true), mean = Reduce(false);
-  const auto drift = [&](double h, bool on_node = true) {
-    Model m;
-    m.gravity_W = Vec3::Zero();
-    FlexibleBodyData d;
-    d.reduced = on_node ? attached : mean;
-    d.p_WB = Vec3(0.1, 0.2, 0.3);
-    d.R_WB = ExpSO3(Vec3(0.3, -0.2, 0.5));
-    d.v_WB = Vec3(0.5, -0.3, 0.2);
-    d.w_WB = Vec3(2.0, 6.0, -3.0);
-    d.damping = MatX::Zero(attached->invariants.n, attached->invariants.n);
-    const int b = m.AddBody(std::make_unique<FlexibleBody>("bar", d));
-    testing::UseReferenceIntegrator(m, h);
-    m.Finalize();
-    Simulator sim(m);
-    sim.Initialize();
-    const auto& body = static_cast<const FlexibleBody&>(*m.bodies[b]);
-    const auto energy = [&](const State& s) {
-      const double* q = s.q.data() + body.q_offset;
-      return body.KineticEnergy(q, s.v.data() + body.v_offset) + body.StrainEnergy(q);
-    };
-    const auto momentum = [&](const State& s) {
-      return body.Momentum(s.q.data() + body.q_offset, s.v.data() + body.v_offset);
-    };
-    const double E0 = energy(sim.state());
-    const Vec6 p0 = momentum(sim.state());
-    double strain = 0.0;
-    Vec3 out = Vec3::Zero();  // largest relative deviation: energy, linear, angular momentum
-    sim.Run(0.5, 0.0, [&](const State& s, const Workspace&) {
-      const Vec6 p = momentum(s);
-      out = out.cwiseMax(Vec3(std::abs(energy(s) - E0) / E0, (p.head<3>() - p0.head<3>()).norm() / p0.head<3>().norm(),
-                              (p.tail<3>() - p0.tail<3>()).norm() / p0.tail<3>().norm()));
-      strain = std::max(strain, body.StrainEnergy(s.q.data() + body.q_offset));
-    });
-    std::printf("%s, h = %.1e s: dE/E %.2e, |dL|/|L| %.2e, |dH|/|H| %.2e; strain energy up to %.3e J of %.3e J\n",
-                on_node ? "attached frame" : "mean axes", h, out(0), out(1), out(2), strain, E0);
-    return out;
-  };
-  // measured at h = 0.05 ms: 2.9e-5, 2.1e-5, 3.2e-5; the same bar with the
-  // mean axes (printed for comparison) drifts 1000 times less at the same
-  // steps, and its largest strain energy is 0.030 J against 0.051 J here
-  // (both converged in h; the tip paths agree to 3e-6 m at 1 ms): see
-  // docs/design.md, "The floating frame", open question
-  const Vec3 a = drift(1e-4), b = drift(5e-5);
-  drift(1e-4, false);
-  drift(5e-5, false);
+  const auto attached = Reduce(true);
+  const Spin a = Spinning(attached, 1e-4, "attached frame"), b = Spinning(attached, 5e-5, "attached frame");
+  // measured at h = 0.05 ms: 2.9e-5, 2.1e-5, 3.2e-5 (the tip mass's offset
+  // and rotary inertia excite the bar's highest modes in this frame, see
+  // OffsetTipMassShowsTheNodalInertiaApproximation)
   for (int k = 0; k < 3; ++k) {
-    EXPECT_LT(b(k), 5e-5) << k;
-    EXPECT_NEAR(a(k) / b(k), 4.0, 0.8) << k;
+    EXPECT_LT(b.drift(k), 5e-5) << k;
+    EXPECT_NEAR(a.drift(k) / b.drift(k), 4.0, 0.8) << k;
   }
+}
+
+// The spinning bar with its tip mass centred on the node: the same strain
+// energy in both frames, and both conserve energy and momenta to the
+// integration error.
+TEST(FloatingFrameChoice, SpinningBarHasTheSameStrainEnergyInBothFrames) {
+  const Spin mean = Spinning(Reduce(false, TipMass::kCentred), 5e-5, "mean axes, centred tip mass");
+  const Spin attached = Spinning(Reduce(true, TipMass::kCentred), 5e-5, "attached frame, centred tip mass");
+  EXPECT_GT(mean.strain, 0.01);  // J
+  EXPECT_NEAR(attached.strain, mean.strain, 2e-3 * mean.strain);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_LT(mean.drift(k), 1e-7) << k;
+    EXPECT_LT(attached.drift(k), 2e-7) << k;
+  }
+}
+
+// Documents a limitation (docs/design.md, "Inertia of the nodes' rotations"):
+// the invariants are built from the FE mass matrix node by node, which
+// moves a node's rotational inertia (here the tip mass's offset and rotary
+// inertia) with the frame's rotation and the node's small rotation, but
+// not with the node's rotation times the frame's angular velocity (the
+// term omega x (theta x e) of an offset e). That term is of first order in
+// the node's rotation relative to the frame, which the attached frame makes
+// larger than the mean axes do. Measured: largest strain energy 0.051 J in
+// the attached frame against 0.030 J with the mean axes (both converged in
+// the step); with the tip mass centred both give 0.0223 J (above). If this
+// test fails because the two agree, the limitation is gone: update the
+// design note and this test.
+TEST(FloatingFrameChoice, OffsetTipMassShowsTheNodalInertiaApproximation) {
+  const Spin mean = Spinning(Reduce(false), 5e-5, "mean axes, offset tip mass");
+  const Spin attached = Spinning(Reduce(true), 5e-5, "attached frame, offset tip mass");
+  EXPECT_GT(attached.strain, 1.3 * mean.strain);
+  EXPECT_LT(mean.drift(0), 1e-7);
 }
 
 }  // namespace floating_frame_choice_test
