@@ -47,12 +47,21 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
   last_h_ = h;
   last_failed_ = true;
 
-  // predictor (vdot_{n+1} = 0)
-  a1_ = (af_ * vdot_ - am_ * a_) / (1.0 - am_);
+  // predictor, and the position and velocity that the integration formulas
+  // give with it: full Newton starts from the last step's acceleration,
+  // vdot_{n+1} = vdot_n (11 to 26 % fewer iterations on the examples, the
+  // same solutions within the Newton tolerance); a kept matrix from
+  // vdot_{n+1} = 0, with which its error estimate was validated
+  // (docs/design.md "Newton predictor")
+  if (reuse) {
+    vdot1_.setZero();
+  } else {
+    vdot1_ = vdot_;
+  }
+  a1_ = ((1.0 - af_) * vdot1_ + af_ * vdot_ - am_ * a_) / (1.0 - am_);
   v1_ = s.v + h * (1.0 - gamma_) * a_ + h * gamma_ * a1_;
   dq_ = h * (s.v + h * (0.5 - beta_) * a_ + h * beta_ * a1_);
   RetractAll(m, s.q, dq_, q1_);
-  vdot1_.setZero();
   trial_.t = s.t + h;
   trial_.q = q1_;
   trial_.v = v1_;
