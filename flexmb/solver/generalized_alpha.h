@@ -13,10 +13,10 @@
 /// at or below SolverSettings::jacobian_reuse_rate; iterations with a kept
 /// matrix evaluate no force derivatives. The convergence test is the same
 /// (||dx|| <= newton_tol), and with a kept matrix an iterate is accepted only
-/// if its contraction rate is within jacobian_reuse_rate and its estimated
-/// remaining error rate / (1 - rate) ||dx|| within kKeptMatrixErrorFraction
-/// newton_tol too. An attempt that fails with a kept matrix is repeated at
-/// once with full Newton.
+/// after at least two iterations of the step, with the last contraction
+/// rate within jacobian_reuse_rate and the correction itself within
+/// kKeptMatrixErrorFraction newton_tol. An attempt that fails with a kept
+/// matrix is repeated at once with full Newton.
 
 #include "flexmb/model/model.h"
 #include "flexmb/model/workspace.h"
