@@ -22,7 +22,6 @@ Newton run, relative to that column's range (columns whose range is below
 """
 
 import argparse
-import csv
 import os
 import re
 import shutil
@@ -30,6 +29,8 @@ import subprocess
 import sys
 import tempfile
 import time
+
+from csv_compare import largest_difference
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
@@ -83,22 +84,6 @@ def main():
     finally:
         shutil.rmtree(work, ignore_errors=True)
 
-
-def largest_difference(path_a, path_b):
-    """Largest |a - b| over the rows of two results.csv files, per column
-    relative to the column's range in a, over the columns (range > 1e-6)."""
-    with open(path_a) as fa, open(path_b) as fb:
-        a, b = list(csv.DictReader(fa)), list(csv.DictReader(fb))
-    if len(a) != len(b):
-        sys.exit(f"{path_a} has {len(a)} rows, {path_b} {len(b)}")
-    worst = 0.0
-    for key in a[0]:
-        col_a = [float(r[key]) for r in a]
-        col_b = [float(r[key]) for r in b]
-        span = max(col_a) - min(col_a)
-        if span > 1e-6:
-            worst = max(worst, max(abs(x - y) for x, y in zip(col_a, col_b)) / span)
-    return worst
 
 if __name__ == "__main__":
     main()

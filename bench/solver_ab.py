@@ -13,7 +13,6 @@ Models: the IFToMM four-bar, Bricard's mechanism and Andrews' squeezer
 """
 
 import argparse
-import csv
 import json
 import os
 import shutil
@@ -22,29 +21,14 @@ import sys
 import tempfile
 import time
 
+from csv_compare import largest_difference
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 
 
 def run(cmd, **kw):
     return subprocess.run(cmd, check=True, capture_output=True, text=True, **kw)
-
-
-def largest_difference(path_a, path_b):
-    """Largest |a - b| over the rows, relative to the column's range in a,
-    over the columns whose range exceeds 1e-6."""
-    with open(path_a) as fa, open(path_b) as fb:
-        a, b = list(csv.DictReader(fa)), list(csv.DictReader(fb))
-    if len(a) != len(b):
-        return float("nan")
-    worst = 0.0
-    for key in a[0]:
-        col_a = [float(r[key]) for r in a]
-        col_b = [float(r[key]) for r in b]
-        span = max(col_a) - min(col_a)
-        if span > 1e-6:
-            worst = max(worst, max(abs(x - y) for x, y in zip(col_a, col_b)) / span)
-    return worst
 
 
 def main():

@@ -48,13 +48,8 @@ Drift Simulate(const std::shared_ptr<reduction::ReducedBody>& reduced, double dt
   Simulator sim(m);
   sim.Initialize();
   const auto& body = static_cast<const FlexibleBody&>(*m.bodies[b]);
-  const auto energy = [&](const State& s) {
-    const double* q = s.q.data() + body.q_offset;
-    return body.KineticEnergy(q, s.v.data() + body.v_offset) + body.StrainEnergy(q);
-  };
-  const auto momentum = [&](const State& s) {
-    return body.Momentum(s.q.data() + body.q_offset, s.v.data() + body.v_offset);
-  };
+  const auto energy = [&](const State& s) { return testing::TotalEnergy(body, s); };
+  const auto momentum = [&](const State& s) { return testing::BodyMomentum(body, s); };
   Drift r;
   r.E0 = energy(sim.state());
   r.strain0 = body.StrainEnergy(sim.state().q.data() + body.q_offset);

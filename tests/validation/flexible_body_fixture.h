@@ -11,6 +11,7 @@
 #include "flexmb/bodies/flexible_body.h"
 #include "flexmb/math/rotation.h"
 #include "flexmb/model/model.h"
+#include "flexmb/model/state.h"
 #include "flexmb/reduction/craig_bampton.h"
 #include "tests/unit/bodies/flexible_test_bodies.h"
 #include "tests/unit/fe/fe_test_models.h"
@@ -67,6 +68,18 @@ inline int AddFinalizedPosedFlexibleBody(Model& m, const std::string& name,
   const int b = m.AddBody(std::make_unique<FlexibleBody>(name, d));
   m.Finalize();
   return b;
+}
+
+/// Kinetic plus strain energy of the flexible body in state s [J].
+inline double TotalEnergy(const FlexibleBody& body, const State& s) {
+  const double* q = s.q.data() + body.q_offset;
+  return body.KineticEnergy(q, s.v.data() + body.v_offset) + body.StrainEnergy(q);
+}
+
+/// Linear [kg m/s] and angular momentum about the world origin [kg m^2/s]
+/// of the flexible body in state s.
+inline Vec6 BodyMomentum(const FlexibleBody& body, const State& s) {
+  return body.Momentum(s.q.data() + body.q_offset, s.v.data() + body.v_offset);
 }
 
 }  // namespace flexmb::testing

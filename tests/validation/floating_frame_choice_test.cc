@@ -195,13 +195,8 @@ Spin Spinning(const std::shared_ptr<reduction::ReducedBody>& reduced, double h, 
   Simulator sim(m);
   sim.Initialize();
   const auto& body = static_cast<const FlexibleBody&>(*m.bodies[b]);
-  const auto energy = [&](const State& s) {
-    const double* q = s.q.data() + body.q_offset;
-    return body.KineticEnergy(q, s.v.data() + body.v_offset) + body.StrainEnergy(q);
-  };
-  const auto momentum = [&](const State& s) {
-    return body.Momentum(s.q.data() + body.q_offset, s.v.data() + body.v_offset);
-  };
+  const auto energy = [&](const State& s) { return testing::TotalEnergy(body, s); };
+  const auto momentum = [&](const State& s) { return testing::BodyMomentum(body, s); };
   const double E0 = energy(sim.state());
   const Vec6 p0 = momentum(sim.state());
   Spin out;
