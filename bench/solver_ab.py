@@ -16,20 +16,11 @@ import argparse
 import json
 import os
 import shutil
-import subprocess
 import sys
 import tempfile
 import time
 
-from csv_compare import largest_difference
-
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
-
-
-def run(cmd, **kw):
-    return subprocess.run(cmd, check=True, capture_output=True, text=True, **kw)
-
+from bench_support import ROOT, largest_difference, run
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])

@@ -1,6 +1,17 @@
-"""Comparison of two results.csv files for the bench scripts."""
+"""What the Python bench scripts share: the repository root, running a
+command, comparing two results.csv files."""
 
 import csv
+import os
+import subprocess
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def run(cmd, **kw):
+    """Runs cmd (a list), raising on a non-zero exit; returns the completed
+    process with its output as text."""
+    return subprocess.run(cmd, check=True, capture_output=True, text=True, **kw)
 
 
 def largest_difference(path_a, path_b):
