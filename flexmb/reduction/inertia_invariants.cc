@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "flexmb/common/error.h"
+#include "flexmb/fe/point_mass.h"
 #include "flexmb/math/rotation.h"
 #include "flexmb/reduction/parallel_rows.h"
 
@@ -95,6 +96,54 @@ NodeBlocks BuildNodeBlocks(const fe::Mesh& mesh, const fe::AssembledModel& a, co
   return b;
 }
 
+// Offset point masses as points of their own (docs/design.md, "Inertia of
+// the nodes' rotations"): a point mass m with offset e at node k moves with
+// u_k + theta_k x e, so it is a translational point at rho_k + e with the
+// mode rows H_k^t - S(e) H_k^r, for which the node-by-node kinetic energy is
+// exact; only its rotary inertia J stays on node k. Its block in M_full
+// (mass, offset coupling and J) is taken out of node k's diagonal block, J
+// put back there, and the point appended to `positions`, `b` and `hr` as a
+// node with the block diag(m I, 0). The constant and modal-mass invariants
+// do not change (the same kinetic energy to first order); the terms linear
+// and quadratic in w gain the offset's rotation.
+void AddOffsetPointMasses(const fe::Mesh& mesh, NodeBlocks& b, std::vector<Vec3>& positions, RowMat& hr) {
+  std::vector<const fe::PointMass*> offset;
+  for (const fe::PointMass& pm : mesh.point_masses)
+    if (!pm.general && pm.mass > 0.0 && pm.offset.squaredNorm() > 0.0) offset.push_back(&pm);
+  if (offset.empty()) return;
+  const Index nn = static_cast<Index>(positions.size());
+  RowMat h(hr.rows() + 6 * static_cast<Index>(offset.size()), hr.cols());
+  h.topRows(hr.rows()) = hr;
+  Index added = 0;
+  for (const fe::PointMass* pp : offset) {
+    const fe::PointMass& pm = *pp;
+    const int k = pm.node;
+    // node k's diagonal block: without the point mass, with its rotary inertia
+    fe::PointMass rotary = pm;
+    rotary.mass = 0.0;
+    rotary.offset.setZero();
+    fe::PointMass point = pm;
+    point.offset.setZero();
+    point.inertia.setZero();
+    bool found = false;
+    for (int q = b.ptr[static_cast<size_t>(k)]; q < b.ptr[static_cast<size_t>(k) + 1]; ++q) {
+      if (b.row[static_cast<size_t>(q)] != k) continue;
+      b.block[static_cast<size_t>(q)] += fe::PointMassMatrix(rotary) - fe::PointMassMatrix(pm);
+      found = true;
+    }
+    if (!found) continue;  // no mass at the node's DOF: nothing to move
+    const Index r = 6 * (nn + added);
+    h.middleRows(r, 3) = hr.middleRows(6 * static_cast<Index>(k), 3) - Skew(pm.offset) * hr.middleRows(6 * static_cast<Index>(k) + 3, 3);
+    h.middleRows(r + 3, 3).setZero();
+    positions.push_back(positions[static_cast<size_t>(k)] + pm.offset);
+    b.row.push_back(static_cast<int>(nn + added));
+    b.block.push_back(fe::PointMassMatrix(point));
+    b.ptr.push_back(static_cast<int>(b.row.size()));
+    ++added;
+  }
+  hr = h.topRows(6 * static_cast<Index>(positions.size()));
+}
+
 // sum_k S(h_k,i) Y_k, row a, column b, from q(e n + i, c w + b) =
 // sum_k h_k,i[e] Y_k(c, b): (S(h) Y)(a, b) = h[a+1] Y(a+2, b) - h[a+2] Y(a+1, b)
 double CrossSum(const MatX& q, int n, int w, int i, int a, int b) {
@@ -114,10 +163,10 @@ struct Partial {
 InertiaInvariants ComputeInertiaInvariants(const fe::Mesh& mesh, const fe::AssembledModel& model,
                                            const MatX& modes, const MatX* modal_mass) {
   const ErrorContext where{mesh.source, 0, "inertia invariants"};
-  const int nn = static_cast<int>(mesh.nodes.size());
-  if (modes.rows() != 6 * static_cast<Index>(nn)) {
+  const int nn_mesh = static_cast<int>(mesh.nodes.size());
+  if (modes.rows() != 6 * static_cast<Index>(nn_mesh)) {
     throw InputError("the mode matrix has " + std::to_string(modes.rows()) + " rows, expected 6 per node (" +
-                         std::to_string(6 * static_cast<Index>(nn)) + ")",
+                         std::to_string(6 * static_cast<Index>(nn_mesh)) + ")",
                      where);
   }
   const int n = static_cast<int>(modes.cols());
@@ -126,8 +175,14 @@ InertiaInvariants ComputeInertiaInvariants(const fe::Mesh& mesh, const fe::Assem
                          std::to_string(modal_mass->cols()) + ", expected " + std::to_string(n) + " square",
                      where);
   }
-  const NodeBlocks b = BuildNodeBlocks(mesh, model, where);
-  auto rho = [&](int k) -> const Vec3& { return mesh.nodes[static_cast<size_t>(k)].x; };
+  NodeBlocks b = BuildNodeBlocks(mesh, model, where);
+  std::vector<Vec3> positions;
+  positions.reserve(static_cast<size_t>(nn_mesh));
+  for (const fe::Node& node : mesh.nodes) positions.push_back(node.x);
+  RowMat hr = modes;  // row-major: the six rows of a node are contiguous
+  AddOffsetPointMasses(mesh, b, positions, hr);
+  const int nn = static_cast<int>(positions.size());
+  auto rho = [&](int k) -> const Vec3& { return positions[static_cast<size_t>(k)]; };
 
   InertiaInvariants inv;
   inv.n = n;
@@ -156,14 +211,13 @@ InertiaInvariants ComputeInertiaInvariants(const fe::Mesh& mesh, const fe::Assem
   inv.mvv = 0.5 * (mvv + mvv.transpose());
   inv.mvo0 = mvo0;
   inv.moo0 = 0.5 * (moo0 + moo0.transpose());
-  inv.mvw = y6.leftCols(3).transpose() * modes;
-  inv.mow0 = y6.rightCols(3).transpose() * modes;
+  inv.mvw = y6.leftCols(3).transpose() * hr;
+  inv.mow0 = y6.rightCols(3).transpose() * hr;
   if (n == 0) {
     inv.mww.resize(0, 0);
     return inv;
   }
   const int n3 = 3 * n;
-  const RowMat hr = modes;   // row-major: the six rows of a node are contiguous
 
   // terms linear in w with a rigid column: Omega1_i^T M_full [E, Omega0] =
   // sum_k S(h_k,i) y6_k (translational rows), from
