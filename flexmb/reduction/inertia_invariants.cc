@@ -133,7 +133,8 @@ void AddOffsetPointMasses(const fe::Mesh& mesh, NodeBlocks& b, std::vector<Vec3>
     }
     if (!found) continue;  // no mass at the node's DOF: nothing to move
     const Index r = 6 * (nn + added);
-    h.middleRows(r, 3) = hr.middleRows(6 * static_cast<Index>(k), 3) - Skew(pm.offset) * hr.middleRows(6 * static_cast<Index>(k) + 3, 3);
+    const Index rk = 6 * static_cast<Index>(k);
+    h.middleRows(r, 3) = hr.middleRows(rk, 3) - Skew(pm.offset) * hr.middleRows(rk + 3, 3);
     h.middleRows(r + 3, 3).setZero();
     positions.push_back(positions[static_cast<size_t>(k)] + pm.offset);
     b.row.push_back(static_cast<int>(nn + added));

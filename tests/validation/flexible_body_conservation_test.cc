@@ -30,17 +30,11 @@ Drift Simulate(const std::shared_ptr<reduction::ReducedBody>& reduced, double dt
                bool jacobian_reuse = false) {
   Model m;
   m.gravity_W = Vec3::Zero();
-  FlexibleBodyData d;
-  d.reduced = reduced;
+  FlexibleBodyData d = testing::TumblingBodyData(reduced);
   const int n = reduced->invariants.n;
-  d.p_WB = Vec3(0.1, 0.2, 0.3);
-  d.R_WB = ExpSO3(Vec3(0.3, -0.2, 0.5));
-  d.v_WB = Vec3(0.5, -0.3, 0.2);
-  d.w_WB = Vec3(2.0, 6.0, -3.0);
   d.w0 = VecX::Zero(n);
   d.w0(0) = 0.02;                // [sqrt(kg) m]
   d.w0(n - 1) = -0.005;
-  d.damping = MatX::Zero(n, n);  // undamped
   const int b = m.AddBody(std::make_unique<FlexibleBody>("bar", d));
   testing::UseReferenceIntegrator(m, dt);
   m.solver.jacobian_reuse = jacobian_reuse;

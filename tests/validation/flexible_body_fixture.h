@@ -70,6 +70,22 @@ inline int AddFinalizedPosedFlexibleBody(Model& m, const std::string& name,
   return b;
 }
 
+/// Data of a free body of `reduced` in a general rigid motion, undeformed
+/// and undamped: frame at (0.1, 0.2, 0.3) m turned by Exp((0.3, -0.2, 0.5))
+/// rad, moving at (0.5, -0.3, 0.2) m/s and spinning at (2, 6, -3) rad/s
+/// (the conservation tests).
+inline FlexibleBodyData TumblingBodyData(std::shared_ptr<const reduction::ReducedBody> reduced) {
+  FlexibleBodyData d;
+  const int n = reduced->invariants.n;
+  d.reduced = std::move(reduced);
+  d.p_WB = Vec3(0.1, 0.2, 0.3);
+  d.R_WB = ExpSO3(Vec3(0.3, -0.2, 0.5));
+  d.v_WB = Vec3(0.5, -0.3, 0.2);
+  d.w_WB = Vec3(2.0, 6.0, -3.0);
+  d.damping = MatX::Zero(n, n);
+  return d;
+}
+
 /// Kinetic plus strain energy of the flexible body in state s [J].
 inline double TotalEnergy(const FlexibleBody& body, const State& s) {
   const double* q = s.q.data() + body.q_offset;

@@ -182,14 +182,7 @@ struct Spin {
 Spin Spinning(const std::shared_ptr<reduction::ReducedBody>& reduced, double h, const char* label) {
   Model m;
   m.gravity_W = Vec3::Zero();
-  FlexibleBodyData d;
-  d.reduced = reduced;
-  d.p_WB = Vec3(0.1, 0.2, 0.3);
-  d.R_WB = ExpSO3(Vec3(0.3, -0.2, 0.5));
-  d.v_WB = Vec3(0.5, -0.3, 0.2);
-  d.w_WB = Vec3(2.0, 6.0, -3.0);
-  d.damping = MatX::Zero(reduced->invariants.n, reduced->invariants.n);
-  const int b = m.AddBody(std::make_unique<FlexibleBody>("bar", d));
+  const int b = m.AddBody(std::make_unique<FlexibleBody>("bar", testing::TumblingBodyData(reduced)));
   testing::UseReferenceIntegrator(m, h);
   m.Finalize();
   Simulator sim(m);
