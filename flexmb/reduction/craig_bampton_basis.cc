@@ -254,6 +254,16 @@ CraigBamptonBasis BuildCraigBamptonBasis(const fe::Mesh& mesh, const fe::Assembl
   basis.phi.resize(ni, 0);
   basis.fixed_interface_hz.resize(0);
   if (count > 0) {
+    // the eigen solvers need a mass: a deck written for statics often has none
+    // (no density on its materials), which they would report only as a failed
+    // decomposition
+    double m_max = 0.0;
+    for (Eigen::Index i = 0; i < m.ii.rows(); ++i) m_max = std::max(m_max, m.ii.coeff(i, i));
+    if (!(m_max > 0.0)) {
+      throw NumericalError("the model has no mass at its interior DOF, so it has no fixed-interface modes: give its "
+                           "materials a density (Nastran MAT1 RHO, Abaqus *DENSITY) or reduce with --modes 0",
+                           {mesh.source, 0, "Craig-Bampton reduction"});
+    }
     // block shift-invert Lanczos (each pass over the factor serves a block of
     // vectors); Spectra if it does not converge. A relative residual of 1e-6
     // leaves the eigenvalues exact to about 1e-12 (the error is quadratic in

@@ -323,6 +323,20 @@ TEST_F(ReduceCli, BadInput) {
   ExpectFailure("reduce '" + kHinge + "' --interface 2 --modes 1 -o hinge.h5 --json", 1, {"error: ", "cli_hinge.bdf"});
   EXPECT_FALSE(fs::exists(dir_ / "hinge.h5"));
 
+  // a deck written for statics: its material has no density
+  {
+    std::string deck = flexmb::testing::ReadFile(kStrip);
+    const std::string mat = "MAT1,1,2.1+11,,0.,7850.";
+    ASSERT_NE(deck.find(mat), std::string::npos);
+    deck.replace(deck.find(mat), mat.size(), "MAT1,1,2.1+11,,0.");
+    flexmb::testing::WriteFile(dir_ / "massless.bdf", deck);
+    const CliResult r = RunCli(dir_, "reduce massless.bdf --interface " + kEnds + " --modes 2 -o m.h5");
+    EXPECT_NE(r.code, 0);
+    for (const char* part : {"massless.bdf", "no mass", "density", "--modes 0"})
+      EXPECT_NE(r.err.find(part), std::string::npos) << part << "\n" << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "m.h5"));
+  }
+
   ExpectFailure("body info missing.h5 --json", 2, {"error: missing.h5: body file: does not exist"});
   flexmb::testing::WriteFile(dir_ / "text.h5", "not a body\n");
   ExpectFailure("body info text.h5", 2, {"error: text.h5: body file: not an HDF5 file"});
