@@ -34,7 +34,7 @@
 #include "flexmb/reduction/geometric_stiffness.h"
 #include "tests/unit/bodies/flexible_test_bodies.h"
 
-namespace flexmb {
+namespace flexmb::deformation_stiffening_test {
 namespace {
 
 constexpr double kFdStep = 1e-6;
@@ -214,4 +214,4 @@ TEST(DeformationStiffening, BodyFileAndModelFileKey) {
 }
 
 }  // namespace
-}  // namespace flexmb
+}  // namespace flexmb::deformation_stiffening_test

@@ -23,7 +23,7 @@
 #include "flexmb/reduction/geometric_stiffness.h"
 #include "tests/unit/bodies/flexible_test_bodies.h"
 
-namespace flexmb {
+namespace flexmb::geometric_stiffening_test {
 namespace {
 
 constexpr double kFdStep = 1e-6;
@@ -141,4 +141,4 @@ TEST(GeometricStiffening, ModelFileKey) {
 }
 
 }  // namespace
-}  // namespace flexmb
+}  // namespace flexmb::geometric_stiffening_test
