@@ -7,25 +7,8 @@
 #include "flexmb/forces/line_force.h"
 
 namespace flexmb {
-namespace {
-
-// 5-point Gauss-Legendre nodes and weights on [-1, 1]
-constexpr double kRopeGaussX[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
-                                   0.9061798459386640};
-constexpr double kRopeGaussW[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
-                                   0.4786286704993665, 0.2369268850561891};
-
-/// Integral of f over [a, b] by 5-point Gauss-Legendre.
-double RopeGauss(const ScalarFunction& f, double a, double b) {
-  const double c = 0.5 * (a + b), h = 0.5 * (b - a);
-  double s = 0.0;
-  for (int k = 0; k < 5; ++k) s += kRopeGaussW[k] * f.Value(c + h * kRopeGaussX[k]);
-  return h * s;
-}
-
-}  // namespace
-
 Rope::Rope(std::string name, RopeLaw law) : ForceElement(std::move(name)), law_(std::move(law)) {
+  if (law_.hoist_speed) hoisted_.emplace(law_.hoist_speed, kHoistPanel);
   const ErrorContext ctx{"", 0, "force '" + this->name() + "'"};
   if (!std::isfinite(law_.axial_stiffness) || law_.axial_stiffness <= 0.0)
     throw InputError("axial_stiffness (EA) must be finite and > 0, got " +
@@ -41,35 +24,12 @@ Rope::Rope(std::string name, RopeLaw law) : ForceElement(std::move(name)), law_(
   FreeLength(0.0, L0, L0dot);  // throws for L0(0) <= 0
 }
 
-double Rope::PanelIntegral(long k) const {
-  return RopeGauss(*law_.hoist_speed, static_cast<double>(k) * kHoistPanel,
-                   static_cast<double>(k + 1) * kHoistPanel);
-}
-
-double Rope::HoistedLength(double t) const {
-  const long k = static_cast<long>(std::floor(t / kHoistPanel));
-  if (k < 0) {
-    // before t = 0: the panels between t and 0, summed downwards
-    double s = 0.0;
-    for (long p = -1; p > k; --p) s -= PanelIntegral(p);
-    return s - RopeGauss(*law_.hoist_speed, t, static_cast<double>(k + 1) * kHoistPanel);
-  }
-  if (k < panel_) {
-    // behind the shortcut (a rejected step): the same sum again from 0
-    panel_ = 0;
-    panel_integral_ = 0.0;
-  }
-  for (; panel_ < k; ++panel_) panel_integral_ += PanelIntegral(panel_);
-  const double a = static_cast<double>(k) * kHoistPanel;
-  return panel_integral_ + (t > a ? RopeGauss(*law_.hoist_speed, a, t) : 0.0);
-}
-
 void Rope::FreeLength(double t, double& L0, double& L0dot) const {
   if (law_.free_length_function) {
     L0 = law_.free_length_function->Value(t);
     L0dot = law_.free_length_function->Derivative(t);
   } else if (law_.hoist_speed) {
-    L0 = law_.free_length - HoistedLength(t);
+    L0 = law_.free_length - (*hoisted_)(t);
     L0dot = -law_.hoist_speed->Value(t);
   } else {
     L0 = law_.free_length;

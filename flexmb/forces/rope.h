@@ -5,8 +5,10 @@
 /// reeved in `falls` parts of line, whose free length follows the winch.
 
 #include <memory>
+#include <optional>
 
 #include "flexmb/forces/force_element.h"
+#include "flexmb/math/running_integral.h"
 #include "flexmb/math/scalar_function.h"
 
 namespace flexmb {
@@ -65,16 +67,9 @@ class Rope final : public ForceElement {
   void FreeLength(double t, double& L0, double& L0dot) const;
 
  private:
-  /// Integral of the hoisting speed over the panel starting at k H.
-  double PanelIntegral(long k) const;
-  /// Integral of the hoisting speed from 0 to t >= 0.
-  double HoistedLength(double t) const;
-
   RopeLaw law_;
-  // last panel start reached and the integral up to it: only a shortcut,
-  // the integral is the same sum of panels whatever the order of calls
-  mutable long panel_ = 0;
-  mutable double panel_integral_ = 0.0;
+  // paid-out length: the integral of the hoisting speed (with one)
+  std::optional<RunningIntegral> hoisted_;
 };
 
 }  // namespace flexmb
