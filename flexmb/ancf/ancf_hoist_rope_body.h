@@ -33,7 +33,11 @@
 /// Strain energy. Per element, with a = S_xi q_e, b = S_xixi q_e:
 ///   axial  lambda = |a| N / L, eps = lambda - 1 or (lambda^2 - 1) / 2,
 ///          W = 1/2 EA int eps^2 dsigma (5 Gauss points, full integration:
-///          a rope's bending is too soft for membrane locking to matter);
+///          a rope's bending is too soft for membrane locking to matter).
+///          The span carries compression like the other ANCF bodies: with
+///          a tension-only law the line can fold onto itself at no cost and
+///          the runs went wrong (docs/design.md); a rope that goes slack
+///          and snaps taut is the massless `rope` force element's case;
 ///   bending kappa = (a x b) / (|a|^2 h), W = 1/2 EI int |kappa|^2 dsigma.
 /// Damping: Kelvin-Voigt with time beta on the rates of the same strains at
 /// fixed mesh points (a Rayleigh dissipation function, so energy only

@@ -1,4 +1,4 @@
-// Reads a model-file body of type ancf_beam, ancf_cable or ancf_beam3d (docs/model-file.md,
+// Reads a model-file body of type ancf_beam, ancf_cable, ancf_beam3d or ancf_hoist_rope (docs/model-file.md,
 // "ANCF beams"): name, type, length, elements, section {area, inertia} |
 // {diameter}, material {E, rho}, start [3], direction [3] (ancf_cable: or
 // end [3]), normal [3], damping, curvature (ancf_beam), angular_velocity [3]
@@ -16,6 +16,7 @@
 #include "flexmb/ancf/ancf_beam2d_body.h"
 #include "flexmb/ancf/ancf_beam3d_body.h"
 #include "flexmb/ancf/ancf_cable3d_body.h"
+#include "flexmb/ancf/ancf_hoist_rope_body.h"
 #include "flexmb/common/error.h"
 #include "flexmb/common/text.h"
 #include "flexmb/model/model.h"
@@ -73,7 +74,7 @@ void ParseLine(const YAML::Node& node, ParseContext& ctx, int& elements, ancf::B
 
 // markers on nodes 0..nodes-1: `node: k` or `end: start|end`
 void ParseNodeMarkers(const YAML::Node& node, int body, int nodes, ParseContext& ctx,
-                      std::map<std::string, int>& lines) {
+                      std::map<std::string, int>& lines, bool offsets = true) {
   auto node_of = [&](const YAML::Node& m) {
     int k = 0;
     if (m["node"] && m["end"]) ctx.Fail(m, "give either 'node' or 'end', not both");
@@ -95,7 +96,10 @@ void ParseNodeMarkers(const YAML::Node& node, int body, int nodes, ParseContext&
     }
     return k;
   };
-  ctx.ParseMarkerList(node, body, {"name", "node", "end", "position", "orientation"}, node_of, lines);
+  if (offsets)
+    ctx.ParseMarkerList(node, body, {"name", "node", "end", "position", "orientation"}, node_of, lines);
+  else  // points on the centre line
+    ctx.ParseMarkerList(node, body, {"name", "node", "end"}, node_of, lines);
 }
 
 void ParseCable(const YAML::Node& node, ParseContext& ctx, std::map<std::string, int>& lines) {
@@ -129,6 +133,39 @@ void ParseCable(const YAML::Node& node, ParseContext& ctx, std::map<std::string,
   const int b = ctx.Guard(node["name"], [&] { return ctx.model().AddBody(std::move(body)); });
   lines[entity] = ParseContext::Line(node);
   ParseNodeMarkers(node, b, nodes, ctx, lines);
+}
+
+// hoisting rope of changing length: the cable keys without length and end,
+// plus free_length, stored_length, drum {position, radius, inertia} and
+// payout_speed; the payout marker "<name>.payout" is added
+void ParseHoistRope(const YAML::Node& node, ParseContext& ctx, std::map<std::string, int>& lines) {
+  ctx.CheckKeys(node, {"name", "type", "free_length", "stored_length", "elements", "section", "material", "start",
+                       "direction", "damping", "axial_strain", "drum", "payout_speed", "markers"});
+  const std::string name = BodyName(node, ctx);
+  const std::string entity = "body '" + name + "'";
+  ctx.SetEntity(entity);
+  ancf::HoistRopeData d;
+  d.free_length = ctx.Positive(node, "free_length");
+  d.stored_length = ctx.Double(node, "stored_length", 0.0);
+  if (d.stored_length < 0.0) ctx.Fail(node["stored_length"], "'stored_length' must not be negative");
+  ParseLine(node, ctx, d.elements, d.section);
+  d.start_W = ctx.Vector3(node, "start", Vec3::Zero());
+  d.direction_W = ctx.Vector3(node, "direction", -Vec3::UnitZ());
+  if (!(d.direction_W.norm() > 0.0)) ctx.Fail(node["direction"], "'direction' must not be zero");
+  const YAML::Node drum = node["drum"];
+  if (!drum || !drum.IsMap()) ctx.Fail(drum ? drum : node, "expected 'drum' as {position, radius, inertia}");
+  ctx.CheckKeys(drum, {"position", "radius", "inertia"});
+  d.drum_W = ctx.Vector3(drum, "position");
+  d.drum_radius = ctx.Positive(drum, "radius");
+  d.drum_inertia = ctx.Double(drum, "inertia", 0.0);
+  if (d.drum_inertia < 0.0) ctx.Fail(drum["inertia"], "the drum 'inertia' must not be negative");
+  d.payout_speed = ctx.Double(node, "payout_speed", 0.0);
+  auto body = ctx.Guard(node, [&] { return std::make_unique<ancf::AncfHoistRopeBody>(name, d); });
+  const int nodes = body->elements() + 1, payout = body->PayoutNode();
+  const int b = ctx.Guard(node["name"], [&] { return ctx.model().AddBody(std::move(body)); });
+  lines[entity] = ParseContext::Line(node);
+  ctx.Guard(node["name"], [&] { return ctx.model().AddMarker(b, "payout", Vec3::Zero(), Mat3::Identity(), payout); });
+  ParseNodeMarkers(node, b, nodes, ctx, lines, false);
 }
 
 // 3D beam with torsion: section {area, Iy, Iz, J}, material {E, G | nu, rho}
@@ -207,6 +244,7 @@ void ParseBeam3d(const YAML::Node& node, ParseContext& ctx, std::map<std::string
 void ParseAncfBody(const YAML::Node& node, ParseContext& ctx, std::map<std::string, int>& lines) {
   if (node["type"].Scalar() == "ancf_cable") return ParseCable(node, ctx, lines);
   if (node["type"].Scalar() == "ancf_beam3d") return ParseBeam3d(node, ctx, lines);
+  if (node["type"].Scalar() == "ancf_hoist_rope") return ParseHoistRope(node, ctx, lines);
   ctx.CheckKeys(node, {"name", "type", "length", "elements", "section", "material", "start", "direction",
                        "normal", "damping", "curvature", "load_per_length", "axial_strain", "markers"});
   const std::string name = BodyName(node, ctx);

@@ -153,6 +153,7 @@ void RegisterBodyTypes(ElementRegistry& r) {
   r.Add(ElementKind::kBody, "ancf_beam", ParseAncfEntry);
   r.Add(ElementKind::kBody, "ancf_beam3d", ParseAncfEntry);
   r.Add(ElementKind::kBody, "ancf_cable", ParseAncfEntry);
+  r.Add(ElementKind::kBody, "ancf_hoist_rope", ParseAncfEntry);
 }
 
 }  // namespace flexmb

@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "flexmb/ancf/ancf_hoist_rope_body.h"
 #include "flexmb/bodies/flexible_body.h"
 #include "flexmb/joints/cylindrical.h"
 #include "flexmb/joints/distance.h"
@@ -16,6 +17,8 @@
 #include "flexmb/joints/revolute.h"
 #include "flexmb/joints/spherical.h"
 #include "flexmb/joints/universal.h"
+#include "flexmb/joints/winch_driver.h"
+#include "flexmb/math/input_function.h"
 #include "flexmb/model/model.h"
 #include "flexmb/model_file/element_registry.h"
 #include "flexmb/model_file/joint_entry.h"
@@ -85,6 +88,41 @@ void ParseCoordinateDriver(const YAML::Node& node, const std::string& name, Pars
   ctx.lines()["joint '" + name + "'"] = ParseContext::Line(node);
 }
 
+// winch of a hoisting rope: rope (an ancf_hoist_rope body), free_length
+// (a number, or L(t) as a function) and hoist_speed (a function); acts on
+// the rope's payout marker and a ground marker of its own, driver_<name>
+void ParseWinchDriver(const YAML::Node& node, const std::string& name, ParseContext& ctx) {
+  ctx.CheckKeys(node, {"name", "type", "rope", "free_length", "hoist_speed"});
+  const int b = ctx.Body(node, "rope");
+  const auto* rope = dynamic_cast<const ancf::AncfHoistRopeBody*>(ctx.model().bodies[b].get());
+  if (!rope)
+    ctx.Fail(node["rope"], "body '" + ctx.model().bodies[b]->name() + "' is not an ancf_hoist_rope: a winch "
+                           "driver pays out a hoisting rope of changing length");
+  WinchLaw law;
+  law.free_length = rope->data().free_length;
+  if (node["hoist_speed"]) {
+    law.hoist_speed = ctx.Function(node, "hoist_speed", "t");
+    if (dynamic_cast<const InputFunction*>(law.hoist_speed.get()))
+      ctx.Fail(node["hoist_speed"], "a hoisting speed set by a script cannot be integrated in time: "
+                                    "give 'free_length' as {input: ...} instead");
+  }
+  if (const YAML::Node l0 = node["free_length"]) {
+    if (law.hoist_speed) ctx.Fail(l0, "give 'free_length' or 'hoist_speed', not both (the rope's 'free_length' is L(0))");
+    if (l0.IsScalar())
+      law.free_length = ctx.Positive(node, "free_length");
+    else
+      law.free_length_function = ctx.Function(node, "free_length", "t");
+  }
+  const int mi = ctx.model().FindMarker(rope->name() + ".payout");
+  const int mj = ctx.Guard(node, [&] {
+    return ctx.model().AddMarker(0, "driver_" + name, Vec3::Zero(), Mat3::Identity());
+  });
+  auto driver = ctx.Guard(node, [&] { return std::make_unique<WinchDriver>(name, law); });
+  ctx.Guard(node, [&] { return ctx.model().AddJoint(std::move(driver), mi, mj); });
+  ctx.lines()["driver '" + name + "'"] = ParseContext::Line(node);
+  ctx.lines()["joint '" + name + "'"] = ParseContext::Line(node);
+}
+
 // A joint on a flexible body must sit on an interface node of its body file:
 // elsewhere the reduction has no static mode for the joint's load, so the
 // attachment would be stiffer than the FE model says (a different model)
@@ -143,6 +181,7 @@ void RegisterJointTypes(ElementRegistry& r) {
   r.Add(ElementKind::kJoint, "spherical", ParsePlainJoint<SphericalJoint>);
   r.Add(ElementKind::kJoint, "universal", ParsePlainJoint<UniversalJoint>);
   r.Add(ElementKind::kDriver, "coordinate", ParseCoordinateDriver);
+  r.Add(ElementKind::kDriver, "winch", ParseWinchDriver);
 }
 
 }  // namespace flexmb
