@@ -48,7 +48,7 @@ struct RopeLaw {
 class Rope final : public ForceElement {
  public:
   /// Width of the quadrature panels of the hoisting speed [s].
-  static constexpr double kHoistPanel = 0.01;
+  static constexpr double kHoistPanel = RunningIntegral::kWinchPanel;
 
   /// Throws InputError naming the rope for EA <= 0, falls < 1, a negative
   /// damping time, or a free length L0(0) <= 0.

@@ -4,7 +4,6 @@
 #include <cstdio>
 
 #include "flexmb/common/error.h"
-#include "flexmb/forces/rope.h"
 
 namespace flexmb {
 
@@ -12,7 +11,7 @@ WinchDriver::WinchDriver(std::string name, WinchLaw law) : Joint(std::move(name)
   const ErrorContext ctx{"", 0, "driver '" + this->name() + "'"};
   if (law_.hoist_speed && law_.free_length_function)
     throw InputError("give the free length as a function of time or a hoisting speed, not both", ctx);
-  if (law_.hoist_speed) hoisted_.emplace(law_.hoist_speed, Rope::kHoistPanel);
+  if (law_.hoist_speed) hoisted_.emplace(law_.hoist_speed, RunningIntegral::kWinchPanel);
   double L, Ld;
   try {
     FreeLength(0.0, L, Ld);

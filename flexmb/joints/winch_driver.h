@@ -26,7 +26,7 @@ struct WinchLaw {
 /// world): phi = x_i - L_ref(t). Marker j (on another body, normally
 /// ground) is not used. The multiplier is the rope's pull on the drum line
 /// (the drum torque divided by the winding radius) [N]. The hoisting speed
-/// is integrated as in Rope (RunningIntegral, panels of Rope::kHoistPanel),
+/// is integrated as in Rope (RunningIntegral, panels of kWinchPanel),
 /// so one driver must not be evaluated from two threads at once.
 class WinchDriver final : public Joint {
  public:

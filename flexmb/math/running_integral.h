@@ -17,6 +17,8 @@ namespace flexmb {
 /// not be evaluated from two threads at once.
 class RunningIntegral {
  public:
+  /// Panel width of the winch's paid-out length (Rope, WinchDriver) [s].
+  static constexpr double kWinchPanel = 0.01;
   /// f must not be null; panel [s] > 0.
   RunningIntegral(std::shared_ptr<const ScalarFunction> f, double panel);
   /// int_0^t f (negative for t < 0).
