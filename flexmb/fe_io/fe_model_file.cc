@@ -539,6 +539,10 @@ fe::FeModel LoadFeModel(const std::string& path) {
     throw InputError("unknown FE model file type " + Quoted(ext.empty() ? fs::path(path).filename().string() : ext) +
                          " (known: " + MeshFormatList() + ", .yaml/.yml (FE model file), or an exchange-set directory)",
                      {path, 0, ""});
+  if (model.mesh.nodes.empty())
+    throw InputError("the file defines no nodes (no GRID or *NODE): an empty or truncated deck, or the nodes are "
+                     "in a file it does not include",
+                     {path, 0, ""});
   return model;
 }
 

@@ -331,5 +331,21 @@ TEST(FeModelFile, BadInputNamesFileLineAndEntity) {
                           {bad_mesh + ":2: binary .msh not supported"}, "uses_bad_mesh.yaml");
 }
 
+TEST(FeModelFile, ADeckWithoutNodesIsAnErrorNamingTheFile) {
+  // found on the first try of `fe info` on an empty .bdf: 0 nodes, exit 0
+  for (const auto& [name, text] : {std::pair<const char*, const char*>{"empty.bdf", ""},
+                                   {"bulk_only.bdf", "BEGIN BULK\nENDDATA\n"},
+                                   {"materials_only.inp", "*MATERIAL, NAME=STEEL\n*ELASTIC\n2.1e11, 0.3\n"}}) {
+    const std::string path = WriteScratch(name, text);
+    try {
+      LoadFeModel(path);
+      ADD_FAILURE() << name << ": no error";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.context().file, path);
+      EXPECT_NE(std::string(e.what()).find("defines no nodes"), std::string::npos) << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace flexmb::io
