@@ -412,6 +412,12 @@ Vec3 AncfHoistRopeBody::MaterialPoint(const double* q, double sigma) const {
   return S0(eta - e) * Eigen::Map<const Vec12>(q + 6 * e);
 }
 
+Vec3 AncfHoistRopeBody::CentreLinePoint(const double* q, int k) const {
+  const double eta = static_cast<double>(k) / kLinePointsPerElement;
+  const int e = std::min(n_el_ - 1, k / kLinePointsPerElement);
+  return S0(eta - e) * Eigen::Map<const Vec12>(q + 6 * e);
+}
+
 double AncfHoistRopeBody::AxialForce(const double* q, int e) const {
   const BeamSection& s = data_.section;
   const double lam = (S1(0.5) * Eigen::Map<const Vec12>(q + 6 * e)).norm() * n_el_ / q[nL_];

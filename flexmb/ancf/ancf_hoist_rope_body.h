@@ -120,6 +120,10 @@ class AncfHoistRopeBody final : public Body {
   /// Linear and angular momentum of the hanging span (the stored rope and
   /// the drum turn about the drum axis, which the body does not know).
   Vec6 Momentum(const double* q, const double* v) const override;
+  /// Centre line: kLinePointsPerElement points per element and node N.
+  int CentreLinePoints() const override { return kLinePointsPerElement * n_el_ + 1; }
+  /// Point k at mesh coordinate eta = k / kLinePointsPerElement.
+  Vec3 CentreLinePoint(const double* q, int k) const override;
   /// Frame at node 0's reference position with the reference axes.
   void BodyFramePose(const double* q, Vec3& p_WB, Mat3& R_WB) const override;
 

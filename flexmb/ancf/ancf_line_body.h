@@ -126,6 +126,14 @@ class AncfLineBody : public Body {
     R_WB = self().FrameAxes();
   }
 
+  /// Centre line for animations: kLinePointsPerElement points per element
+  /// and the last node.
+  int CentreLinePoints() const override { return kLinePointsPerElement * n_el_ + 1; }
+  /// Point k at reference arc length s = k h / kLinePointsPerElement.
+  Vec3 CentreLinePoint(const double* q, int k) const override {
+    return PositionAt(q, k * self().ElementAt(0).length() / kLinePointsPerElement);
+  }
+
   /// Number of elements N.
   int elements() const { return n_el_; }
   /// Number of nodes N + 1.

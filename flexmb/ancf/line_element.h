@@ -68,6 +68,10 @@ double AncfAxialStrainTerms(AxialStrainMeasure measure, const Eigen::Matrix<doub
   return l - 1.0;
 }
 
+/// Points per element of an ANCF body's centre line in animations
+/// (Body::CentreLinePoints): enough to show a cubic element's bend.
+constexpr int kLinePointsPerElement = 4;
+
 /// Quadrature orders of the element integrals (Gauss-Legendre points, 1..6).
 /// The default integrates the axial energy with 2 points (selective reduced
 /// integration): with full integration the cubic element locks in bending

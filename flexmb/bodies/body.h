@@ -137,6 +137,13 @@ class Body {
   /// Pose of the user's body frame in world (for output and animation).
   virtual void BodyFramePose(const double* q, Vec3& p_WB, Mat3& R_WB) const = 0;
 
+  /// Number of points of the body's centre line (ANCF beams, cables and
+  /// ropes), drawn as a polyline in animations; 0 (the default): none.
+  virtual int CentreLinePoints() const { return 0; }
+  /// World position [m] of centre-line point k in 0..CentreLinePoints()-1
+  /// at q, in order along the line.
+  virtual Vec3 CentreLinePoint(const double* /*q*/, int /*k*/) const { return Vec3::Zero(); }
+
   /// Position in the body's internal frame of a point given in the user's
   /// body frame (a rigid body's internal frame sits at its centre of mass).
   virtual Vec3 InternalPosition(const Vec3& p_B) const { return p_B; }

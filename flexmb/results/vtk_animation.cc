@@ -19,7 +19,7 @@
 namespace flexmb {
 namespace {
 
-constexpr unsigned char kLine = 3, kTriangle = 5, kHexahedron = 12, kWedge = 13;
+constexpr unsigned char kLine = 3, kPolyLine = 4, kTriangle = 5, kHexahedron = 12, kWedge = 13;
 
 // an FE element as a VTK cell, its nodes in VTK order (fe/element_traits.h)
 template <class Cells>
@@ -189,6 +189,15 @@ VtkAnimationWriter::VtkAnimationWriter(const std::string& dir, const Model& mode
     n_conn_ += static_cast<int>(m.connectivity.size());
     flex_.push_back(std::move(m));
   }
+  // ANCF lines and ropes: a polyline through the centre line
+  for (int b = 0; b < static_cast<int>(model.bodies.size()); ++b) {
+    const int n = model.bodies[b]->CentreLinePoints();
+    if (n < 2) continue;
+    lines_.push_back(b);
+    n_points_ += n;
+    n_cells_ += 1;
+    n_conn_ += n;
+  }
   // the collection, empty until the first frame
   pvd_file_ = OpenOrThrow(pvd_);
   std::fprintf(pvd_file_, "<?xml version=\"1.0\"?>\n"
@@ -311,6 +320,21 @@ void VtkAnimationWriter::FillArrays(const State& state) {
     a.body_id.push_back(model_.markers[static_cast<size_t>(link.first)].body);
     base += 2;
     a.displacement.insert(a.displacement.end(), 6, 0.0);
+    a.von_mises.push_back(0.0);
+  }
+  // centre lines: one polyline each
+  for (int body : lines_) {
+    const Body& b = *model_.bodies[body];
+    const int n = b.CentreLinePoints();
+    for (int k = 0; k < n; ++k) {
+      point(b.CentreLinePoint(state.q.data() + b.q_offset, k));
+      a.connectivity.push_back(base + k);
+    }
+    a.offsets.push_back(offset += n);
+    a.types.push_back(kPolyLine);
+    a.body_id.push_back(body);
+    base += n;
+    a.displacement.insert(a.displacement.end(), 3 * static_cast<size_t>(n), 0.0);
     a.von_mises.push_back(0.0);
   }
   // flexible bodies: nodes at r + R (rho + s u), displacement u in body axes

@@ -17,6 +17,10 @@
 /// s = OutputSettings::deformation_scale; shells as quads and triangles,
 /// beams as lines, solids as tetrahedra (4 and 10 nodes) and hexahedra.
 ///
+/// Each body with a centre line (Body::CentreLinePoints: ANCF beams, cables
+/// and hoisting ropes) becomes one polyline cell (VTK type 4) through its
+/// points.
+///
 /// Encoding (VtkEncoding): binary by default, every DataArray
 /// format="binary": base64 of one stream holding a UInt64 byte count
 /// (header_type="UInt64" in <VTKFile>, version 1.0) followed by the raw
@@ -157,6 +161,7 @@ class VtkAnimationWriter {
   std::vector<ShapeMesh> meshes_;
   std::vector<FlexMesh> flex_;
   std::vector<std::pair<int, int>> links_;  ///< marker pairs drawn as lines
+  std::vector<int> lines_;                  ///< bodies drawn by their centre lines
   VtkEncoding encoding_;
   VtkFrameArrays arrays_;                   ///< scratch: the arrays of the frame
   std::string text_;                        ///< scratch: base64 or ASCII text of one array

@@ -11,6 +11,8 @@
 #include <numbers>
 #include <sstream>
 
+#include "flexmb/ancf/ancf_cable3d_body.h"
+#include "flexmb/ancf/ancf_hoist_rope_body.h"
 #include "flexmb/bodies/flexible_body.h"
 #include "flexmb/bodies/rigid_body.h"
 #include "flexmb/common/error.h"
@@ -387,6 +389,56 @@ TEST_F(VtkAnimation, LinkIsALineBetweenItsMarkers) {
   // marker positions in the user's body frame moved by the body's pose
   EXPECT_LT((Vec3(v.points[0], v.points[1], v.points[2]) - (p_WB + R_WB * Vec3(0.5, -0.1, 0.2))).norm(), 1e-12);
   EXPECT_LT((Vec3(v.points[3], v.points[4], v.points[5]) - Vec3(-1, 4, 0.5)).norm(), 1e-12);
+}
+
+TEST_F(VtkAnimation, AncfLinesArePolylinesThroughTheirCentreLines) {
+  // a cable and a hoisting rope, bent and stretched: 4 points per element
+  auto model = std::make_unique<Model>();
+  ancf::AncfCable3dData c;
+  c.length = 2.0;
+  c.elements = 3;
+  c.section.E = 1e9, c.section.A = 1e-4, c.section.I = 1e-10, c.section.rho = 7800;
+  c.start_W = Vec3(1, 0, 2);
+  c.direction_W = Vec3(1, 1, 0);
+  const int bc = model->AddBody(std::make_unique<ancf::AncfCable3dBody>("cable", c));
+  ancf::HoistRopeData r;
+  r.free_length = 6.0;
+  r.stored_length = 10.0;
+  r.elements = 2;
+  r.section = c.section;
+  r.drum_radius = 0.3;
+  const int br = model->AddBody(std::make_unique<ancf::AncfHoistRopeBody>("rope", r));
+  model->Finalize();
+  State s = model->InitialState();
+  for (int j = 0; j < s.q.size(); ++j) s.q(j) += 0.05 * std::sin(1.7 * j);
+  VtkAnimationWriter w(dir_.string(), *model);
+  w.WriteFrame(s);
+  const Vtu v = ReadVtu(w.FramePath(0));
+  ASSERT_EQ(v.n_cells, 2);
+  ASSERT_EQ(v.n_points, 13 + 9);
+  EXPECT_EQ(v.types, (std::vector<int>{4, 4}));
+  EXPECT_EQ(v.body_id, (std::vector<int>{bc, br}));
+  EXPECT_EQ(v.offsets, (std::vector<int>{13, 22}));
+  const auto& cable = dynamic_cast<const ancf::AncfCable3dBody&>(*model->bodies[bc]);
+  const auto& rope = dynamic_cast<const ancf::AncfHoistRopeBody&>(*model->bodies[br]);
+  const double* qc = s.q.data() + cable.q_offset;
+  const double* qr = s.q.data() + rope.q_offset;
+  for (int k = 0; k < 13; ++k) {
+    EXPECT_EQ(v.connectivity[k], k);
+    const Vec3 p(v.points[3 * k], v.points[3 * k + 1], v.points[3 * k + 2]);
+    EXPECT_LT((p - cable.PositionAt(qc, k * 2.0 / 12)).norm(), 1e-12) << k;
+  }
+  // the rope's points: every 4th at a node, the ends at the hook and the sheave
+  const auto node = [&](int n) { return Vec3(qr[6 * n], qr[6 * n + 1], qr[6 * n + 2]); };
+  for (int n = 0; n <= 2; ++n) {
+    const int k = 13 + 4 * n;
+    EXPECT_LT((Vec3(v.points[3 * k], v.points[3 * k + 1], v.points[3 * k + 2]) - node(n)).norm(), 1e-12) << n;
+  }
+  const int mid = 13 + 6;  // eta = 1.5: the material point half-way along element 1
+  const double L = rope.FreeLength(qr);
+  EXPECT_LT((Vec3(v.points[3 * mid], v.points[3 * mid + 1], v.points[3 * mid + 2]) -
+             rope.MaterialPoint(qr, 0.5 * L / 2.0)).norm(),
+            1e-12);
 }
 
 // signed volume of the tetrahedron (a, b, c, d)
