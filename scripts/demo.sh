@@ -39,7 +39,10 @@ sed -n 1,3p "$crane/reduce.txt"
 "$bin" run "$crane/crane.yaml" --out "$crane/run" --animation
 /usr/bin/python3 examples/crane/plot.py "$crane/run" --out "$crane/plots" > "$crane/plots.txt"
 cat "$crane/plots/crane_metrics.json"; echo
+echo "== crane: the hoisting rope two ways, massless and an ANCF rope of changing length, hoisting during the slew"
+/usr/bin/python3 examples/crane/rope_methods.py --flexmb "$bin" --body "$crane/boom.h5" --out "$crane/rope_methods" --animation
 echo "results in $out: truck_rigid/, truck_elastic/ (results.csv, summary.json; frame.h5, the reduced"
 echo "frame; animation/anim.pvd, the whole truck with the deformed, stress-coloured frame for ParaView), truck_plots/ (PNG: rigid against elastic, frame deflection and stress), and the examples'"
 echo "folders (results.csv, summary.json, anim.pvd for ParaView); crane/run (results.csv, anim.pvd: boom deformed 20x and stress-coloured, platform, drum, luffing cylinder, load)"
 echo "and crane/plots (crane_metrics.json: phi_2, swing, slewing torque, winch torque, cylinder force, boom deflection and stress; PNGs)"
+echo "and crane/rope_methods (rope_methods.md; ancf/anim.pvd: the rope as a line of changing length, hook, load, boom)"

@@ -33,6 +33,14 @@ void AddVariableStiffnessTerm(double k, double dk, double ddk, double beta, doub
   }
 }
 
+// The force of AddVariableStiffnessTerm without its tangents.
+template <class V>
+void AddVariableStiffnessForce(double k, double dk, double beta, double s, const V& d1, const V& ydot, V& Q) {
+  Q.noalias() -= (k * s) * d1;
+  Q(12) -= 0.5 * s * s * dk;
+  if (beta > 0.0) Q.noalias() -= (beta * k * d1.dot(ydot)) * d1;
+}
+
 }  // namespace
 
 AncfHoistRopeBody::Shape AncfHoistRopeBody::S0(double x) {
@@ -168,6 +176,17 @@ void AncfHoistRopeBody::AddMassTangent(const double* q, const double* a, double 
 
 void AncfHoistRopeBody::AddForces(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q,
                                   Eigen::Ref<MatX> dQdq, Eigen::Ref<MatX> dQdv) const {
+  Forces(q, v, g_W, Q, &dQdq, &dQdv);
+}
+
+bool AncfHoistRopeBody::AddForceVector(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q) const {
+  Forces(q, v, g_W, Q, nullptr, nullptr);
+  return true;
+}
+
+void AncfHoistRopeBody::Forces(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q,
+                               Eigen::Ref<MatX>* dQdq_p, Eigen::Ref<MatX>* dQdv_p) const {
+  const bool tangents = dQdq_p != nullptr;
   const double L = q[nL_], Ld = v[nL_];
   if (!(L > 0.0) || !std::isfinite(L))
     throw NumericalError("the free length of the hoist rope reached " + std::to_string(L) +
@@ -193,17 +212,20 @@ void AncfHoistRopeBody::AddForces(const double* q, const double* v, const Vec3& 
     t4_.segment<12>(6 * e).noalias() += Db * qe;
     t5_.segment<12>(6 * e).noalias() += Db * ve;
     for (int a = 0; a < 4; ++a) t6_.segment<3>(6 * e + 3 * a) += (rhoA_ / N) * gq[a];
-    dQdv.block<12, 12>(6 * e, 6 * e) -= Ld * (Mb + Cb - Cb.transpose());
-    dQdq.block<12, 12>(6 * e, 6 * e) += (Ld * Ld / L) * Db;
-
     // strain energy and damping of the element, extended coordinates (q_e, L)
     Vec13 y, yd, Qe = Vec13::Zero();
     y << qe, L;
     yd << ve, Ld;
-    Mat13 K = Mat13::Zero(), C = Mat13::Zero();
-    ElementStrain(e, y, yd, &Qe, &K, &C);
+    Mat13 K, C;
+    if (tangents) K.setZero(), C.setZero();
+    ElementStrain(e, y, yd, &Qe, tangents ? &K : nullptr, tangents ? &C : nullptr);
     Q.segment<12>(6 * e) += Qe.head<12>();
     Q(nL_) += Qe(12);
+    if (!tangents) continue;
+    Eigen::Ref<MatX>& dQdq = *dQdq_p;
+    Eigen::Ref<MatX>& dQdv = *dQdv_p;
+    dQdv.block<12, 12>(6 * e, 6 * e) -= Ld * (Mb + Cb - Cb.transpose());
+    dQdq.block<12, 12>(6 * e, 6 * e) += (Ld * Ld / L) * Db;
     dQdq.block<12, 12>(6 * e, 6 * e) += K.topLeftCorner<12, 12>();
     dQdv.block<12, 12>(6 * e, 6 * e) += C.topLeftCorner<12, 12>();
     dQdq.block<12, 1>(6 * e, nL_) += K.topRightCorner<12, 1>();
@@ -214,18 +236,19 @@ void AncfHoistRopeBody::AddForces(const double* q, const double* v, const Vec3& 
     dQdv(nL_, nL_) += C(12, 12);
   }
   const double qDq = qq.dot(t4_), qDqd = qq.dot(t5_), qdCqd = vq.dot(t2_), qdMqd = vq.dot(t1_);
-  // Lagrange's velocity terms of T
-  Q.head(nL_) += -Ld * (t1_ + t2_ - t3_) + (Ld * Ld / L) * t4_;
+  // Lagrange's velocity terms of T, gravity: V = -L t6 . q - rho A (L_total - L) g . p_drum
+  Q.head(nL_) += -Ld * (t1_ + t2_ - t3_) + (Ld * Ld / L) * t4_ + L * t6_;
+  Q(nL_) += -qdCqd + 0.5 * qdMqd - 2.0 * Ld * qDqd / L + 0.5 * Ld * Ld * qDq / (L * L) + 0.5 * rhoA_ * Ld * Ld +
+            t6_.dot(qq) - rhoA_ * g_W.dot(data_.drum_W);
+  if (!tangents) return;
+  Eigen::Ref<MatX>& dQdq = *dQdq_p;
+  Eigen::Ref<MatX>& dQdv = *dQdv_p;
   dQdv.col(nL_).head(nL_) += -(t1_ + t2_ - t3_) + (2.0 * Ld / L) * t4_;
   dQdq.col(nL_).head(nL_) += (-Ld * Ld / (L * L)) * t4_;
-  Q(nL_) += -qdCqd + 0.5 * qdMqd - 2.0 * Ld * qDqd / L + 0.5 * Ld * Ld * qDq / (L * L) + 0.5 * rhoA_ * Ld * Ld;
   dQdq.row(nL_).head(nL_) += ((-2.0 * Ld / L) * t5_ + (Ld * Ld / (L * L)) * t4_).transpose();
   dQdq(nL_, nL_) += 2.0 * Ld * qDqd / (L * L) - Ld * Ld * qDq / (L * L * L);
   dQdv.row(nL_).head(nL_) += (t1_ - t2_ - t3_ - (2.0 * Ld / L) * t4_).transpose();
   dQdv(nL_, nL_) += -2.0 * qDqd / L + Ld * qDq / (L * L) + rhoA_ * Ld;
-  // gravity: V = -L t6 . q - rho A (L_total - L) g . p_drum
-  Q.head(nL_) += L * t6_;
-  Q(nL_) += t6_.dot(qq) - rhoA_ * g_W.dot(data_.drum_W);
   dQdq.col(nL_).head(nL_) += t6_;
   dQdq.row(nL_).head(nL_) += t6_.transpose();
 }
@@ -257,6 +280,10 @@ double AncfHoistRopeBody::ElementStrain(int e, const Vec13& y, const Vec13& yd, 
     Vec13 dl;
     dl.head<12>() = (N / L) * A.transpose() * ah;
     dl(12) = -lam / L;
+    if (!K) {
+      AddVariableStiffnessForce(k, dk, beta, eps, Vec13(e1 * dl), yd, *Q);
+      continue;
+    }
     Mat13 ddl = Mat13::Zero();
     ddl.topLeftCorner<12, 12>() = (N / (L * la)) * A.transpose() * (Mat3::Identity() - ah * ah.transpose()) * A;
     ddl.topRightCorner<12, 1>() = (-N / (L * L)) * A.transpose() * ah;
@@ -276,6 +303,14 @@ double AncfHoistRopeBody::ElementStrain(int e, const Vec13& y, const Vec13& yd, 
     if (!Q) continue;
     const Eigen::Matrix<double, 3, 12> dc = Skew(a) * B - Skew(b) * A;
     const Vec12 dg = 2.0 * A.transpose() * a;
+    if (!K) {
+      for (int j = 0; j < 3; ++j) {
+        Vec13 d1 = Vec13::Zero();
+        d1.head<12>() = dc.row(j).transpose() / gg - c(j) * dg / (gg * gg);
+        AddVariableStiffnessForce(k, dk, beta, c(j) / gg, d1, yd, *Q);
+      }
+      continue;
+    }
     const Mat12 ddg = 2.0 * A.transpose() * A;
     for (int j = 0; j < 3; ++j) {
       const Mat3 E = Skew(Vec3::Unit(j)).transpose();

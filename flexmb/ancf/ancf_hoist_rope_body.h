@@ -101,6 +101,8 @@ class AncfHoistRopeBody final : public Body {
   bool MarkerJacobianFullRank() const override { return false; }
   void AddForces(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q,
                  Eigen::Ref<MatX> dQdq, Eigen::Ref<MatX> dQdv) const override;
+  /// The forces of AddForces without their tangents (kept iteration matrix).
+  bool AddForceVector(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q) const override;
   void AddMassTangent(const double* q, const double* a, double scale, Eigen::Ref<MatX> K) const override;
   /// The element blocks and the full row and column of L.
   bool BlockPattern(std::vector<std::pair<int, int>>& entries) const override;
@@ -160,8 +162,12 @@ class AncfHoistRopeBody final : public Body {
   // y = A x for a block-banded matrix given by element blocks B_e
   template <class BlockOf>
   void ApplyBanded(BlockOf&& block, const double* x, VecX& y) const;
+  // forces, and with dQdq, dQdv their tangents
+  void Forces(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q, Eigen::Ref<MatX>* dQdq,
+              Eigen::Ref<MatX>* dQdv) const;
   // axial and bending strain terms of element e at the extended
-  // coordinates (q_e, L): energy, or forces and tangents when Q != nullptr
+  // coordinates (q_e, L): energy, with Q != nullptr also the forces, and
+  // with K, C != nullptr their tangents
   double ElementStrain(int e, const Vec13& y, const Vec13& ydot, Vec13* Q, Mat13* K, Mat13* C) const;
   // check a marker's node; throws InputError naming it
   int NodeOf(const Marker& m) const;

@@ -44,6 +44,19 @@ TEST(AncfHoistRopeBody, ForceTangentsMatchCentralDifferences) {
   }
 }
 
+TEST(AncfHoistRopeBody, ForceVectorIsTheForceOfAddForces) {
+  const AncfHoistRopeBody b("rope", RopeData());
+  VecX q, v;
+  State(b, q, v);
+  const int n = b.nv();
+  const Vec3 g(0.0, 0.0, -9.81);
+  VecX Q = VecX::Zero(n), Qv = VecX::Zero(n);
+  MatX K = MatX::Zero(n, n), C = MatX::Zero(n, n);
+  b.AddForces(q.data(), v.data(), g, Q, K, C);
+  ASSERT_TRUE(b.AddForceVector(q.data(), v.data(), g, Qv));
+  EXPECT_LT((Q - Qv).norm(), 1e-12 * Q.norm());
+}
+
 TEST(AncfHoistRopeBody, ForcesArePotentialGradients) {
   HoistRopeData d = RopeData();
   d.section.damping = 0.0;
