@@ -33,6 +33,14 @@ std::string BodyName(const YAML::Node& node, ParseContext& ctx) {
   return name;
 }
 
+// checks the entry's keys, reads the body name and names the body in errors
+std::string BeginBody(const YAML::Node& node, ParseContext& ctx, std::initializer_list<const char*> keys) {
+  ctx.CheckKeys(node, keys);
+  const std::string name = BodyName(node, ctx);
+  ctx.SetEntity("body '" + name + "'");
+  return name;
+}
+
 // `axial_strain: engineering | green_lagrange` (default engineering)
 ancf::AxialStrainMeasure ParseAxialStrainMeasure(const YAML::Node& node, ParseContext& ctx) {
   if (!node["axial_strain"]) return ancf::AxialStrainMeasure::kEngineering;
@@ -103,12 +111,11 @@ void ParseNodeMarkers(const YAML::Node& node, int body, int nodes, ParseContext&
 }
 
 void ParseCable(const YAML::Node& node, ParseContext& ctx, std::map<std::string, int>& lines) {
-  ctx.CheckKeys(node, {"name", "type", "length", "elements", "section", "material", "start", "direction",
-                       "end", "normal", "damping", "angular_velocity", "load_per_length", "axial_strain",
-                       "markers"});
-  const std::string name = BodyName(node, ctx);
+  const std::string name =
+      BeginBody(node, ctx,
+                {"name", "type", "length", "elements", "section", "material", "start", "direction", "end", "normal",
+                 "damping", "angular_velocity", "load_per_length", "axial_strain", "markers"});
   const std::string entity = "body '" + name + "'";
-  ctx.SetEntity(entity);
   ancf::AncfCable3dData d;
   d.start_W = ctx.Vector3(node, "start", Vec3::Zero());
   if (node["end"]) {
@@ -139,11 +146,11 @@ void ParseCable(const YAML::Node& node, ParseContext& ctx, std::map<std::string,
 // plus free_length, stored_length, drum {position, radius, inertia} and
 // payout_speed; the payout marker "<name>.payout" is added
 void ParseHoistRope(const YAML::Node& node, ParseContext& ctx, std::map<std::string, int>& lines) {
-  ctx.CheckKeys(node, {"name", "type", "free_length", "stored_length", "elements", "section", "material", "start",
-                       "direction", "damping", "axial_strain", "drum", "payout_speed", "markers"});
-  const std::string name = BodyName(node, ctx);
+  const std::string name =
+      BeginBody(node, ctx,
+                {"name", "type", "free_length", "stored_length", "elements", "section", "material", "start",
+                 "direction", "damping", "axial_strain", "drum", "payout_speed", "markers"});
   const std::string entity = "body '" + name + "'";
-  ctx.SetEntity(entity);
   ancf::HoistRopeData d;
   d.free_length = ctx.Positive(node, "free_length");
   d.stored_length = ctx.Double(node, "stored_length", 0.0);
@@ -170,11 +177,10 @@ void ParseHoistRope(const YAML::Node& node, ParseContext& ctx, std::map<std::str
 
 // 3D beam with torsion: section {area, Iy, Iz, J}, material {E, G | nu, rho}
 void ParseBeam3d(const YAML::Node& node, ParseContext& ctx, std::map<std::string, int>& lines) {
-  ctx.CheckKeys(node, {"name", "type", "length", "elements", "section", "material", "start", "direction",
-                       "normal", "radius", "damping", "load_per_length", "axial_strain", "markers"});
-  const std::string name = BodyName(node, ctx);
+  const std::string name = BeginBody(node, ctx,
+                                     {"name", "type", "length", "elements", "section", "material", "start", "direction",
+                                      "normal", "radius", "damping", "load_per_length", "axial_strain", "markers"});
   const std::string entity = "body '" + name + "'";
-  ctx.SetEntity(entity);
   ancf::AncfBeam3dData d;
   d.length = ctx.Positive(node, "length");
   if (!node["elements"]) ctx.Fail(node, "missing key 'elements' (number of ANCF elements)");
@@ -245,11 +251,10 @@ void ParseAncfBody(const YAML::Node& node, ParseContext& ctx, std::map<std::stri
   if (node["type"].Scalar() == "ancf_cable") return ParseCable(node, ctx, lines);
   if (node["type"].Scalar() == "ancf_beam3d") return ParseBeam3d(node, ctx, lines);
   if (node["type"].Scalar() == "ancf_hoist_rope") return ParseHoistRope(node, ctx, lines);
-  ctx.CheckKeys(node, {"name", "type", "length", "elements", "section", "material", "start", "direction",
-                       "normal", "damping", "curvature", "load_per_length", "axial_strain", "markers"});
-  const std::string name = BodyName(node, ctx);
+  const std::string name = BeginBody(node, ctx,
+                                     {"name", "type", "length", "elements", "section", "material", "start", "direction",
+                                      "normal", "damping", "curvature", "load_per_length", "axial_strain", "markers"});
   const std::string entity = "body '" + name + "'";
-  ctx.SetEntity(entity);
 
   ancf::AncfBeam2dData d;
   d.length = ctx.Positive(node, "length");
