@@ -3,6 +3,8 @@
 
 import os
 import shutil
+import subprocess
+import sys
 
 import pytest
 
@@ -36,3 +38,16 @@ def cli_module():
 @pytest.fixture(scope="module")
 def source_dir_module():
     return SOURCE_DIR
+
+
+def build_crane_boom(cli, work):
+    """The example crane's boom as README.md builds it, in the folder `work`
+    (a pathlib.Path): boom.bdf (make_boom.py) and boom.h5 (flexmb reduce,
+    frame at the foot pin, 20 modes, deformation stiffening). Returns the
+    crane example's folder."""
+    crane = os.path.join(SOURCE_DIR, "examples", "crane")
+    subprocess.run([sys.executable, os.path.join(crane, "make_boom.py"), "--out", str(work / "boom.bdf")],
+                   check=True, capture_output=True)
+    subprocess.run([cli, "reduce", str(work / "boom.bdf"), "--fix", "1", "--interface", "1,2,3", "--modes", "20",
+                    "--deformation-stiffening", "-o", str(work / "boom.h5")], check=True, capture_output=True)
+    return crane

@@ -21,16 +21,13 @@ import subprocess
 import sys
 
 import pytest
+from conftest import build_crane_boom
 
 
 @pytest.fixture(scope="module")
 def methods(cli_module, source_dir_module, tmp_path_factory):
     work = tmp_path_factory.mktemp("crane_methods")
-    crane = os.path.join(source_dir_module, "examples", "crane")
-    subprocess.run([sys.executable, os.path.join(crane, "make_boom.py"), "--out", str(work / "boom.bdf")],
-                   check=True, capture_output=True)
-    subprocess.run([cli_module, "reduce", str(work / "boom.bdf"), "--fix", "1", "--interface", "1,2,3", "--modes", "20", "--deformation-stiffening",
-                    "-o", str(work / "boom.h5")], check=True, capture_output=True)
+    crane = build_crane_boom(cli_module, work)
     subprocess.run([sys.executable, os.path.join(crane, "methods.py"), "--flexmb", cli_module,
                     "--out", str(work / "methods"), "--bdf", str(work / "boom.bdf"), "--body", str(work / "boom.h5")],
                    check=True, capture_output=True, cwd=work)
