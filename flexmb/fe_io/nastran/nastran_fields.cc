@@ -1,8 +1,10 @@
 #include "flexmb/fe_io/nastran/nastran_fields.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -177,6 +179,86 @@ class DeckReader {
   bool has_current_ = false;
   bool done_ = false;
   bool in_equation_ = false;  // the current card is a DEQATN: its lines are free text
+  bool replicated_ = false;   // the last cards came from a replication entry
+  std::vector<std::string> last_rules_;  // its data fields
+
+  // Nastran's replication entry: field 1 "=" (one image) or "=n" / "=(n)"
+  // (n images) repeats the preceding card, each image from the one before
+  // with the rules of the data fields: "=" the field above, "==" it and all
+  // trailing fields above, "*x" / "*(x)" the field above plus x (an integer
+  // stays an integer), blank a blank field, anything else itself; an entry
+  // without data fields repeats the rules of the replication entry just
+  // before it. Only for single-line cards (8 data fields at most).
+  void Replicate(const std::string& first, std::vector<std::string> rules, int file, int line_no) {
+    Flush();
+    int count = 1;
+    if (first.size() > 1) {
+      std::string n = first.substr(1);
+      if (n.size() > 2 && n.front() == '(' && n.back() == ')') n = n.substr(1, n.size() - 2);
+      if (!ParseInteger(n, &count) || count < 1)
+        Fail(file, line_no, "malformed replication count '" + first + "' (expected =, =n or =(n), n >= 1)");
+    }
+    const bool blank = std::all_of(rules.begin(), rules.end(), [](const std::string& r) { return r.empty(); });
+    if (blank) {
+      // "=n" alone: n more images with the increments of the entry before
+      if (!replicated_)
+        Fail(file, line_no, "replication entry without data fields: it repeats the increments of a preceding "
+                            "replication entry, and there is none directly before it");
+      rules = last_rules_;
+    }
+    last_rules_ = rules;
+    if (deck.cards.empty() || deck.cards.back().file != file)
+      Fail(file, line_no, "replication entry ('=' in field 1) without a preceding card in this file");
+    if (deck.cards.back().fields.size() > 8)
+      Fail(file, line_no, "replication of " + deck.cards.back().name +
+                              ", a card with continuations, is not supported; write the cards out");
+    for (int image = 0; image < count; ++image) {
+      const Card& prev = deck.cards.back();
+      Card card;
+      card.name = prev.name;
+      card.file = file;
+      card.line = line_no;
+      bool all_rest = false;
+      for (size_t k = 0; k < 8; ++k) {
+        const std::string& rule = k < rules.size() ? rules[k] : std::string();
+        const std::string above = k < prev.fields.size() ? prev.fields[k] : std::string();
+        if (rule == "==") all_rest = true;
+        std::string value;
+        if (all_rest || rule == "=")
+          value = above;
+        else if (!rule.empty() && rule.front() == '*')
+          value = Increment(above, rule, file, line_no, k + 2);
+        else
+          value = rule;
+        card.fields.push_back(std::move(value));
+        card.lines.push_back(line_no);
+      }
+      while (!card.fields.empty() && card.fields.back().empty()) {
+        card.fields.pop_back();
+        card.lines.pop_back();
+      }
+      deck.cards.push_back(std::move(card));
+    }
+    replicated_ = true;
+  }
+
+  // the field `above` plus the increment of `rule` ("*x" or "*(x)")
+  std::string Increment(const std::string& above, const std::string& rule, int file, int line_no, size_t field) {
+    std::string x = rule.substr(1);
+    if (x.size() > 2 && x.front() == '(' && x.back() == ')') x = x.substr(1, x.size() - 2);
+    const std::string where = "field " + std::to_string(field) + " of the replication entry";
+    int ia = 0, ix = 0;
+    if (!LooksReal(above) && !LooksReal(x) && ParseInteger(above, &ia) && ParseInteger(x, &ix))
+      return std::to_string(static_cast<long long>(ia) + ix);
+    double a = 0.0, dx = 0.0;
+    if (!ParseReal(above, &a) || !ParseReal(x, &dx))
+      Fail(file, line_no, where + ": cannot add '" + x + "' to '" + above + "' (both must be numbers)");
+    char text[40];
+    std::snprintf(text, sizeof text, "%.17g", a + dx);
+    std::string out = text;
+    if (out.find_first_of(".eE") == std::string::npos) out += ".";  // stays a real
+    return out;
+  }
 
   [[noreturn]] void Fail(int file, int line, const std::string& message) const {
     throw InputError(message, ErrorContext{deck.files[file], line, ""});
@@ -300,8 +382,16 @@ class DeckReader {
                                            : std::string());
       }
     }
+    if (!first.empty() && first.front() == '=') {
+      Replicate(first, fields, file, line_no);
+      return;
+    }
     const bool continuation = first.empty() || first.front() == '+' || first.front() == '*';
     if (continuation) {
+      if (replicated_)
+        Fail(file, line_no,
+             "continuation line after a replication entry ('=' in field 1): replicating cards with "
+             "continuations is not supported; write the cards out");
       if (!has_current_)
         Fail(file, line_no, "continuation line without a preceding card");
       if (!large) {
@@ -313,6 +403,7 @@ class DeckReader {
       return;
     }
     Flush();
+    replicated_ = false;
     std::string name = first;
     if (name.back() == '*') name.pop_back();
     bool valid = !name.empty() && name.front() >= 'A' && name.front() <= 'Z';

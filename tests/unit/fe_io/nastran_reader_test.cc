@@ -146,6 +146,56 @@ TEST(NastranReader, ContinuationsAndCommentsInOneCard) {
 
 // BAROR defaults, OFFT (basic vs displacement system, offset system),
 // GRDSET defaults and GRID PS
+TEST(NastranReader, ReplicationEntriesMakeTheSameMeshAsTheCardsWrittenOut) {
+  // MSC Nastran Quick Reference, "Bulk Data Entry": = copies the field above,
+  // == it and the rest, *x adds x, =n repeats n times; blank stays blank
+  const std::string written =
+      "GRID    1               0.      0.      0.\n"
+      "GRID    2               0.5     0.      0.\n"
+      "GRID    3               1.      0.      0.\n"
+      "GRID    4               1.5     0.      0.\n"
+      "GRID    5               2.      0.      0.\n"
+      "GRID    6               2.      0.5     0.\n"
+      "CBAR    11      1       1       2       0.      0.      1.\n"
+      "CBAR    12      1       2       3       0.      0.      1.\n"
+      "CBAR    13      1       3       4       0.      0.      1.\n"
+      "CBAR    14      1       4       5       0.      0.      1.\n"
+      "PBAR    1       1       1.e-3   1.e-7   1.e-7   2.e-7\n"
+      "MAT1    1       2.1e11          0.3     7850.\n";
+  const std::string replicated =
+      "GRID    1               0.      0.      0.\n"
+      "=       *1      =       *.5     =       ==\n"
+      "=2\n"
+      "GRID,5,,2.,0.,0.\n"
+      "=,*(1),,=,*0.5,=\n"
+      "CBAR    11      1       1       2       0.      0.      1.\n"
+      "=(3)    *1      =       *1      *(1)    ==\n"
+      "PBAR    1       1       1.e-3   1.e-7   1.e-7   2.e-7\n"
+      "MAT1    1       2.1e11          0.3     7850.\n";
+  const Mesh a = ReadNastran(WriteScratch("written.bdf", written));
+  const Mesh b = ReadNastran(WriteScratch("replicated.bdf", replicated));
+  testing::MeshMatch tol;
+  tol.position = 1e-15;
+  testing::ExpectSameMesh(a, b, tol);
+  ASSERT_EQ(b.nodes.size(), 6u);
+  EXPECT_EQ(NodeById(b, 4).x, Vec3(1.5, 0.0, 0.0));
+  EXPECT_EQ(NodeById(b, 6).x, Vec3(2.0, 0.5, 0.0));
+  ASSERT_EQ(b.elements.size(), 4u);
+  EXPECT_EQ(b.elements[3].id, 14);
+  // errors name the file and line
+  for (const auto& [text, part] :
+       {std::pair<const char*, const char*>{"=       *1\n", "without a preceding card"},
+        {"GRID    1               0.      0.      0.\n=(x)\n", "malformed replication count"},
+        {"GRID    1               0.      0.      0.\n=       *1      =       *A\n", "cannot add"},
+        {"GRID    1               0.      0.      0.\n=       *1\n        1\n", "continuation line after a replication"},
+        {"CBEAM   1       1       1       2       0.      0.      1.\n        1.\n=       *1\n",
+         "a card with continuations"}}) {
+    const std::string path = WriteScratch("bad_replication.bdf", text);
+    const std::string message = InputErrorOf([&] { ReadNastran(path); });
+    testing::ExpectContains(message, {part, "bad_replication.bdf:"}, text);
+  }
+}
+
 TEST(NastranReader, BeamOrientationOffsetsAndDefaults) {
   const std::string path = WriteScratch("beams.bdf",
                                         "MAT1,1,2.1+11,,.3,7850.\n"
