@@ -242,8 +242,10 @@ class DeckReader {
     replicated_ = true;
   }
 
-  // the field `above` plus the increment of `rule` ("*x" or "*(x)")
-  std::string Increment(const std::string& above, const std::string& rule, int file, int line_no, size_t field) {
+  // the field above plus the increment of `rule` ("*x" or "*(x)")
+  std::string Increment(const std::string& field_above, const std::string& rule, int file, int line_no,
+                        size_t field) {
+    const std::string above = field_above.empty() ? "0" : field_above;  // a blank field counts as 0
     std::string x = rule.substr(1);
     if (x.size() > 2 && x.front() == '(' && x.back() == ')') x = x.substr(1, x.size() - 2);
     const std::string where = "field " + std::to_string(field) + " of the replication entry";

@@ -182,6 +182,10 @@ TEST(NastranReader, ReplicationEntriesMakeTheSameMeshAsTheCardsWrittenOut) {
   EXPECT_EQ(NodeById(b, 6).x, Vec3(2.0, 0.5, 0.0));
   ASSERT_EQ(b.elements.size(), 4u);
   EXPECT_EQ(b.elements[3].id, 14);
+  // a blank field above counts as 0 (pyNastran's models/other/dbxdra7.bdf
+  // increments the blank CD of a GRID this way)
+  const Mesh c = ReadNastran(WriteScratch("blank_increment.bdf", "GRID,1,,0.,,0.\n=,*1,=,*1.,*2.,=\n"));
+  EXPECT_EQ(NodeById(c, 2).x, Vec3(1.0, 2.0, 0.0));
   // errors name the file and line
   for (const auto& [text, part] :
        {std::pair<const char*, const char*>{"=       *1\n", "without a preceding card"},
