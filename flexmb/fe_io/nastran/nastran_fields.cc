@@ -363,6 +363,8 @@ class DeckReader {
         if (comma == std::string_view::npos) break;
         start = comma + 1;
       }
+      // a trailing comma (or several) adds only blank fields
+      while (parts.size() > 1 && Trim(parts.back()).empty()) parts.pop_back();
       first = Upper(Trim(parts[0]));
       large = !first.empty() && (first.front() == '*' || first.back() == '*');
       const size_t max_data = large ? 4 : 8;

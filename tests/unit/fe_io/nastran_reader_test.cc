@@ -200,6 +200,16 @@ TEST(NastranReader, ReplicationEntriesMakeTheSameMeshAsTheCardsWrittenOut) {
   }
 }
 
+TEST(NastranReader, TrailingCommasAddOnlyBlankFields) {
+  // pyNastran's models/other/conedg01e.bdf: a full free-field line closed by
+  // a comma ("..., 1.0, +C1,") has 11 parts, the last one empty
+  const Mesh m = ReadNastran(WriteScratch("trailing_comma.bdf",
+                                          "CORD2R, 5, , 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, +C1,\n"
+                                          "+C1, 1.0, 0.0, 0.0,,\n"
+                                          "GRID, 1, 5, 1.0, 2.0, 3.0,\n"));
+  EXPECT_LT((NodeById(m, 1).x - Vec3(1.0, 2.0, 3.0)).norm(), 1e-15);
+}
+
 TEST(NastranReader, BeamOrientationOffsetsAndDefaults) {
   const std::string path = WriteScratch("beams.bdf",
                                         "MAT1,1,2.1+11,,.3,7850.\n"
