@@ -66,23 +66,26 @@ class AncfLineBody : public Body {
   /// constant load per length, with their element-block tangents.
   void AddForces(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q,
                  Eigen::Ref<MatX> dQdq, Eigen::Ref<MatX> dQdv) const override {
-    // the load vector of the elements' weight and the load per length,
-    // evaluated again only where rho A changes along the line (equal lengths)
-    double rhoA_of_Qf = -1.0;
-    ElVec Qf;
-    for (int i = 0; i < n_el_; ++i) {
-      const auto& sec = self().ElementAt(i).section();
-      if (sec.rho * sec.A != rhoA_of_Qf) {
-        rhoA_of_Qf = sec.rho * sec.A;
-        Qf = self().ElementAt(i).DistributedLoad(self().LoadArg(rhoA_of_Qf * g_W + self().data_.load_per_length_W));
-      }
-      const Eigen::Map<const ElVec> e(q + kNodeDof * i), edot(v + kNodeDof * i);
-      ElVec Qe = Qf;
+    ForEachElementLoad(q, v, g_W, [&](int i, const auto& e, const auto& edot, ElVec& Qe) {
       ElMat K = ElMat::Zero(), C = ElMat::Zero();
       self().ElementAt(i).AddInternalForces(e, edot, Qe, K, C);
       Q.template segment<kElementDof>(kNodeDof * i) += Qe;
       dQdq.template block<kElementDof, kElementDof>(kNodeDof * i, kNodeDof * i) += K;
       dQdv.template block<kElementDof, kElementDof>(kNodeDof * i, kNodeDof * i) += C;
+    });
+  }
+  /// The forces of AddForces without their tangents, for Newton iterations
+  /// that keep an earlier iteration matrix; false (the caller uses
+  /// AddForces) for an element without AddInternalForceVector.
+  bool AddForceVector(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q) const override {
+    if constexpr (requires(const Element& el, const ElVec& e, ElVec& Qe) { el.AddInternalForceVector(e, e, Qe); }) {
+      ForEachElementLoad(q, v, g_W, [&](int i, const auto& e, const auto& edot, ElVec& Qe) {
+        self().ElementAt(i).AddInternalForceVector(e, edot, Qe);
+        Q.template segment<kElementDof>(kNodeDof * i) += Qe;
+      });
+      return true;
+    } else {
+      return false;
     }
   }
   /// Element-wise coupling: the element blocks, overlapping at the shared
@@ -226,6 +229,26 @@ class AncfLineBody : public Body {
     b.head<3>() = alpha.cross(s) + w.cross(w.cross(s));
     b.tail<3>() = alpha;
     return b;
+  }
+
+  /// Calls f(i, e, edot, Qe) for every element i with its coordinates,
+  /// velocities and the load vector of its weight (rho A g_W) and the load
+  /// per length in Qe; the load vector is evaluated again only where rho A
+  /// changes along the line (the elements have equal lengths).
+  template <class F>
+  void ForEachElementLoad(const double* q, const double* v, const Vec3& g_W, F&& f) const {
+    double rhoA_of_Qf = -1.0;
+    ElVec Qf;
+    for (int i = 0; i < n_el_; ++i) {
+      const auto& sec = self().ElementAt(i).section();
+      if (sec.rho * sec.A != rhoA_of_Qf) {
+        rhoA_of_Qf = sec.rho * sec.A;
+        Qf = self().ElementAt(i).DistributedLoad(self().LoadArg(rhoA_of_Qf * g_W + self().data_.load_per_length_W));
+      }
+      const Eigen::Map<const ElVec> e(q + kNodeDof * i), edot(v + kNodeDof * i);
+      ElVec Qe = Qf;
+      f(i, e, edot, Qe);
+    }
   }
 
   /// Default: the element takes world force vectors.

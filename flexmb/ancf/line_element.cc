@@ -233,6 +233,41 @@ void LineElement<D>::AddInternalForces(const Vec& e, const Vec& edot, Vec& Q, Ma
 }
 
 template <int D>
+void LineElement<D>::AddInternalForceVector(const Vec& e, const Vec& edot, Vec& Q) const {
+  const double beta = section_.damping;
+  // Q -= k s ds/de (+ the Kelvin-Voigt term), as AddAncfStrainTerm without tangents
+  auto add = [&](double k, double s, const Vec& d1) {
+    Q.noalias() -= (k * s) * d1;
+    if (beta > 0.0) Q.noalias() -= (beta * k * d1.dot(edot)) * d1;
+  };
+  const bool gl = section_.axial_strain == AxialStrainMeasure::kGreenLagrange;
+  ForEachAxialPoint([&](double xi, double EA) {
+    const ShapeMat Sx = ShapeSlope(xi);
+    const VecD a = Sx * e;
+    const double g = a.squaredNorm();
+    if (gl) return add(EA, 0.5 * (g - 1.0), Sx.transpose() * a);
+    const double l = std::sqrt(g);
+    if (!(l > 0.0)) throw NumericalError("ANCF element slope r' vanished (element collapsed)");
+    add(EA, l - 1.0, Sx.transpose() * a / l);
+  });
+  ForEachBendingPoint([&](double xi, double EI) {
+    const ShapeMat Sx = ShapeSlope(xi);
+    const ShapeMat Sxx = ShapeCurvature(xi);
+    const VecD a = Sx * e;
+    const VecD b = Sxx * e;
+    const double g = a.squaredNorm();
+    if (!(g > 0.0)) throw NumericalError("ANCF element slope r' vanished (element collapsed)");
+    const Vec dg = 2.0 * Sx.transpose() * a;
+    for (int k = 0; k < kCurv; ++k) {
+      const Eigen::Matrix<double, D, D> A = CrossMatrix<D>(k);
+      const double c = a.dot(A * b);
+      const Vec dc = Sx.transpose() * (A * b) + Sxx.transpose() * (A.transpose() * a);
+      add(EI, c / g - kappa0_(k), dc / g - (c / (g * g)) * dg);
+    }
+  });
+}
+
+template <int D>
 typename LineElement<D>::Vec LineElement<D>::DistributedLoad(const VecD& f) const {
   const double* xi = nullptr;
   const double* w = nullptr;

@@ -191,6 +191,10 @@ class LineElement {
   /// -dW/de) and their derivatives dQ/de and dQ/dedot to dQde, dQdedot.
   void AddInternalForces(const Vec& e, const Vec& edot, Vec& Q, Mat& dQde, Mat& dQdedot) const;
 
+  /// The generalized force of AddInternalForces without its derivatives
+  /// (for Newton iterations that keep an earlier iteration matrix).
+  void AddInternalForceVector(const Vec& e, const Vec& edot, Vec& Q) const;
+
   /// Generalized force of a constant load per unit reference length f [N/m]
   /// (gravity: f = rho A g): int S^T f ds (exact).
   Vec DistributedLoad(const VecD& f) const;

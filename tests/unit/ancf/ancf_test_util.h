@@ -185,7 +185,8 @@ inline void ExpectMarkerTangentsMatchCentralDifferences(const Body& b, const Vec
 }
 
 /// Checks the body's dQ/dq and dQ/dv at (q, v) under gravity g against
-/// central differences (relative 1e-6).
+/// central differences (relative 1e-6), and AddForceVector (where the body
+/// has it) against the force of AddForces (relative 1e-12).
 inline void ExpectBodyForceTangentsMatchCentralDifferences(const Body& b, const VecX& q, const VecX& v,
                                                            const Vec3& g) {
   const int n = b.nv();
@@ -198,6 +199,9 @@ inline void ExpectBodyForceTangentsMatchCentralDifferences(const Body& b, const 
   VecX Q = VecX::Zero(n);
   MatX K = MatX::Zero(n, n), C = MatX::Zero(n, n);
   b.AddForces(q.data(), v.data(), g, Q, K, C);
+  // the force-only path of kept iteration matrices gives the same force
+  VecX Qv = VecX::Zero(n);
+  if (b.AddForceVector(q.data(), v.data(), g, Qv)) EXPECT_LT((Qv - Q).norm(), 1e-12 * Q.norm());
   const double h = 1e-6;
   for (int j = 0; j < n; ++j) {
     VecX qp = q, qm = q, vp = v, vm = v;
