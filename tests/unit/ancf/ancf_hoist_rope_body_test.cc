@@ -1,6 +1,7 @@
-// Unit tests of the hoisting rope of changing length: force tangents and the
-// mass tangent against finite differences, forces against the potentials,
-// the kinetic energy against the integral of the material points'
+// Unit tests of the hoisting rope of changing length: force tangents (and
+// the force-only path) and the mass tangent against finite differences,
+// forces against the potentials, the kinetic energy against the integral
+// of the material points'
 // velocities (taken by finite differences of their positions, independent
 // of the body's matrices), the velocity terms against Lagrange's equations
 // of that kinetic energy, the payout marker, mass bookkeeping, bad input.
@@ -33,6 +34,13 @@ HoistRopeData RopeData() {
 
 void State(const AncfHoistRopeBody& b, VecX& q, VecX& v) { test_util::PerturbedBodyState(b, 0.05, q, v); }
 
+// the rope of RopeData without damping
+HoistRopeData UndampedRopeData() {
+  HoistRopeData d = RopeData();
+  d.section.damping = 0.0;
+  return d;
+}
+
 TEST(AncfHoistRopeBody, ForceTangentsMatchCentralDifferences) {
   for (auto measure : {AxialStrainMeasure::kEngineering, AxialStrainMeasure::kGreenLagrange}) {
     HoistRopeData d = RopeData();
@@ -44,22 +52,8 @@ TEST(AncfHoistRopeBody, ForceTangentsMatchCentralDifferences) {
   }
 }
 
-TEST(AncfHoistRopeBody, ForceVectorIsTheForceOfAddForces) {
-  const AncfHoistRopeBody b("rope", RopeData());
-  VecX q, v;
-  State(b, q, v);
-  const int n = b.nv();
-  const Vec3 g(0.0, 0.0, -9.81);
-  VecX Q = VecX::Zero(n), Qv = VecX::Zero(n);
-  MatX K = MatX::Zero(n, n), C = MatX::Zero(n, n);
-  b.AddForces(q.data(), v.data(), g, Q, K, C);
-  ASSERT_TRUE(b.AddForceVector(q.data(), v.data(), g, Qv));
-  EXPECT_LT((Q - Qv).norm(), 1e-12 * Q.norm());
-}
-
 TEST(AncfHoistRopeBody, ForcesArePotentialGradients) {
-  HoistRopeData d = RopeData();
-  d.section.damping = 0.0;
+  const HoistRopeData d = UndampedRopeData();
   const AncfHoistRopeBody b("rope", d);
   VecX q, v;
   State(b, q, v);
@@ -138,8 +132,7 @@ TEST(AncfHoistRopeBody, KineticEnergyIsThatOfTheMaterialPointsDrumAndStoredRope)
 
 TEST(AncfHoistRopeBody, VelocityTermsAreLagrangesEquations) {
   // M(q) vdot = Q: the velocity part of Q must be dT/dq - (dM/dq v) v
-  HoistRopeData d = RopeData();
-  d.section.damping = 0.0;
+  const HoistRopeData d = UndampedRopeData();
   const AncfHoistRopeBody b("rope", d);
   VecX q, v;
   State(b, q, v);
