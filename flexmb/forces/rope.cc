@@ -7,8 +7,10 @@
 #include "flexmb/forces/line_force.h"
 
 namespace flexmb {
-Rope::Rope(std::string name, RopeLaw law) : ForceElement(std::move(name)), law_(std::move(law)) {
-  if (law_.hoist_speed) hoisted_.emplace(law_.hoist_speed, kHoistPanel);
+Rope::Rope(std::string name, RopeLaw law)
+    : ForceElement(std::move(name)),
+      law_(std::move(law)),
+      payout_(law_.free_length, law_.free_length_function, law_.hoist_speed) {
   const ErrorContext ctx{"", 0, "force '" + this->name() + "'"};
   if (!std::isfinite(law_.axial_stiffness) || law_.axial_stiffness <= 0.0)
     throw InputError("axial_stiffness (EA) must be finite and > 0, got " +
@@ -25,16 +27,7 @@ Rope::Rope(std::string name, RopeLaw law) : ForceElement(std::move(name)), law_(
 }
 
 void Rope::FreeLength(double t, double& L0, double& L0dot) const {
-  if (law_.free_length_function) {
-    L0 = law_.free_length_function->Value(t);
-    L0dot = law_.free_length_function->Derivative(t);
-  } else if (law_.hoist_speed) {
-    L0 = law_.free_length - (*hoisted_)(t);
-    L0dot = -law_.hoist_speed->Value(t);
-  } else {
-    L0 = law_.free_length;
-    L0dot = 0.0;
-  }
+  payout_(t, L0, L0dot);
   if (!(L0 > 0.0) || !std::isfinite(L0dot)) {
     char what[160];
     std::snprintf(what, sizeof what, "the free length of the rope is %.6g m at t = %.6g s; it must stay > 0 "

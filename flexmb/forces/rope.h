@@ -5,7 +5,6 @@
 /// reeved in `falls` parts of line, whose free length follows the winch.
 
 #include <memory>
-#include <optional>
 
 #include "flexmb/forces/force_element.h"
 #include "flexmb/math/running_integral.h"
@@ -68,8 +67,7 @@ class Rope final : public ForceElement {
 
  private:
   RopeLaw law_;
-  // paid-out length: the integral of the hoisting speed (with one)
-  std::optional<RunningIntegral> hoisted_;
+  PaidOutLength payout_;  // L0(t) from the law
 };
 
 }  // namespace flexmb

@@ -7,11 +7,13 @@
 
 namespace flexmb {
 
-WinchDriver::WinchDriver(std::string name, WinchLaw law) : Joint(std::move(name)), law_(std::move(law)) {
+WinchDriver::WinchDriver(std::string name, WinchLaw law)
+    : Joint(std::move(name)),
+      law_(std::move(law)),
+      payout_(law_.free_length, law_.free_length_function, law_.hoist_speed) {
   const ErrorContext ctx{"", 0, "driver '" + this->name() + "'"};
   if (law_.hoist_speed && law_.free_length_function)
     throw InputError("give the free length as a function of time or a hoisting speed, not both", ctx);
-  if (law_.hoist_speed) hoisted_.emplace(law_.hoist_speed, RunningIntegral::kWinchPanel);
   double L, Ld;
   try {
     FreeLength(0.0, L, Ld);
@@ -23,16 +25,7 @@ WinchDriver::WinchDriver(std::string name, WinchLaw law) : Joint(std::move(name)
 std::string WinchDriver::EquationName(int) const { return "free length of the rope = L(t)"; }
 
 void WinchDriver::FreeLength(double t, double& L, double& Ldot) const {
-  if (law_.free_length_function) {
-    L = law_.free_length_function->Value(t);
-    Ldot = law_.free_length_function->Derivative(t);
-  } else if (hoisted_) {
-    L = law_.free_length - (*hoisted_)(t);
-    Ldot = -law_.hoist_speed->Value(t);
-  } else {
-    L = law_.free_length;
-    Ldot = 0.0;
-  }
+  payout_(t, L, Ldot);
   if (!(L > 0.0) || !std::isfinite(Ldot)) {
     char what[160];
     std::snprintf(what, sizeof what,

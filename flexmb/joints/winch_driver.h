@@ -4,7 +4,6 @@
 /// prescribes the rope's free length L(t) through its payout marker.
 
 #include <memory>
-#include <optional>
 
 #include "flexmb/joints/joint.h"
 #include "flexmb/math/running_integral.h"
@@ -46,7 +45,7 @@ class WinchDriver final : public Joint {
 
  private:
   WinchLaw law_;
-  std::optional<RunningIntegral> hoisted_;
+  PaidOutLength payout_;  // L_ref(t) from the law
 };
 
 }  // namespace flexmb

@@ -5,6 +5,8 @@
 /// length from its hoisting speed.
 
 #include <memory>
+#include <optional>
+#include <utility>
 
 #include "flexmb/math/scalar_function.h"
 
@@ -33,6 +35,38 @@ class RunningIntegral {
   double panel_;
   mutable long reached_ = 0;       // panels 0..reached_-1 summed
   mutable double sum_ = 0.0;       // their integral
+};
+
+/// Free length L(t) of a rope paid out by a winch, and its rate: a given
+/// function of time, else the length at t = 0 minus the integral of the
+/// hoisting speed (hauled in positive; RunningIntegral on panels of
+/// kWinchPanel), else constant. Shared by the rope force and the winch
+/// driver; not thread-safe (the integral's cache).
+class PaidOutLength {
+ public:
+  PaidOutLength(double free_length, std::shared_ptr<const ScalarFunction> function,
+                std::shared_ptr<const ScalarFunction> hoist_speed)
+      : free_length_(free_length), function_(std::move(function)) {
+    if (hoist_speed) hoisted_.emplace(std::move(hoist_speed), RunningIntegral::kWinchPanel);
+  }
+  /// L(t) [m] and dL/dt [m/s], unchecked.
+  void operator()(double t, double& L, double& Ldot) const {
+    if (function_) {
+      L = function_->Value(t);
+      Ldot = function_->Derivative(t);
+    } else if (hoisted_) {
+      L = free_length_ - (*hoisted_)(t);
+      Ldot = -hoisted_->function().Value(t);
+    } else {
+      L = free_length_;
+      Ldot = 0.0;
+    }
+  }
+
+ private:
+  double free_length_;
+  std::shared_ptr<const ScalarFunction> function_;
+  std::optional<RunningIntegral> hoisted_;
 };
 
 }  // namespace flexmb
