@@ -301,7 +301,7 @@ double AncfBeam3d::AxialTerms(const Vec& e, double xi, Vec& d1, Mat& d2) const {
 }
 
 AncfBeam3d::Vec3d AncfBeam3d::CurvatureTerms(const Vec& e, double xi, Eigen::Matrix<double, kDof, 3>& d1,
-                                             Mat (&d2)[3]) const {
+                                             Mat (*d2)[3]) const {
   const auto Sx = line_.ShapeSlope(xi);
   const auto Sxx = line_.ShapeCurvature(xi);
   Eigen::Matrix<double, 8, kDof> B = Eigen::Matrix<double, 8, kDof>::Zero();
@@ -320,7 +320,7 @@ AncfBeam3d::Vec3d AncfBeam3d::CurvatureTerms(const Vec& e, double xi, Eigen::Mat
   for (int c = 0; c < 3; ++c) {
     out(c) = k[c].v;
     d1.col(c).noalias() = B.transpose() * k[c].g;
-    d2[c].noalias() = B.transpose() * k[c].h * B;
+    if (d2) (*d2)[c].noalias() = B.transpose() * k[c].h * B;
   }
   return out;
 }
@@ -383,6 +383,27 @@ void AncfBeam3d::AddInternalForces(const Vec& e, const Vec& edot, Vec& Q, Mat& d
     const Vec3d k = CurvatureTerms(e, xi[g], g1, g2);
     for (int c = 0; c < 3; ++c)
       AddStrainTerm(w[g] * length_ * stiff[c], k(c) - kap0_[g][c], g1.col(c), g2[c], edot, Q, dQde, dQdedot);
+  }
+}
+
+void AncfBeam3d::AddInternalForceVector(const Vec& e, const Vec& edot, Vec& Q) const {
+  const double beta = section_.damping;
+  // Q -= k s ds/de (+ the Kelvin-Voigt term), as AddAncfStrainTerm without tangents
+  auto add = [&](double k, double s, const auto& d1) {
+    Q.noalias() -= (k * s) * d1;
+    if (beta > 0.0) Q.noalias() -= (beta * k * d1.dot(edot)) * d1;
+  };
+  Vec d1;
+  Mat d2;
+  ForEachAxialPoint([&](double x, double EAw, double eps0) { add(EAw, AxialTerms(e, x, d1, d2) - eps0, d1); });
+  const double stiff[3] = {section_.G * section_.J, section_.E * section_.Iy, section_.E * section_.Iz};
+  const double* xi = nullptr;
+  const double* w = nullptr;
+  Eigen::Matrix<double, kDof, 3> g1;
+  GaussPoints01(order_.bending, xi, w);
+  for (int g = 0; g < order_.bending; ++g) {
+    const Vec3d k = CurvatureTerms(e, xi[g], g1, nullptr);
+    for (int c = 0; c < 3; ++c) add(w[g] * length_ * stiff[c], k(c) - kap0_[g][c], g1.col(c));
   }
 }
 

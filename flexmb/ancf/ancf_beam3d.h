@@ -97,6 +97,9 @@ class AncfBeam3d {
   /// Adds the elastic and structural damping generalized forces at (e, edot)
   /// to Q (the elastic part is -dW/de) and their derivatives to dQde, dQdedot.
   void AddInternalForces(const Vec& e, const Vec& edot, Vec& Q, Mat& dQde, Mat& dQdedot) const;
+  /// The generalized force of AddInternalForces without its derivatives
+  /// (for Newton iterations that keep an earlier iteration matrix).
+  void AddInternalForceVector(const Vec& e, const Vec& edot, Vec& Q) const;
 
   /// Generalized force of a constant force per reference length f [N/m]
   /// (gravity: rho A g): int S^T f ds (exact; nothing on the twist angles).
@@ -118,7 +121,11 @@ class AncfBeam3d {
   // axial strain at xi with its gradient and Hessian in e
   double AxialTerms(const Vec& e, double xi, Vec& d1, Mat& d2) const;
   // torsion and bending strains (k1, k2, k3) at xi with their gradients and Hessians in e
-  Vec3d CurvatureTerms(const Vec& e, double xi, Eigen::Matrix<double, kDof, 3>& d1, Mat (&d2)[3]) const;
+  Vec3d CurvatureTerms(const Vec& e, double xi, Eigen::Matrix<double, kDof, 3>& d1, Mat (&d2)[3]) const {
+    return CurvatureTerms(e, xi, d1, &d2);
+  }
+  // the same; the second derivatives only if d2 is not null
+  Vec3d CurvatureTerms(const Vec& e, double xi, Eigen::Matrix<double, kDof, 3>& d1, Mat (*d2)[3]) const;
   // calls f(xi, EA w, eps0) at every point of the axial rules (weights
   // include the length and the split between reduced and full integration;
   // eps0 the reference axial strain at the point)
