@@ -43,28 +43,6 @@ void AddVariableStiffnessForce(double k, double dk, double beta, double s, const
 
 }  // namespace
 
-AncfHoistRopeBody::Shape AncfHoistRopeBody::S0(double x) {
-  const double h[4] = {1 - 3 * x * x + 2 * x * x * x, x - 2 * x * x + x * x * x, 3 * x * x - 2 * x * x * x,
-                       -x * x + x * x * x};
-  Shape S = Shape::Zero();
-  for (int a = 0; a < 4; ++a) S.block<3, 3>(0, 3 * a).diagonal().setConstant(h[a]);
-  return S;
-}
-
-AncfHoistRopeBody::Shape AncfHoistRopeBody::S1(double x) {
-  const double h[4] = {-6 * x + 6 * x * x, 1 - 4 * x + 3 * x * x, 6 * x - 6 * x * x, -2 * x + 3 * x * x};
-  Shape S = Shape::Zero();
-  for (int a = 0; a < 4; ++a) S.block<3, 3>(0, 3 * a).diagonal().setConstant(h[a]);
-  return S;
-}
-
-AncfHoistRopeBody::Shape AncfHoistRopeBody::S2(double x) {
-  const double h[4] = {-6 + 12 * x, -4 + 6 * x, 6 - 12 * x, -2 + 6 * x};
-  Shape S = Shape::Zero();
-  for (int a = 0; a < 4; ++a) S.block<3, 3>(0, 3 * a).diagonal().setConstant(h[a]);
-  return S;
-}
-
 AncfHoistRopeBody::AncfHoistRopeBody(std::string name, const HoistRopeData& data)
     : Body(std::move(name)), data_(data), n_el_(data.elements), nL_(6 * (data.elements + 1)) {
   const ErrorContext ctx{"", 0, "body '" + this->name() + "'"};

@@ -155,10 +155,11 @@ class AncfHoistRopeBody final : public Body {
   using Mat13 = Eigen::Matrix<double, 13, 13>;
   using Shape = Eigen::Matrix<double, 3, 12>;
 
-  // cubic Hermite shape matrices on the unit element and their derivatives
-  static Shape S0(double xi);
-  static Shape S1(double xi);
-  static Shape S2(double xi);
+  // cubic Hermite shape matrices on the unit element (mesh slopes: the line
+  // element of length 1) and their derivatives in xi
+  Shape S0(double xi) const { return unit_.Shape(xi); }
+  Shape S1(double xi) const { return unit_.ShapeSlope(xi); }
+  Shape S2(double xi) const { return unit_.ShapeCurvature(xi); }
   // y = A x for a block-banded matrix given by element blocks B_e
   template <class BlockOf>
   void ApplyBanded(BlockOf&& block, const double* x, VecX& y) const;
@@ -183,6 +184,13 @@ class AncfHoistRopeBody final : public Body {
   // Ca = int S^T S', Cb = int xi S^T S', Da = int S'^T S', Db = int xi S'^T S',
   // Dc = int xi^2 S'^T S'
   Mat12 M0_, Ca_, Cb_, Da_, Db_, Dc_;
+  // the line element of length 1, for its shape functions only (its section
+  // is a placeholder)
+  LineElement<3> unit_{1.0, [] {
+    BeamSection unit;
+    unit.E = unit.A = unit.I = unit.rho = 1.0;
+    return unit;
+  }()};
   // scratch of AddForces / MassMatrix (sized once; one thread per body)
   mutable VecX t1_, t2_, t3_, t4_, t5_, t6_;
 };
