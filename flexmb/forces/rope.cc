@@ -8,9 +8,7 @@
 
 namespace flexmb {
 Rope::Rope(std::string name, RopeLaw law)
-    : ForceElement(std::move(name)),
-      law_(std::move(law)),
-      payout_(law_.free_length, law_.free_length_function, law_.hoist_speed) {
+    : ForceElement(std::move(name)), law_(std::move(law)), payout_(law_) {
   const ErrorContext ctx{"", 0, "force '" + this->name() + "'"};
   if (!std::isfinite(law_.axial_stiffness) || law_.axial_stiffness <= 0.0)
     throw InputError("axial_stiffness (EA) must be finite and > 0, got " +

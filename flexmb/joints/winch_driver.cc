@@ -8,9 +8,7 @@
 namespace flexmb {
 
 WinchDriver::WinchDriver(std::string name, WinchLaw law)
-    : Joint(std::move(name)),
-      law_(std::move(law)),
-      payout_(law_.free_length, law_.free_length_function, law_.hoist_speed) {
+    : Joint(std::move(name)), law_(std::move(law)), payout_(law_) {
   const ErrorContext ctx{"", 0, "driver '" + this->name() + "'"};
   if (law_.hoist_speed && law_.free_length_function)
     throw InputError("give the free length as a function of time or a hoisting speed, not both", ctx);

@@ -44,10 +44,11 @@ class RunningIntegral {
 /// driver; not thread-safe (the integral's cache).
 class PaidOutLength {
  public:
-  PaidOutLength(double free_length, std::shared_ptr<const ScalarFunction> function,
-                std::shared_ptr<const ScalarFunction> hoist_speed)
-      : free_length_(free_length), function_(std::move(function)) {
-    if (hoist_speed) hoisted_.emplace(std::move(hoist_speed), RunningIntegral::kWinchPanel);
+  /// From a law with the fields free_length, free_length_function and
+  /// hoist_speed (RopeLaw, WinchLaw).
+  template <class Law>
+  explicit PaidOutLength(const Law& law) : free_length_(law.free_length), function_(law.free_length_function) {
+    if (law.hoist_speed) hoisted_.emplace(law.hoist_speed, RunningIntegral::kWinchPanel);
   }
   /// L(t) [m] and dL/dt [m/s], unchecked.
   void operator()(double t, double& L, double& Ldot) const {
