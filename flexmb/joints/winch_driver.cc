@@ -34,13 +34,14 @@ void WinchDriver::FreeLength(double t, double& L, double& Ldot) const {
   }
 }
 
-void WinchDriver::Evaluate(const MarkerState& mi, const MarkerState&, double t, JointEval& e) const {
+void WinchDriver::Evaluate(const MarkerState& mi, const MarkerState& mj, double t, JointEval& e) const {
   double L, Ld;
   FreeLength(t, L, Ld);
-  e.phi(0) = mi.p_WM.x() - L;
+  e.phi(0) = mi.p_WM.x() - mj.p_WM.x() - L;
   e.phi_t(0) = -Ld;
   e.D.row(0).setZero();
   e.D(0, 0) = 1.0;
+  e.D(0, 6) = -1.0;
 }
 
 }  // namespace flexmb

@@ -21,10 +21,12 @@ struct WinchLaw {
   std::shared_ptr<const ScalarFunction> free_length_function;
 };
 
-/// One equation on marker i, the rope's payout marker (at (L, 0, 0) in
-/// world): phi = x_i - L_ref(t). Marker j (on another body, normally
-/// ground) is not used. The multiplier is the rope's pull on the drum line
-/// (the drum torque divided by the winding radius) [N]. The hoisting speed
+/// One equation between marker i, the rope's payout marker (at (L, 0, 0) in
+/// world), and marker j, a ground marker at the world origin:
+/// phi = x_i - x_j - L_ref(t). The multiplier is the rope's pull on the drum
+/// line (the drum torque divided by the winding radius) [N]; as for every
+/// joint, the reaction on marker j (a joint_reaction sensor) is that pull
+/// along world x. The hoisting speed
 /// is integrated as in Rope (RunningIntegral, panels of kWinchPanel),
 /// so one driver must not be evaluated from two threads at once.
 class WinchDriver final : public Joint {

@@ -25,6 +25,7 @@
 #include "example_model.h"
 #include "flexmb/ancf/ancf_hoist_rope_body.h"
 #include "flexmb/common/error.h"
+#include "flexmb/sensors/joint_sensors.h"
 #include "flexmb/solver/initial_conditions.h"
 #include "flexmb/solver/simulator.h"
 #include "flexmb/solver/statics.h"
@@ -113,6 +114,11 @@ TEST(HoistRope, StaticStretchUnderHookLoadAndOwnWeight) {
   const double pull = s.lambda(model->joints[model->FindJoint("winch")]->lambda_offset);
   std::printf("winch pull %.3f N, load and span weight %.3f N\n", pull, F + kRhoA * kG * L0);
   EXPECT_NEAR(pull, F + kRhoA * kG * L0, 1e-3 * (F + kRhoA * kG * L0));
+  // a joint_reaction sensor on the winch reports that pull (it read 0 when
+  // the equation left out the driver's ground marker)
+  double reaction[6];
+  JointReactionSensor("pull", model->FindJoint("winch"), true).Evaluate(*model, s, ws, reaction);
+  EXPECT_NEAR(reaction[0], pull, 1e-9 * pull);
   EXPECT_NEAR(-z_hook - L0, stretch, 1e-4 * stretch);
   // the rope stays straight below the sheave
   EXPECT_LT(std::hypot(q[6 * rope.elements()], q[6 * rope.elements() + 1]), 1e-9);
