@@ -65,6 +65,9 @@ void CheckOptions(const fe::Mesh& mesh, const ReductionOptions& o) {
       o.rayleigh_beta < 0.0) {
     throw InputError("Rayleigh damping coefficients must be finite and >= 0", where);
   }
+  if (!std::isfinite(o.eigen_tolerance) || o.eigen_tolerance < 0.0 || o.eigen_tolerance >= 1.0) {
+    throw InputError("the eigen solver tolerance must be in [0, 1) (0: the solver's default)", where);
+  }
   for (double z : o.damping_ratios) {
     if (!std::isfinite(z) || z < 0.0) throw InputError("damping ratios must be finite and >= 0", where);
   }

@@ -8,6 +8,8 @@
 /// the rigid-body modes of a free body (detected against the geometric
 /// rigid-body vectors), optional truncation.
 
+#include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -16,6 +18,23 @@
 #include "flexmb/reduction/reduced_body.h"
 
 namespace flexmb::reduction {
+
+/// Steps 2 to 4 of the reduction (factorization of K_ii, static modes,
+/// fixed-interface modes) by another solver than the built-in CHOLMOD one,
+/// e.g. MUMPS and SLEPc over MPI (reduction/petsc/). Given the interior
+/// blocks K_ii (n_i x n_i), K_ib (n_i x n_b) and M_ii of the free DOF, it
+/// returns Psi = -K_ii^{-1} K_ib and the `count` lowest eigenpairs of
+/// K_ii phi = omega^2 M_ii phi, ascending, Phi^T M_ii Phi = I. It throws
+/// NumericalError if K_ii is singular; the caller then names the DOF.
+struct InteriorSolution {
+  Eigen::MatrixXd psi;                  ///< n_i x n_b static modes
+  Eigen::MatrixXd phi;                  ///< n_i x count normal modes, M_ii-orthonormal
+  Eigen::VectorXd frequencies_hz;       ///< their frequencies [Hz], ascending
+  /// Wall times of the three steps [s] (ReductionTimings).
+  double factorize_s = 0.0, static_modes_s = 0.0, normal_modes_s = 0.0;
+};
+using InteriorSolver = std::function<InteriorSolution(const fe::SparseMat& k_ii, const fe::SparseMat& k_ib,
+                                                      const fe::SparseMat& m_ii, int count)>;
 
 /// Options of the reduction.
 struct ReductionOptions {
@@ -37,6 +56,12 @@ struct ReductionOptions {
   /// fallback) or Spectra alone (the baseline of bench/reduce.cc).
   enum class EigenSolver { kBlockLanczos, kSpectra };
   EigenSolver eigen_solver = EigenSolver::kBlockLanczos;
+  /// Relative residual to which the fixed-interface modes are solved; 0:
+  /// the solver's default (block Lanczos 1e-6, which leaves the reduced
+  /// frequencies exact to about 1e-12 and the modes to about 1e-6 over the
+  /// relative gap; the PETSc solver 1e-12). A smaller value makes the modes
+  /// and invariants of two solvers agree to about it.
+  double eigen_tolerance = 0.0;
   /// Also compute the geometric stiffness of the centrifugal load cases
   /// (reduction/geometric_stiffness.h), held at `fixed_nodes` or, without
   /// them, at the interface nodes. Every element type (beams, shells,
@@ -51,6 +76,11 @@ struct ReductionOptions {
   /// (StressModes::solid_node: 6 rows per corner, up to 8 per element, so
   /// the body file grows by about that factor for the solid part).
   bool solid_corner_stress = false;
+  /// Steps 2 to 4 by another solver (see InteriorSolver); empty: CHOLMOD
+  /// and block Lanczos in this process. With a frequency cut-off it is
+  /// called again with a larger count until a mode above the cut-off is
+  /// found.
+  InteriorSolver interior_solver;
 };
 
 /// Wall time of each step [s]. The static and the normal modes are computed
