@@ -27,6 +27,9 @@ PACKAGES=(
   python3-distributed
   # the study files are rewritten with PyYAML (python/flexmb/studyfile.py)
   python3-yaml
+  # the distributed reduction (flexmb reduce --backend petsc under mpirun;
+  # flexmb/reduction/petsc/): PETSc with MUMPS, SLEPc, Open MPI
+  petsc-dev slepc-dev libmumps-dev openmpi-bin libopenmpi-dev
 )
 
 missing=()

@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -27,6 +28,9 @@
 #include "apps/flexmb/commands/straight_run.h"
 #include "apps/flexmb/commands/post_command.h"
 #include "apps/flexmb/commands/study_command.h"
+#ifdef FLEXMB_HAVE_PETSC
+#include "flexmb/reduction/petsc/petsc_interior_solver.h"
+#endif
 
 namespace {
 
@@ -77,6 +81,46 @@ int Guarded(F&& command) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;
   }
+}
+
+// "reduce --backend petsc": rank 0 runs the command with the distributed
+// interior solver, the other ranks serve its collective steps
+int ReduceWithPetsc(flexmb::io::ReduceOptions& opt, int* argc, char*** argv) {
+#ifdef FLEXMB_HAVE_PETSC
+  namespace rp = flexmb::reduction::petsc;
+  std::optional<rp::MpiSession> session;
+  const int started = Guarded([&] {
+    session.emplace(argc, argv);
+    return 0;
+  });
+  if (started != 0) return started;
+  if (session->rank() != 0) return rp::ServeInteriorSolves();
+  rp::WorkerRelease release(true);
+  rp::PetscSolverOptions po;
+  if (opt.eigen_tolerance > 0.0) po.eigen_tolerance = opt.eigen_tolerance;
+  opt.interior_solver = rp::MakePetscInteriorSolver(po);
+  opt.backend = "MUMPS and SLEPc (PETSc) on " + std::to_string(session->size()) + " MPI ranks";
+  return Guarded([&] { return flexmb::io::Reduce(opt, std::cout); });
+#else
+  // flexmb itself does not link PETSc and MPI (they would add 70 ms to the
+  // start of every run): the same command line goes to flexmb-petsc, this
+  // program built with them, beside this executable (exec keeps the process,
+  // so mpirun's rank environment stays valid)
+  (void)opt;
+  (void)argc;
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const std::filesystem::path helper = self.parent_path() / "flexmb-petsc";
+  if (!ec && std::filesystem::exists(helper, ec)) {
+    execv(helper.c_str(), *argv);
+    std::fprintf(stderr, "error: --backend petsc: cannot start %s\n", helper.c_str());
+    return 1;
+  }
+  std::fprintf(stderr, "error: --backend petsc: this flexmb was built without PETSc (no %s; install petsc-dev, "
+                       "slepc-dev and openmpi with scripts/install-deps.sh and configure again; CMake option "
+                       "FLEXMB_PETSC)\n", helper.c_str());
+  return 2;
+#endif
 }
 
 }  // namespace
@@ -268,6 +312,14 @@ int main(int argc, char** argv) {
                      "mm-kg-s, mm-g-ms, cm-g-s, in-lbf-s; models use SI body files only");
   reduce->add_option("--output,-o", reduce_opt.output, "body file to write (.h5)")->required();
   reduce->add_flag("--json", reduce_opt.json, "print one JSON object instead of text");
+  reduce->add_option("--eigen-tolerance", reduce_opt.eigen_tolerance,
+                     "relative residual of the fixed-interface modes (default: block Lanczos 1e-6, petsc 1e-12)")
+      ->check(CLI::Range(0.0, 0.1));
+  std::string reduce_backend = "cholmod";
+  reduce->add_option("--backend", reduce_backend,
+                     "solver of the factorization and the modes: cholmod (this process, default) or petsc (MUMPS "
+                     "and SLEPc over MPI: run under mpirun -np N)")
+      ->check(CLI::IsMember({"cholmod", "petsc"}));
 
   CLI::App* body = app.add_subcommand("body", "flexible body files: info");
   body->require_subcommand(1);
@@ -376,6 +428,7 @@ int main(int argc, char** argv) {
   if (fe_static->parsed()) return Guarded([&] { return flexmb::io::FeStatic(static_opt, std::cout); });
   if (info->parsed()) return Guarded([&] { return flexmb::io::FeInfo(info_opt, std::cout); });
   if (fe_export->parsed()) return Guarded([&] { return flexmb::io::FeExport(export_opt, std::cout); });
+  if (reduce->parsed() && reduce_backend == "petsc") return ReduceWithPetsc(reduce_opt, &argc, &argv);
   if (reduce->parsed()) return Guarded([&] { return flexmb::io::Reduce(reduce_opt, std::cout); });
   if (post->parsed()) return Guarded([&] { return flexmb::commands::Post(post_opt, std::cout); });
   if (body_info->parsed()) return Guarded([&] { return flexmb::io::BodyInfo(body_info_opt, std::cout); });

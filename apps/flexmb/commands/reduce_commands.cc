@@ -131,6 +131,11 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
   ro.geometric_stiffening = opt.geometric_stiffening;
   ro.deformation_stiffening = opt.deformation_stiffening;
   ro.solid_corner_stress = opt.solid_corner_stress;
+  ro.interior_solver = opt.interior_solver;
+  ro.eigen_tolerance = opt.eigen_tolerance;
+  if (imported_modes && opt.interior_solver) {
+    throw InputError("--modes-file brings the modes: there is nothing for --backend petsc to solve");
+  }
   if (!opt.rayleigh.empty()) {
     const std::vector<double> ab = NumberList(opt.rayleigh, "--rayleigh");
     if (ab.size() != 2 || ab[0] < 0.0 || ab[1] < 0.0) {
@@ -192,6 +197,7 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
     return reduction::ReduceBasis(model, a, basis, ro, &t);
   });
   const Clock::time_point t2 = Clock::now();
+  body.provenance.emplace_back("solver", imported_modes ? "none (the modes file's basis)" : opt.backend);
   // the FE model's units as given; numbers that do not look like them (SI only) warn
   body.units = units.attribute;
   if (&units == &SiUnits()) {
@@ -216,6 +222,7 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
     s << "  \"interface_nodes\": " << body.interface_nodes.size() << ",\n";
     s << "  \"fixed_nodes\": " << ro.fixed_nodes.size() << ",\n";
     s << "  \"frame\": " << JsonString(frame) << ",\n";
+    s << "  \"solver\": " << JsonString(opt.backend) << ",\n";
     JsonModesAndMass(s, body, mp);
     // wall times need no 17 digits
     s << "  \"timings_s\": {\"read\": " << Short(Seconds(t0, t1)) << ", \"assemble\": " << Short(t.assemble)
@@ -229,6 +236,7 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
     if (!ro.fixed_nodes.empty()) s << ", " << ro.fixed_nodes.size() << " nodes clamped";
     s << "\n";
     if (!frame.empty()) s << "floating frame: " << frame << "\n";
+    if (opt.interior_solver) s << "factorization and modes: " << opt.backend << "\n";
     s << "Craig-Bampton basis: " << body.static_modes << " static + " << body.normal_modes << " normal modes; "
       << body.rigid_modes_removed << " rigid-body modes removed; " << nk << " flexible modes kept\n";
     if (mp.mass > 0.0) s << "mass " << Short(mp.mass) << " kg, centre of mass " << ShortVector(mp.center) << " m\n";

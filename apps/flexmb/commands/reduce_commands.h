@@ -14,6 +14,8 @@
 #include <ostream>
 #include <string>
 
+#include "flexmb/reduction/craig_bampton.h"
+
 namespace flexmb::io {
 
 /// Options of "reduce".
@@ -57,6 +59,14 @@ struct ReduceOptions {
   std::string units = "SI";
   std::string output;      ///< body file to write (.h5), required
   bool json = false;       ///< one JSON object instead of text
+  /// Relative residual of the fixed-interface modes (ReductionOptions::
+  /// eigen_tolerance); 0: the solver's default.
+  double eigen_tolerance = 0.0;
+  /// Steps 2 to 4 by another solver (reduction::ReductionOptions::
+  /// interior_solver, e.g. PETSc over MPI); empty: CHOLMOD here.
+  reduction::InteriorSolver interior_solver;
+  /// Names that solver in the report and the body's provenance.
+  std::string backend = "CHOLMOD and block Lanczos (this process)";
 };
 
 /// "reduce": loads the model, resolves the interface and --fix nodes,
