@@ -502,6 +502,16 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
     }
     block_ptr[ne + np + k + 1] = static_cast<int>(block_full.size());
   }
+  // blocks outside the subset: no DOF, so neither pattern nor values
+  if (!options.block_subset.empty()) {
+    if (static_cast<int>(options.block_subset.size()) != nb) {
+      throw InputError("assembly: the block subset has " + std::to_string(options.block_subset.size()) +
+                       " entries for " + std::to_string(nb) + " blocks");
+    }
+    for (int b = 0; b < nb; ++b) {
+      if (!options.block_subset[b]) std::fill(block_full.begin() + block_ptr[b], block_full.begin() + block_ptr[b + 1], -1);
+    }
+  }
 
   // sparsity pattern: count, fill, sort and unique per column
   const int nf = dm.n_free;
@@ -556,6 +566,7 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
   MatX ke, me, kl, ml;
   std::vector<Vec3> coords;
   for (int b = 0; b < nb; ++b) {
+    if (!options.block_subset.empty() && !options.block_subset[b]) continue;
     const int* full = block_full.data() + block_ptr[b];
     const int n = block_ptr[b + 1] - block_ptr[b];
     if (b < ne) {

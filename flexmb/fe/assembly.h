@@ -53,6 +53,13 @@ struct AssemblyOptions {
   /// with other DOF dependent (fe::MakeNodesIndependent), e.g. for an RBE3
   /// reference node that is an interface node of a reduction.
   std::vector<int> independent_nodes;
+  /// Assemble only some blocks (for a distributed assembly: each process
+  /// its share). Blocks are the elements, then the point masses, then the
+  /// scalar springs, in mesh order; block b is added where block_subset[b]
+  /// != 0. Empty: all. The DOF map and T are those of the whole model, so
+  /// the matrices of a partition of the blocks sum to the whole model's
+  /// (K, M and M_full alike). Its size must then be the number of blocks.
+  std::vector<char> block_subset;
 };
 
 /// Numbers the DOF, computes every element's matrices and assembles K and M

@@ -178,6 +178,38 @@ TEST(Assembly, OptionsForConstraintsAndFixedNodes) {
 
 // a rigid link between point masses is one rigid body: the 6 x 6 mass at the
 // independent node and the mass properties match the analytic sums
+// A distributed assembly gives each process a share of the blocks: the
+// matrices of the shares (elements, the point mass, in two subsets) sum to
+// the whole model's K, M and M_full, with the same DOF map and T; a subset
+// of the wrong size is refused.
+TEST(Assembly, BlockSubsetsSumToTheWholeModel) {
+  const Mesh mesh = MixedModel();
+  const AssembledModel whole = Assemble(mesh);
+  const size_t blocks = mesh.elements.size() + mesh.point_masses.size() + mesh.springs.size();
+  AssemblyOptions a, b;
+  a.block_subset.assign(blocks, 0);
+  b.block_subset.assign(blocks, 1);
+  for (size_t k = 0; k < blocks; k += 2) {
+    a.block_subset[k] = 1;
+    b.block_subset[k] = 0;
+  }
+  const AssembledModel pa = Assemble(mesh, a), pb = Assemble(mesh, b);
+  EXPECT_EQ(pa.dofs.n_free, whole.dofs.n_free);
+  EXPECT_EQ((Eigen::MatrixXd(pa.T) - Eigen::MatrixXd(whole.T)).norm(), 0.0);
+  const Eigen::MatrixXd k = Eigen::MatrixXd(whole.K), m = Eigen::MatrixXd(whole.M), mf = Eigen::MatrixXd(whole.M_full);
+  // both shares hold something of K and M, and the point mass went to one
+  for (const AssembledModel* p : {&pa, &pb}) {
+    EXPECT_GT(Eigen::MatrixXd(p->K).norm(), 1e-6 * k.norm());
+    EXPECT_GT(Eigen::MatrixXd(p->M).norm(), 1e-6 * m.norm());
+  }
+  EXPECT_LT((Eigen::MatrixXd(pa.K) + Eigen::MatrixXd(pb.K) - k).norm(), 1e-14 * k.norm());
+  EXPECT_LT((Eigen::MatrixXd(pa.M) + Eigen::MatrixXd(pb.M) - m).norm(), 1e-14 * m.norm());
+  EXPECT_LT((Eigen::MatrixXd(pa.M_full) + Eigen::MatrixXd(pb.M_full) - mf).norm(), 1e-14 * mf.norm());
+  AssemblyOptions bad;
+  bad.block_subset.assign(blocks + 1, 1);
+  EXPECT_THROW(Assemble(mesh, bad), InputError);
+}
+
 TEST(Assembly, RigidLinkReproducesRigidBodyMass) {
   Mesh mesh;
   const Vec3 xa(0.2, -0.1, 0.3), xb(1.0, 2.0, -0.5), xc(-0.7, 0.4, 1.1);
