@@ -223,9 +223,7 @@ Eigen::VectorXd ReorthonormalizeModes(const Eigen::MatrixXd& mass, const Eigen::
 
 }  // namespace
 
-ReducedBody ReduceCraigBampton(const fe::FeModel& model, const ReductionOptions& options_in,
-                               ReductionTimings* timings) {
-  const fe::Mesh& mesh = model.mesh;
+ReductionOptions PrepareReductionOptions(const fe::Mesh& mesh, const ReductionOptions& options_in) {
   CheckOptions(mesh, options_in);
   ReductionOptions options = options_in;
   // interface nodes listed twice count once
@@ -236,25 +234,35 @@ ReducedBody ReduceCraigBampton(const fe::FeModel& model, const ReductionOptions&
       options.interface_nodes.push_back(n);
     }
   }
-  ReductionTimings local_timings;
-  ReductionTimings& t = timings != nullptr ? *timings : local_timings;
-  t = ReductionTimings{};
+  return options;
+}
 
-  auto t0 = Clock::now();
+fe::AssemblyOptions ReductionAssemblyOptions(const ReductionOptions& options) {
   fe::AssemblyOptions assembly;
   assembly.mass_form = options.mass_form;
   assembly.extra_fixed_nodes = options.fixed_nodes;
   // an RBE3 reference node as interface node keeps its own DOF
   assembly.independent_nodes = options.interface_nodes;
-  const fe::AssembledModel a = fe::BuildMatrices(model, assembly);
+  return assembly;
+}
+
+ReducedBody ReduceCraigBampton(const fe::FeModel& model, const ReductionOptions& options_in,
+                               ReductionTimings* timings) {
+  const ReductionOptions options = PrepareReductionOptions(model.mesh, options_in);
+  ReductionTimings local_timings;
+  ReductionTimings& t = timings != nullptr ? *timings : local_timings;
+  t = ReductionTimings{};
+
+  auto t0 = Clock::now();
+  const fe::AssembledModel a = fe::BuildMatrices(model, ReductionAssemblyOptions(options));
   t.assemble = Seconds(t0);
 
-  const CraigBamptonBasis basis = BuildCraigBamptonBasis(mesh, a, options, &t);
+  const CraigBamptonBasis basis = BuildCraigBamptonBasis(model.mesh, a, options, &t);
   return ReduceBasis(model, a, basis, options, &t);
 }
 
 ReducedBody ReduceBasis(const fe::FeModel& model, const fe::AssembledModel& a, const CraigBamptonBasis& basis,
-                        const ReductionOptions& options, ReductionTimings* timings) {
+                        const ReductionOptions& options, ReductionTimings* timings, const DistributedSteps* steps) {
   const fe::Mesh& mesh = model.mesh;
   ReductionTimings local_timings;
   ReductionTimings& t = timings != nullptr ? *timings : local_timings;
@@ -297,11 +305,12 @@ ReducedBody ReduceBasis(const fe::FeModel& model, const fe::AssembledModel& a, c
   const Eigen::MatrixXd y = y_all.leftCols(nk);
 
   // modes: 6 rows per node, every node, through T (dependent nodes included)
-  const Eigen::MatrixXd h_free = basis.Expand(y);
+  const bool root = steps == nullptr || steps->root;
+  const Eigen::MatrixXd h_free = steps != nullptr ? steps->expand(y) : basis.Expand(y);
   ReducedBody body;
   const int nn = static_cast<int>(mesh.nodes.size());
-  body.modes = Eigen::MatrixXd::Zero(6 * static_cast<Eigen::Index>(nn), nk);
-  {
+  if (root) {
+    body.modes = Eigen::MatrixXd::Zero(6 * static_cast<Eigen::Index>(nn), nk);
     // row 6 node + c of the modes = row dofs.full[node][c] of T h_free
     const Eigen::SparseMatrix<double, Eigen::RowMajor, int> tr = a.T;
     for (int j = 0; j < nk; ++j) {
@@ -322,12 +331,13 @@ ReducedBody ReduceBasis(const fe::FeModel& model, const fe::AssembledModel& a, c
   // section 4); H^T M_full H = y^T M_CB y is at hand (M = T^T M_full T)
   const auto t_invariants = Clock::now();
   const Eigen::MatrixXd modal_mass = y.transpose() * basis.mass * y;
-  body.invariants = ComputeInertiaInvariants(mesh, a, body.modes, &modal_mass);
+  body.invariants = steps != nullptr ? steps->invariants(body.modes, modal_mass)
+                                     : ComputeInertiaInvariants(mesh, a, body.modes, &modal_mass);
   t.invariants = Seconds(t_invariants);
   // stress of every element for a unit value of each modal coordinate;
   // imported matrices come without element properties: no stress modes
   const auto t_stress = Clock::now();
-  if (!model.imported) body.stress = ComputeStressModes(mesh, body.modes, options.solid_corner_stress);
+  if (!model.imported && root) body.stress = ComputeStressModes(mesh, body.modes, options.solid_corner_stress);
   t.stress_modes = Seconds(t_stress);
   const auto t_stiffening = Clock::now();
   if (options.geometric_stiffening) {

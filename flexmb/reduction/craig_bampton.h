@@ -19,23 +19,6 @@
 
 namespace flexmb::reduction {
 
-/// Steps 2 to 4 of the reduction (factorization of K_ii, static modes,
-/// fixed-interface modes) by another solver than the built-in CHOLMOD one,
-/// e.g. MUMPS and SLEPc over MPI (reduction/petsc/). Given the interior
-/// blocks K_ii (n_i x n_i), K_ib (n_i x n_b) and M_ii of the free DOF, it
-/// returns Psi = -K_ii^{-1} K_ib and the `count` lowest eigenpairs of
-/// K_ii phi = omega^2 M_ii phi, ascending, Phi^T M_ii Phi = I. It throws
-/// NumericalError if K_ii is singular; the caller then names the DOF.
-struct InteriorSolution {
-  Eigen::MatrixXd psi;                  ///< n_i x n_b static modes
-  Eigen::MatrixXd phi;                  ///< n_i x count normal modes, M_ii-orthonormal
-  Eigen::VectorXd frequencies_hz;       ///< their frequencies [Hz], ascending
-  /// Wall times of the three steps [s] (ReductionTimings).
-  double factorize_s = 0.0, static_modes_s = 0.0, normal_modes_s = 0.0;
-};
-using InteriorSolver = std::function<InteriorSolution(const fe::SparseMat& k_ii, const fe::SparseMat& k_ib,
-                                                      const fe::SparseMat& m_ii, int count)>;
-
 /// Options of the reduction.
 struct ReductionOptions {
   /// Node indices; every free DOF their motion depends on is a boundary DOF
@@ -76,11 +59,6 @@ struct ReductionOptions {
   /// (StressModes::solid_node: 6 rows per corner, up to 8 per element, so
   /// the body file grows by about that factor for the solid part).
   bool solid_corner_stress = false;
-  /// Steps 2 to 4 by another solver (see InteriorSolver); empty: CHOLMOD
-  /// and block Lanczos in this process. With a frequency cut-off it is
-  /// called again with a larger count until a mode above the cut-off is
-  /// found.
-  InteriorSolver interior_solver;
 };
 
 /// Wall time of each step [s]. The static and the normal modes are computed
@@ -101,6 +79,31 @@ ReducedBody ReduceCraigBampton(const fe::FeModel& model, const ReductionOptions&
 
 struct CraigBamptonBasis;
 
+/// The options as ReduceCraigBampton uses them: checked (InputError for a
+/// negative mode count, cut-off or damping, a bad keep or eigen tolerance)
+/// and with interface nodes listed twice counted once.
+ReductionOptions PrepareReductionOptions(const fe::Mesh& mesh, const ReductionOptions& options);
+
+/// The assembly of a reduction: the mass form, the fixed nodes clamped,
+/// the interface nodes kept independent (an RBE3 reference node).
+fe::AssemblyOptions ReductionAssemblyOptions(const ReductionOptions& options);
+
+/// The steps of ReduceBasis done elsewhere when the model is spread over
+/// processes (reduction/petsc/petsc_reduction.h): each process holds a
+/// share of the assembled matrices and of the basis rows.
+struct DistributedSteps {
+  /// H y for reduced coordinates y (m x k): n_free x k in the free
+  /// numbering on the root process, an empty matrix on the others.
+  std::function<Eigen::MatrixXd(const Eigen::MatrixXd& y)> expand;
+  /// The inertia invariants of the body's modes (given on the root, empty
+  /// on the others) with the modal mass H^T M H (on every process),
+  /// complete on the root.
+  std::function<InertiaInvariants(const MatX& modes, const MatX& modal_mass)> invariants;
+  /// This process writes the body: the modes, stress modes and provenance
+  /// are formed here only.
+  bool root = true;
+};
+
 /// The steps of ReduceCraigBampton after the basis, on a basis computed
 /// here (BuildCraigBamptonBasis) or imported (body_file/modes_file.h BasisOfModes):
 /// orthonormalization, rigid-body removal, truncation (options.keep),
@@ -108,7 +111,11 @@ struct CraigBamptonBasis;
 /// assembled as the basis was; options.interface_nodes are recorded as the
 /// body's interface nodes. Fills the orthonormalize, invariants and
 /// stress_modes timings.
+/// With `steps`, the basis holds no rows of Psi and Phi here and
+/// `assembled` is this process's share: H y and the invariants come from
+/// `steps`, and only the root process returns a complete body.
 ReducedBody ReduceBasis(const fe::FeModel& model, const fe::AssembledModel& assembled, const CraigBamptonBasis& basis,
-                        const ReductionOptions& options, ReductionTimings* timings = nullptr);
+                        const ReductionOptions& options, ReductionTimings* timings = nullptr,
+                        const DistributedSteps* steps = nullptr);
 
 }  // namespace flexmb::reduction

@@ -100,65 +100,6 @@ void RemoveRigidRoundOff(const fe::Mesh& mesh, const fe::AssembledModel& model, 
   }
 }
 
-// The lowest `count` modes by solve(count); with a cut-off, the count is
-// grown until a mode above it is found (or the interior of n_i DOF is
-// exhausted) and only the modes below it are returned.
-template <class Solve>
-fe::ModalResult SolveUpToCutoff(int count, int ni, double cutoff_hz, const Solve& solve) {
-  fe::ModalResult r = solve(count);
-  while (cutoff_hz > 0.0 && r.frequencies_hz[count - 1] < cutoff_hz && count < ni - 1) {
-    count = std::min(ni - 1, 2 * count);
-    r = solve(count);
-  }
-  int keep = count;
-  if (cutoff_hz > 0.0) {
-    keep = 0;
-    while (keep < count && r.frequencies_hz[keep] < cutoff_hz) ++keep;
-  }
-  fe::ModalResult out;
-  out.modes = r.modes.leftCols(keep);
-  out.frequencies_hz = r.frequencies_hz.head(keep);
-  return out;
-}
-
-// Steps 2 to 4 by options.interior_solver: static modes and (count > 0) the
-// normal modes, up to the cut-off. If it finds K_ii singular, the built-in
-// factorization (`factorize`) names the DOF at fault.
-template <class Factorize>
-void SolveByInteriorSolver(const fe::SparseMat& k_ii, const fe::SparseMat& k_ib, const fe::SparseMat& m_ii, int count,
-                           const ReductionOptions& options, const fe::Mesh& mesh, const fe::AssembledModel& model,
-                           CraigBamptonBasis& basis, ReductionTimings& t, const Factorize& factorize) {
-  const int ni = static_cast<int>(k_ii.rows());
-  bool first = true;
-  auto solve = [&](int c) {
-    InteriorSolution sol;
-    try {
-      sol = options.interior_solver(k_ii, k_ib, m_ii, c);
-    } catch (const NumericalError&) {
-      factorize();  // throws, naming the DOF, where K_ii is singular
-      throw;
-    }
-    if (sol.psi.rows() != ni || sol.psi.cols() != k_ib.cols() || sol.phi.rows() != ni || sol.phi.cols() != c ||
-        sol.frequencies_hz.size() != c) {
-      throw NumericalError("the interior solver returned blocks of the wrong size",
-                           {mesh.source, 0, "Craig-Bampton reduction"});
-    }
-    if (first) basis.psi = std::move(sol.psi);
-    first = false;
-    t.factorize += sol.factorize_s;
-    t.static_modes += sol.static_modes_s;
-    t.normal_modes += sol.normal_modes_s;
-    fe::ModalResult r;
-    r.modes = std::move(sol.phi);
-    r.frequencies_hz = std::move(sol.frequencies_hz);
-    return r;
-  };
-  fe::ModalResult r = SolveUpToCutoff(count, ni, options.cutoff_hz, solve);
-  RemoveRigidRoundOff(mesh, model, basis);
-  basis.phi = std::move(r.modes);
-  basis.fixed_interface_hz = std::move(r.frequencies_hz);
-}
-
 }  // namespace
 
 double StiffnessScale(const fe::SparseMat& k, const fe::SparseMat& m) {
@@ -189,22 +130,21 @@ Eigen::MatrixXd CraigBamptonBasis::Expand(const Eigen::MatrixXd& q) const {
   return u;
 }
 
-CraigBamptonBasis BuildCraigBamptonBasis(const fe::Mesh& mesh, const fe::AssembledModel& model,
-                                         const ReductionOptions& options, ReductionTimings* timings) {
+void RequireInteriorMass(double largest_diagonal, const std::string& source) {
+  if (largest_diagonal > 0.0) return;
+  throw NumericalError("the model has no mass at its interior DOF, so it has no fixed-interface modes: give its "
+                       "materials a density (Nastran MAT1 RHO, Abaqus *DENSITY) or reduce with --modes 0",
+                       {source, 0, "Craig-Bampton reduction"});
+}
+
+InterfaceSplit SplitInterface(const fe::Mesh& mesh, const fe::AssembledModel& model, const ReductionOptions& options) {
   const fe::DofMap& dm = model.dofs;
   const int nn = static_cast<int>(mesh.nodes.size());
   const int n = dm.n_free;
-  if (static_cast<int>(dm.free.size()) != nn || model.K.rows() != n || model.M.rows() != n ||
-      model.T.cols() != n) {
-    throw InputError("Craig-Bampton reduction: the assembled matrices do not belong to the mesh");
-  }
   auto node_name = [&](int node) { return "node " + std::to_string(mesh.nodes[node].id); };
-  ReductionTimings local_timings;
-  ReductionTimings& t = timings != nullptr ? *timings : local_timings;
-  auto t0 = Clock::now();
-
-  // 1. boundary: every free DOF an interface node's motion depends on (rows of T)
-  std::vector<char> is_b(n, 0);
+  InterfaceSplit out;
+  std::vector<char>& is_b = out.is_b;
+  is_b.assign(static_cast<size_t>(n), 0);
   {
     const Eigen::SparseMatrix<double, Eigen::RowMajor, int> tr = model.T;
     for (int node : options.interface_nodes) {
@@ -227,24 +167,49 @@ CraigBamptonBasis BuildCraigBamptonBasis(const fe::Mesh& mesh, const fe::Assembl
       }
     }
   }
-  CraigBamptonBasis basis;
-  std::vector<int> local(n);
+  out.local.resize(static_cast<size_t>(n));
   for (int f = 0; f < n; ++f) {
-    std::vector<int>& list = is_b[f] ? basis.boundary : basis.interior;
-    local[f] = static_cast<int>(list.size());
+    std::vector<int>& list = is_b[f] ? out.boundary : out.interior;
+    out.local[f] = static_cast<int>(list.size());
     list.push_back(f);
   }
-  const int nb = static_cast<int>(basis.boundary.size());
-  const int ni = static_cast<int>(basis.interior.size());
+  const int ni = static_cast<int>(out.interior.size());
   if (ni == 0) throw InputError("Craig-Bampton reduction: every DOF is an interface DOF; nothing to reduce");
-
-  // requested normal modes, checked before any factorization
-  int count = options.cutoff_hz > 0.0 ? std::min(ni - 1, std::max(10, options.normal_modes)) : options.normal_modes;
+  const int count =
+      options.cutoff_hz > 0.0 ? std::min(ni - 1, std::max(10, options.normal_modes)) : options.normal_modes;
   if (options.cutoff_hz <= 0.0 && count >= ni) {
     throw InputError(std::to_string(count) + " fixed-interface normal modes asked, but the body has only " +
                          std::to_string(ni) + " interior DOF (at most " + std::to_string(ni - 1) + ")",
                      {mesh.source, 0, "normal modes"});
   }
+  out.normal_modes = count;
+  return out;
+}
+
+CraigBamptonBasis BuildCraigBamptonBasis(const fe::Mesh& mesh, const fe::AssembledModel& model,
+                                         const ReductionOptions& options, ReductionTimings* timings) {
+  const fe::DofMap& dm = model.dofs;
+  const int nn = static_cast<int>(mesh.nodes.size());
+  const int n = dm.n_free;
+  if (static_cast<int>(dm.free.size()) != nn || model.K.rows() != n || model.M.rows() != n ||
+      model.T.cols() != n) {
+    throw InputError("Craig-Bampton reduction: the assembled matrices do not belong to the mesh");
+  }
+  auto node_name = [&](int node) { return "node " + std::to_string(mesh.nodes[node].id); };
+  ReductionTimings local_timings;
+  ReductionTimings& t = timings != nullptr ? *timings : local_timings;
+  auto t0 = Clock::now();
+
+  // 1. boundary and interior; the number of normal modes, checked before any factorization
+  InterfaceSplit split = SplitInterface(mesh, model, options);
+  CraigBamptonBasis basis;
+  basis.boundary = std::move(split.boundary);
+  basis.interior = std::move(split.interior);
+  const std::vector<char>& is_b = split.is_b;
+  const std::vector<int>& local = split.local;
+  const int nb = static_cast<int>(basis.boundary.size());
+  const int ni = static_cast<int>(basis.interior.size());
+  int count = split.normal_modes;
 
   // 2. K_ii factorization, named DOF on failure
   const Blocks k = SplitMatrix(model.K, local, is_b, ni, nb);
@@ -264,106 +229,94 @@ CraigBamptonBasis BuildCraigBamptonBasis(const fe::Mesh& mesh, const fe::Assembl
         o.file.empty() ? std::string() : " (" + o.file + (o.line > 0 ? ":" + std::to_string(o.line) : "") + ")";
     return node_name(node) + where + " component " + fe::kDofComponentNames[c];
   };
-  fe::SparseCholesky factor;
-  auto factorize = [&] {
-    try {
-      factor.Factorize(k.ii,
-                       "K_ii (the stiffness with the " + std::to_string(options.interface_nodes.size()) +
-                           " interface nodes held" + (options.fixed_nodes.empty() ? "" : " and the fixed nodes clamped") +
-                           ")",
-                       describe);
-    } catch (const NumericalError& e) {
-      const std::string hint =
-          nb == 0 ? "; with no interface DOF the body must be held by fixed nodes or single-point constraints" : "";
-      throw NumericalError(e.message() + hint, {mesh.source, 0, "Craig-Bampton reduction"});
-    }
-  };
-
   // the eigen solvers need a mass: a deck written for statics often has none
   // (no density on its materials), which they would report only as a failed
   // decomposition
   if (count > 0) {
     double m_max = 0.0;
     for (Eigen::Index i = 0; i < m.ii.rows(); ++i) m_max = std::max(m_max, m.ii.coeff(i, i));
-    if (!(m_max > 0.0)) {
-      throw NumericalError("the model has no mass at its interior DOF, so it has no fixed-interface modes: give its "
-                           "materials a density (Nastran MAT1 RHO, Abaqus *DENSITY) or reduce with --modes 0",
-                           {mesh.source, 0, "Craig-Bampton reduction"});
-    }
+    RequireInteriorMass(m_max, mesh.source);
   }
-  if (options.interior_solver) {
-    SolveByInteriorSolver(k.ii, k.ib, m.ii, count, options, mesh, model, basis, t, factorize);
-  } else {
-    factorize();
-    t.factorize += Seconds(t0);
+  fe::SparseCholesky factor;
+  try {
+    factor.Factorize(k.ii,
+                     "K_ii (the stiffness with the " + std::to_string(options.interface_nodes.size()) +
+                         " interface nodes held" + (options.fixed_nodes.empty() ? "" : " and the fixed nodes clamped") +
+                         ")",
+                     describe);
+  } catch (const NumericalError& e) {
+    const std::string hint =
+        nb == 0 ? "; with no interface DOF the body must be held by fixed nodes or single-point constraints" : "";
+    throw NumericalError(e.message() + hint, {mesh.source, 0, "Craig-Bampton reduction"});
+  }
+  t.factorize += Seconds(t0);
 
-    // 3. static modes, all right-hand sides in one solve; 3 and 4 side by side
-    // when there are cores for it: the static modes on a second thread while
-    // this one runs the Lanczos iteration (both only read the factor; block
-    // solves carry their own CHOLMOD workspace)
-    auto static_modes = [&] {
-      const auto ts = Clock::now();
-      basis.psi = factor.Solve(-Eigen::MatrixXd(k.ib));
-      RemoveRigidRoundOff(mesh, model, basis);
-      t.static_modes += Seconds(ts);
-    };
-    std::exception_ptr static_error;
-    std::thread static_thread;
-    // two threads of ours, each in CHOLMOD's BLAS: one BLAS thread each
-    std::optional<BlasThreadLimit> one_blas_thread;
-    if (count > 0 && nb > 0 && ParallelRanges(2, 1) > 1) {
-      one_blas_thread.emplace(1);
-      static_thread = std::thread([&] {
-        try {
-          static_modes();
-        } catch (...) {
-          static_error = std::current_exception();
-        }
-      });
-    } else {
-      static_modes();
-    }
-    // joins the static thread on every way out of this function
-    struct Joiner {
-      std::thread& thread;
-      ~Joiner() {
-        if (thread.joinable()) thread.join();
+  // 3. static modes, all right-hand sides in one solve; 3 and 4 side by side
+  // when there are cores for it: the static modes on a second thread while
+  // this one runs the Lanczos iteration (both only read the factor; block
+  // solves carry their own CHOLMOD workspace)
+  auto static_modes = [&] {
+    const auto ts = Clock::now();
+    basis.psi = factor.Solve(-Eigen::MatrixXd(k.ib));
+    RemoveRigidRoundOff(mesh, model, basis);
+    t.static_modes += Seconds(ts);
+  };
+  std::exception_ptr static_error;
+  std::thread static_thread;
+  // two threads of ours, each in CHOLMOD's BLAS: one BLAS thread each
+  std::optional<BlasThreadLimit> one_blas_thread;
+  if (count > 0 && nb > 0 && ParallelRanges(2, 1) > 1) {
+    one_blas_thread.emplace(1);
+    static_thread = std::thread([&] {
+      try {
+        static_modes();
+      } catch (...) {
+        static_error = std::current_exception();
       }
-    } joiner{static_thread};
-
-    // 4. fixed-interface normal modes on the same factor (shift 0: K_ii is positive definite)
-    t0 = Clock::now();
-    basis.phi.resize(ni, 0);
-    basis.fixed_interface_hz.resize(0);
-    if (count > 0) {
-      // block shift-invert Lanczos (each pass over the factor serves a block of
-      // vectors); Spectra if it does not converge. A relative residual of 1e-6
-      // leaves the eigenvalues exact to about 1e-12 (the error is quadratic in
-      // the residual) and the modes, which need only span the right space for
-      // the reduction, accurate to 1e-6 over the relative gap: their effect on
-      // the reduced frequencies is again quadratic, below 1e-11.
-      auto solve = [&](int c) {
-        if (options.eigen_solver == ReductionOptions::EigenSolver::kSpectra) {
-          return fe::SolveModesFactorized(k.ii, m.ii, factor, 0.0, c, 1e-10, "fixed-interface modes");
-        }
-        fe::BlockLanczosOptions lanczos;
-        lanczos.count = c;
-        lanczos.tolerance = options.eigen_tolerance > 0.0 ? options.eigen_tolerance : 1e-6;
-        try {
-          return fe::SolveModesBlockLanczos(k.ii, m.ii, factor, 0.0, lanczos, "fixed-interface modes");
-        } catch (const NumericalError&) {
-          return fe::SolveModesFactorized(k.ii, m.ii, factor, 0.0, c, 1e-10, "fixed-interface modes");
-        }
-      };
-      fe::ModalResult r = SolveUpToCutoff(count, ni, options.cutoff_hz, solve);
-      basis.phi = std::move(r.modes);
-      basis.fixed_interface_hz = std::move(r.frequencies_hz);
-    }
-    t.normal_modes += Seconds(t0);
-    if (static_thread.joinable()) static_thread.join();
-    one_blas_thread.reset();
-    if (static_error) std::rethrow_exception(static_error);
+    });
+  } else {
+    static_modes();
   }
+  // joins the static thread on every way out of this function
+  struct Joiner {
+    std::thread& thread;
+    ~Joiner() {
+      if (thread.joinable()) thread.join();
+    }
+  } joiner{static_thread};
+
+  // 4. fixed-interface normal modes on the same factor (shift 0: K_ii is positive definite)
+  t0 = Clock::now();
+  basis.phi.resize(ni, 0);
+  basis.fixed_interface_hz.resize(0);
+  if (count > 0) {
+    // block shift-invert Lanczos (each pass over the factor serves a block of
+    // vectors); Spectra if it does not converge. A relative residual of 1e-6
+    // leaves the eigenvalues exact to about 1e-12 (the error is quadratic in
+    // the residual) and the modes, which need only span the right space for
+    // the reduction, accurate to 1e-6 over the relative gap: their effect on
+    // the reduced frequencies is again quadratic, below 1e-11.
+    auto solve = [&](int c) {
+      if (options.eigen_solver == ReductionOptions::EigenSolver::kSpectra) {
+        return fe::SolveModesFactorized(k.ii, m.ii, factor, 0.0, c, 1e-10, "fixed-interface modes");
+      }
+      fe::BlockLanczosOptions lanczos;
+      lanczos.count = c;
+      lanczos.tolerance = options.eigen_tolerance > 0.0 ? options.eigen_tolerance : 1e-6;
+      try {
+        return fe::SolveModesBlockLanczos(k.ii, m.ii, factor, 0.0, lanczos, "fixed-interface modes");
+      } catch (const NumericalError&) {
+        return fe::SolveModesFactorized(k.ii, m.ii, factor, 0.0, c, 1e-10, "fixed-interface modes");
+      }
+    };
+    fe::ModalResult r = SolveUpToCutoff(count, ni, options.cutoff_hz, solve);
+    basis.phi = std::move(r.modes);
+    basis.fixed_interface_hz = std::move(r.frequencies_hz);
+  }
+  t.normal_modes += Seconds(t0);
+  if (static_thread.joinable()) static_thread.join();
+  one_blas_thread.reset();
+  if (static_error) std::rethrow_exception(static_error);
 
   // 5. reduced matrices, coordinates (u_b, eta)
   t0 = Clock::now();

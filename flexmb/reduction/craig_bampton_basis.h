@@ -11,10 +11,13 @@
 /// use it to look at the basis before orthonormalization.
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <string>
 #include <vector>
 
 #include "flexmb/fe/assembly.h"
 #include "flexmb/fe/mesh.h"
+#include "flexmb/fe/modal.h"
 #include "flexmb/reduction/craig_bampton.h"
 
 namespace flexmb::reduction {
@@ -51,6 +54,49 @@ struct CraigBamptonBasis {
   /// H q for a block of reduced coordinates (m x k): n_free x k, free numbering.
   Eigen::MatrixXd Expand(const Eigen::MatrixXd& q) const;
 };
+
+/// Step 1 of the reduction: the free DOF split into boundary and interior.
+struct InterfaceSplit {
+  std::vector<char> is_b;        ///< per free DOF: 1 on the boundary
+  std::vector<int> local;        ///< per free DOF: its index in `boundary` or `interior`
+  std::vector<int> boundary;     ///< free DOF of the boundary, ascending
+  std::vector<int> interior;     ///< free DOF of the interior, ascending
+  int normal_modes = 0;          ///< fixed-interface modes to solve for first (more with a cut-off)
+};
+
+/// The boundary DOF are every free DOF the interface nodes' motion depends
+/// on (rows of model.T; only the DOF map and T of `model` are used, so a
+/// partial assembly serves). Throws InputError for an interface node that
+/// does not exist or has no DOF, an empty interior, or more normal modes
+/// than the interior has (without a cut-off).
+InterfaceSplit SplitInterface(const fe::Mesh& mesh, const fe::AssembledModel& model, const ReductionOptions& options);
+
+/// Throws NumericalError (naming the model file `source`) unless the
+/// largest diagonal entry of M_ii is positive: without mass there are no
+/// fixed-interface modes.
+void RequireInteriorMass(double largest_diagonal, const std::string& source);
+
+/// The lowest `count` modes by solve(count) (a fe::ModalResult, whose
+/// modes may be any rows of the mode vectors); with a cut-off, the count is
+/// grown until a mode above it is found (or the interior of n_i DOF is
+/// exhausted) and only the modes below it are returned.
+template <class Solve>
+fe::ModalResult SolveUpToCutoff(int count, int ni, double cutoff_hz, const Solve& solve) {
+  fe::ModalResult r = solve(count);
+  while (cutoff_hz > 0.0 && r.frequencies_hz[count - 1] < cutoff_hz && count < ni - 1) {
+    count = std::min(ni - 1, 2 * count);
+    r = solve(count);
+  }
+  int keep = count;
+  if (cutoff_hz > 0.0) {
+    keep = 0;
+    while (keep < count && r.frequencies_hz[keep] < cutoff_hz) ++keep;
+  }
+  fe::ModalResult out;
+  out.modes = r.modes.leftCols(keep);
+  out.frequencies_hz = r.frequencies_hz.head(keep);
+  return out;
+}
 
 /// Median over the DOF of K_kk / M_kk (both positive), 1 if there is none:
 /// CraigBamptonBasis::stiffness_scale.

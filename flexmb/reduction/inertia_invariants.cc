@@ -162,7 +162,7 @@ struct Partial {
 }  // namespace
 
 InertiaInvariants ComputeInertiaInvariants(const fe::Mesh& mesh, const fe::AssembledModel& model,
-                                           const MatX& modes, const MatX* modal_mass) {
+                                           const MatX& modes, const MatX* modal_mass, bool offset_point_masses) {
   const ErrorContext where{mesh.source, 0, "inertia invariants"};
   const int nn_mesh = static_cast<int>(mesh.nodes.size());
   if (modes.rows() != 6 * static_cast<Index>(nn_mesh)) {
@@ -181,7 +181,7 @@ InertiaInvariants ComputeInertiaInvariants(const fe::Mesh& mesh, const fe::Assem
   positions.reserve(static_cast<size_t>(nn_mesh));
   for (const fe::Node& node : mesh.nodes) positions.push_back(node.x);
   RowMat hr = modes;  // row-major: the six rows of a node are contiguous
-  AddOffsetPointMasses(mesh, b, positions, hr);
+  if (offset_point_masses) AddOffsetPointMasses(mesh, b, positions, hr);
   const int nn = static_cast<int>(positions.size());
   auto rho = [&](int k) -> const Vec3& { return positions[static_cast<size_t>(k)]; };
 

@@ -32,8 +32,14 @@ namespace flexmb::reduction {
 /// the flops and half the gathers. Throws InputError if the sizes of mesh,
 /// model, modes and modal_mass disagree or M_full has an entry on a DOF
 /// that belongs to no node.
+/// The invariants are linear in M_full, so a model assembled in shares
+/// (fe::AssemblyOptions::block_subset) gives them as the sum over the
+/// shares, provided the point masses are in one share: the offset point
+/// masses move their mass between node blocks (see inertia_invariants.cc),
+/// which the other shares must not do (`offset_point_masses` false there).
 InertiaInvariants ComputeInertiaInvariants(const fe::Mesh& mesh, const fe::AssembledModel& model,
-                                           const MatX& modes, const MatX* modal_mass = nullptr);
+                                           const MatX& modes, const MatX* modal_mass = nullptr,
+                                           bool offset_point_masses = true);
 
 /// The generalized mass matrix M(w) of THEORY section 4, (6 + n) square for
 /// nu = (v, omega, wdot) (body components; units of the invariants), from
