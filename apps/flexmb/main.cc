@@ -29,7 +29,7 @@
 #include "apps/flexmb/commands/post_command.h"
 #include "apps/flexmb/commands/study_command.h"
 #ifdef FLEXMB_HAVE_PETSC
-#include "flexmb/reduction/petsc/petsc_interior_solver.h"
+#include "flexmb/reduction/petsc/petsc_reduction.h"
 #endif
 
 namespace {
@@ -83,24 +83,31 @@ int Guarded(F&& command) {
   }
 }
 
-// "reduce --backend petsc": rank 0 runs the command with the distributed
-// interior solver, the other ranks serve its collective steps
+// "reduce --backend petsc": every process of the MPI job runs the command
+// on its share of the model; rank 0 writes the body and reports (errors,
+// which every process meets alike, too)
 int ReduceWithPetsc(flexmb::io::ReduceOptions& opt, int* argc, char*** argv) {
 #ifdef FLEXMB_HAVE_PETSC
   namespace rp = flexmb::reduction::petsc;
+  (void)argc;
+  (void)argv;
   std::optional<rp::MpiSession> session;
   const int started = Guarded([&] {
-    session.emplace(argc, argv);
+    session.emplace();
     return 0;
   });
   if (started != 0) return started;
-  if (session->rank() != 0) return rp::ServeInteriorSolves();
-  rp::WorkerRelease release(true);
-  rp::PetscSolverOptions po;
-  if (opt.eigen_tolerance > 0.0) po.eigen_tolerance = opt.eigen_tolerance;
-  opt.interior_solver = rp::MakePetscInteriorSolver(po);
+  opt.reducer = rp::ReduceCraigBamptonPetsc;
+  opt.root = session->rank() == 0;
   opt.backend = "MUMPS and SLEPc (PETSc) on " + std::to_string(session->size()) + " MPI ranks";
-  return Guarded([&] { return flexmb::io::Reduce(opt, std::cout); });
+  if (opt.root) return Guarded([&] { return flexmb::io::Reduce(opt, std::cout); });
+  try {
+    return flexmb::io::Reduce(opt, std::cout);
+  } catch (const flexmb::InputError&) {
+    return 2;
+  } catch (const std::exception&) {
+    return 1;
+  }
 #else
   // flexmb itself does not link PETSc and MPI (they would add 70 ms to the
   // start of every run): the same command line goes to flexmb-petsc, this

@@ -131,9 +131,8 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
   ro.geometric_stiffening = opt.geometric_stiffening;
   ro.deformation_stiffening = opt.deformation_stiffening;
   ro.solid_corner_stress = opt.solid_corner_stress;
-  ro.interior_solver = opt.interior_solver;
   ro.eigen_tolerance = opt.eigen_tolerance;
-  if (imported_modes && opt.interior_solver) {
+  if (imported_modes && opt.reducer) {
     throw InputError("--modes-file brings the modes: there is nothing for --backend petsc to solve");
   }
   if (!opt.rayleigh.empty()) {
@@ -187,7 +186,7 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
 
   reduction::ReductionTimings t;
   reduction::ReducedBody body = InFile(path, [&] {
-    if (!imported_modes) return reduction::ReduceCraigBampton(model, ro, &t);
+    if (!imported_modes) return opt.reducer ? opt.reducer(model, ro, &t) : reduction::ReduceCraigBampton(model, ro, &t);
     const Clock::time_point ta = Clock::now();
     fe::AssemblyOptions ao;
     ao.independent_nodes = ro.interface_nodes;  // as ReduceCraigBampton and fe export assemble
@@ -197,6 +196,7 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
     return reduction::ReduceBasis(model, a, basis, ro, &t);
   });
   const Clock::time_point t2 = Clock::now();
+  if (!opt.root) return 0;  // another process of an MPI job: rank 0 writes and reports
   body.provenance.emplace_back("solver", imported_modes ? "none (the modes file's basis)" : opt.backend);
   // the FE model's units as given; numbers that do not look like them (SI only) warn
   body.units = units.attribute;
@@ -236,7 +236,7 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
     if (!ro.fixed_nodes.empty()) s << ", " << ro.fixed_nodes.size() << " nodes clamped";
     s << "\n";
     if (!frame.empty()) s << "floating frame: " << frame << "\n";
-    if (opt.interior_solver) s << "factorization and modes: " << opt.backend << "\n";
+    if (opt.reducer) s << "factorization and modes: " << opt.backend << "\n";
     s << "Craig-Bampton basis: " << body.static_modes << " static + " << body.normal_modes << " normal modes; "
       << body.rigid_modes_removed << " rigid-body modes removed; " << nk << " flexible modes kept\n";
     if (mp.mass > 0.0) s << "mass " << Short(mp.mass) << " kg, centre of mass " << ShortVector(mp.center) << " m\n";

@@ -11,6 +11,7 @@
 /// to the stream before the command has succeeded, so that with --json it
 /// holds exactly one JSON object or nothing. Documented in docs/cli.md.
 
+#include <functional>
 #include <ostream>
 #include <string>
 
@@ -62,11 +63,16 @@ struct ReduceOptions {
   /// Relative residual of the fixed-interface modes (ReductionOptions::
   /// eigen_tolerance); 0: the solver's default.
   double eigen_tolerance = 0.0;
-  /// Steps 2 to 4 by another solver (reduction::ReductionOptions::
-  /// interior_solver, e.g. PETSc over MPI); empty: CHOLMOD here.
-  reduction::InteriorSolver interior_solver;
-  /// Names that solver in the report and the body's provenance.
+  /// The reduction itself, e.g. reduction::petsc::ReduceCraigBamptonPetsc
+  /// on every process of an MPI job; empty: reduction::ReduceCraigBampton.
+  std::function<reduction::ReducedBody(const fe::FeModel&, const reduction::ReductionOptions&,
+                                       reduction::ReductionTimings*)>
+      reducer;
+  /// Names the solver in the report and the body's provenance.
   std::string backend = "CHOLMOD and block Lanczos (this process)";
+  /// This process writes the body file and the report (false on the other
+  /// processes of an MPI job).
+  bool root = true;
 };
 
 /// "reduce": loads the model, resolves the interface and --fix nodes,

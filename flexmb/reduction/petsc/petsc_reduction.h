@@ -1,30 +1,34 @@
 #pragma once
-/// \file petsc_interior_solver.h
-/// Steps 2 to 4 of the Craig-Bampton reduction over MPI (`flexmb reduce
-/// --backend petsc` under mpirun): K_ii factorized by MUMPS through PETSc,
-/// the static modes as one multiple-right-hand-side solve on that factor,
-/// the fixed-interface modes by SLEPc's Krylov-Schur with shift-and-invert
-/// at 0 on the same factor. Rank 0 holds the FE model and runs the serial
-/// steps (assembly, reduced matrices, invariants, stress modes, body file);
-/// it hands the interior blocks to PETSc row by row (each rank receives the
-/// rows it owns) and gets Psi and Phi back. The factor, the largest object
-/// of a reduction, is spread over the ranks. docs/design.md, "Distributed
-/// reduction", says what is and is not distributed.
+/// \file petsc_reduction.h
+/// The Craig-Bampton reduction over MPI (`flexmb reduce --backend petsc`
+/// under mpirun), every process running the same steps on its share:
+/// the elements assembled by the process that owns their first node
+/// (fe::AssemblyOptions::block_subset), the matrix rows of the interior DOF
+/// split into contiguous ranges, one per process, the entries sent to the
+/// process owning their row; K_ii factorized by MUMPS through PETSc, the
+/// static modes as one multiple-right-hand-side solve on that factor, the
+/// fixed-interface modes by SLEPc's Krylov-Schur with shift-and-invert at 0
+/// on the same factor; the reduced matrices and the inertia invariants
+/// summed over the processes. The root process (rank 0) gathers the
+/// body's mode matrix, computes the stress modes and writes the body file.
+/// docs/design.md, "Distributed reduction", says what each process holds.
 ///
 /// Built only with FLEXMB_PETSC (CMake option; needs Debian's petsc-dev,
 /// slepc-dev and openmpi).
 
+#include "flexmb/fe/fe_model.h"
 #include "flexmb/reduction/craig_bampton.h"
 
 namespace flexmb::reduction::petsc {
 
 /// PETSc and SLEPc (and so MPI) started for the life of the object, on
-/// MPI_COMM_WORLD. One per process; the error handler is set so that PETSc
-/// errors come back as codes (turned into NumericalError) instead of
-/// aborting.
+/// MPI_COMM_WORLD. One per process; PETSc's error handler is set so that
+/// its errors come back as codes (turned into NumericalError) instead of
+/// aborting. PETSc options come from the PETSC_OPTIONS environment
+/// variable, not the command line.
 class MpiSession {
  public:
-  MpiSession(int* argc, char*** argv);
+  MpiSession();
   ~MpiSession();
   MpiSession(const MpiSession&) = delete;
   MpiSession& operator=(const MpiSession&) = delete;
@@ -35,40 +39,17 @@ class MpiSession {
   int rank_ = 0, size_ = 1;
 };
 
-/// Settings of the distributed steps.
-struct PetscSolverOptions {
-  /// Relative residual tolerance of the SLEPc eigen solve. The reduced
-  /// frequencies err by its square, the spanned space by about itself.
-  double eigen_tolerance = 1e-12;
-};
-
-/// The ReductionOptions::interior_solver of rank 0. Every call is a
-/// collective step: the other ranks must be in ServeInteriorSolves().
-/// Throws NumericalError if MUMPS finds K_ii singular or SLEPc does not
-/// converge (the caller then names the DOF by its own factorization).
-InteriorSolver MakePetscInteriorSolver(const PetscSolverOptions& options = {});
-
-/// The ranks other than 0: take part in every solve rank 0 starts, until
-/// rank 0 calls ReleaseWorkers(). Returns 0, or 1 after a PETSc error
-/// (which rank 0 also sees and reports).
-int ServeInteriorSolves();
-
-/// Rank 0: ends ServeInteriorSolves() on the other ranks. Call it on every
-/// way out of the command (WorkerRelease does).
-void ReleaseWorkers();
-
-/// Calls ReleaseWorkers() when it goes out of scope (rank 0 only).
-class WorkerRelease {
- public:
-  explicit WorkerRelease(bool active) : active_(active) {}
-  ~WorkerRelease() {
-    if (active_) ReleaseWorkers();
-  }
-  WorkerRelease(const WorkerRelease&) = delete;
-  WorkerRelease& operator=(const WorkerRelease&) = delete;
-
- private:
-  bool active_;
-};
+/// ReduceCraigBampton over the processes of MPI_COMM_WORLD (a collective
+/// call: every process passes the same model and options). Returns the
+/// complete body on rank 0 and a partial one (no modes, stress modes or
+/// complete invariants) on the others. Relative residual of the eigen
+/// solve: options.eigen_tolerance, 1e-12 if 0. Throws as
+/// ReduceCraigBampton, on every process alike: InputError for bad options,
+/// for imported matrices (no elements to share out) and for the
+/// stiffening options (not distributed); NumericalError if MUMPS finds
+/// negative or zero pivots in K_ii (a mechanism) or SLEPc does not
+/// converge.
+ReducedBody ReduceCraigBamptonPetsc(const fe::FeModel& model, const ReductionOptions& options,
+                                    ReductionTimings* timings = nullptr);
 
 }  // namespace flexmb::reduction::petsc
