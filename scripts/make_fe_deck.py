@@ -16,22 +16,14 @@ size (python/tests/test_reduce_petsc.py, bench/reduce_mpi.py):
 Every dimension is a round assumption of a generic part, not a real one.
 """
 import argparse
+import os
+import sys
+
+# the free-field card writers of the example crane's boom generator
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'examples', 'crane'))
+from make_boom import free, rbe2  # noqa: E402
 
 E, NU, RHO = 2.10e11, 0.30, 7850.0
-
-
-def free(*fields):
-    return ','.join('' if f is None else (f'{f:.9g}' if isinstance(f, float) else str(f)) for f in fields)
-
-
-def rbe2(eid, gn, nodes):
-    """RBE2 over `nodes` in free field, continuation lines of 8 fields."""
-    lines = [free('RBE2', eid, gn, 123456, *nodes[:5])]
-    rest = nodes[5:]
-    while rest:
-        lines.append(free('', *rest[:8]))
-        rest = rest[8:]
-    return lines
 
 
 def ladder(nx):
