@@ -93,11 +93,7 @@ void RemoveRigidRoundOff(const fe::Mesh& mesh, const fe::AssembledModel& model, 
   Eigen::MatrixXd rb(nb, 6), ri(ni, 6);
   for (int j = 0; j < nb; ++j) rb.row(j) = r.row(basis.boundary[j]);
   for (int j = 0; j < ni; ++j) ri.row(j) = r.row(basis.interior[j]);
-  const Eigen::MatrixXd g = rb.transpose() * rb;
-  Eigen::LDLT<Eigen::MatrixXd> gl(g);
-  if (gl.info() == Eigen::Success && gl.vectorD().minCoeff() > 1e-12 * gl.vectorD().maxCoeff()) {
-    basis.psi.noalias() += (ri - basis.psi * rb) * gl.solve(rb.transpose());
-  }
+  ProjectRigidMotions(rb, ri, basis.psi);
 }
 
 }  // namespace
@@ -128,6 +124,14 @@ Eigen::MatrixXd CraigBamptonBasis::Expand(const Eigen::MatrixXd& q) const {
     for (Eigen::Index k = b; k < e; ++k) u.row(interior[k]) = ui.row(k - b);
   });
   return u;
+}
+
+void ProjectRigidMotions(const Eigen::MatrixXd& rb, const Eigen::MatrixXd& ri, Eigen::MatrixXd& psi) {
+  const Eigen::MatrixXd g = rb.transpose() * rb;
+  Eigen::LDLT<Eigen::MatrixXd> gl(g);
+  if (gl.info() == Eigen::Success && gl.vectorD().minCoeff() > 1e-12 * gl.vectorD().maxCoeff()) {
+    psi.noalias() += (ri - psi * rb) * gl.solve(rb.transpose());
+  }
 }
 
 void RequireInteriorMass(double largest_diagonal, const std::string& source) {

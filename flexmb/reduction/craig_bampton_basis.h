@@ -71,6 +71,14 @@ struct InterfaceSplit {
 /// than the interior has (without a cut-off).
 InterfaceSplit SplitInterface(const fe::Mesh& mesh, const fe::AssembledModel& model, const ReductionOptions& options);
 
+/// For a free body (K r = 0 for its rigid-body vectors r, rows rb at the
+/// boundary and ri at the interior, 6 columns): makes Psi r_b = r_i exact,
+/// removing the static solve's round-off along the six rigid directions
+/// (psi += (ri - psi rb) (rb^T rb)^-1 rb^T), so that the basis holds the
+/// rigid motions exactly. `ri` and `psi` may be any same rows of the
+/// interior (a process's share). Nothing if rb^T rb is singular.
+void ProjectRigidMotions(const Eigen::MatrixXd& rb, const Eigen::MatrixXd& ri, Eigen::MatrixXd& psi);
+
 /// Throws NumericalError (naming the model file `source`) unless the
 /// largest diagonal entry of M_ii is positive: without mass there are no
 /// fixed-interface modes.

@@ -301,14 +301,6 @@ RigidVectors FreeBodyRigidVectors(const fe::Mesh& mesh, const fe::AssembledModel
   return out;
 }
 
-// Psi r_b = r_i exactly for a free body (this process's rows of Psi).
-void RemoveRigidRoundOff(const RigidVectors& r, Block& psi) {
-  if (!r.free) return;
-  const Eigen::MatrixXd g = r.rb.transpose() * r.rb;
-  Eigen::LDLT<Eigen::MatrixXd> gl(g);
-  if (gl.info() != Eigen::Success || !(gl.vectorD().minCoeff() > 1e-12 * gl.vectorD().maxCoeff())) return;
-  psi.noalias() += (r.ri - psi * r.rb) * gl.solve(r.rb.transpose());
-}
 
 // A distributed dense matrix over this process's rows of `local` (copied).
 void DenseOf(const Block& local, int n_rows, Mat* out) {
@@ -560,7 +552,7 @@ ReducedBody ReduceCraigBamptonPetsc(const fe::FeModel& model, const ReductionOpt
     FLEXMB_PETSC(MatCreateDense(PETSC_COMM_WORLD, l.rows, PETSC_DECIDE, ni, nb, nullptr, &x));
     FLEXMB_PETSC(MatMatSolve(factor, b, x));
     psi = LocalBlock(x);
-    RemoveRigidRoundOff(rigid, psi);
+    if (rigid.free) ProjectRigidMotions(rigid.rb, rigid.ri, psi);
   }
   t.static_modes = MPI_Wtime() - t0;
 
