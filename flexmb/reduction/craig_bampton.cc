@@ -337,7 +337,10 @@ ReducedBody ReduceBasis(const fe::FeModel& model, const fe::AssembledModel& a, c
   // stress of every element for a unit value of each modal coordinate;
   // imported matrices come without element properties: no stress modes
   const auto t_stress = Clock::now();
-  if (!model.imported && root) body.stress = ComputeStressModes(mesh, body.modes, options.solid_corner_stress);
+  if (!model.imported) {
+    body.stress = steps != nullptr ? steps->stress(body.modes)
+                                   : ComputeStressModes(mesh, body.modes, options.solid_corner_stress);
+  }
   t.stress_modes = Seconds(t_stress);
   const auto t_stiffening = Clock::now();
   if (options.geometric_stiffening) {

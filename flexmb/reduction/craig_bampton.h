@@ -99,8 +99,10 @@ struct DistributedSteps {
   /// on the others) with the modal mass H^T M H (on every process),
   /// complete on the root.
   std::function<InertiaInvariants(const MatX& modes, const MatX& modal_mass)> invariants;
-  /// This process writes the body: the modes, stress modes and provenance
-  /// are formed here only.
+  /// The stress modes of the body's modes (called after `invariants`),
+  /// complete on the root.
+  std::function<StressModes(const MatX& modes)> stress;
+  /// This process writes the body: the mode matrix is formed here only.
   bool root = true;
 };
 

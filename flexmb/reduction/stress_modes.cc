@@ -48,7 +48,8 @@ void ElementModeRows(const fe::Element& el, const MatX& modes, MatX& ue) {
 // the solid_node table (StressModes::solid_node) of the solid elements
 // `solids`: each corner's stress rows, the last corner repeated up to the
 // most corners any of them has
-StressTable SolidNodeTable(const fe::Mesh& mesh, const MatX& modes, const std::vector<int>& solids) {
+StressTable SolidNodeTable(const fe::Mesh& mesh, const MatX& modes, const std::vector<int>& solids,
+                           const std::vector<char>* subset) {
   int most = 0;
   for (int e : solids) most = std::max(most, fe::Traits(mesh.elements[e].type).corners);
   std::vector<std::string> locations;
@@ -57,12 +58,18 @@ StressTable SolidNodeTable(const fe::Mesh& mesh, const MatX& modes, const std::v
   t.elements = solids;
   t.axes.assign(solids.size(), Mat3::Identity());
   t.modes.resize(t.Row(static_cast<int>(solids.size()), 0, 0), modes.cols());
+  if (subset != nullptr) {
+    t.modes.setZero();
+    for (size_t k = 0; k < solids.size(); ++k)
+      if (!(*subset)[solids[k]]) t.axes[k].setZero();
+  }
   if (modes.cols() == 0) return t;
   const int ns = static_cast<int>(solids.size());
   ParallelRows(ns, ParallelRanges(ns, 512), [&](int, Eigen::Index begin, Eigen::Index end) {
     std::vector<Vec3> x;
     MatX S, ue;
     for (Eigen::Index k = begin; k < end; ++k) {
+      if (subset != nullptr && !(*subset)[solids[k]]) continue;
       const fe::Element& el = mesh.elements[solids[k]];
       const fe::ElementInput in = ResolveElementInput(mesh, el, x);
       fe::Traits(el.type).corner_stress(in, S);
@@ -127,7 +134,8 @@ StressTable BeamFibreTable(const fe::Mesh& mesh, const StressTable& beam) {
 
 }  // namespace
 
-StressModes ComputeStressModes(const fe::Mesh& mesh, const MatX& modes, bool solid_corners) {
+StressModes ComputeStressModes(const fe::Mesh& mesh, const MatX& modes, bool solid_corners,
+                               const std::vector<char>* element_subset) {
   const Eigen::Index nn = static_cast<Eigen::Index>(mesh.nodes.size());
   if (modes.rows() != 6 * nn)
     throw InputError("stress modes: the mode matrix has " + std::to_string(modes.rows()) +
@@ -151,6 +159,11 @@ StressModes ComputeStressModes(const fe::Mesh& mesh, const MatX& modes, bool sol
     const int count = static_cast<int>(t->elements.size());
     t->axes.assign(count, Mat3::Identity());
     t->modes.resize(t->Row(count, 0, 0), n);
+    if (element_subset != nullptr) {
+      t->modes.setZero();
+      for (int k = 0; k < count; ++k)
+        if (!(*element_subset)[t->elements[k]]) t->axes[k].setZero();
+    }
   }
 
   // per element: one product of its recovery matrix with its rows of the modes
@@ -159,6 +172,7 @@ StressModes ComputeStressModes(const fe::Mesh& mesh, const MatX& modes, bool sol
     MatX S, ue;
     Mat3 axes;
     for (Eigen::Index e = begin; e < end; ++e) {
+      if (element_subset != nullptr && !(*element_subset)[e]) continue;
       const fe::Element& el = mesh.elements[e];
       const fe::ElementInput in = ResolveElementInput(mesh, el, x);
       Recovery(in, S, axes);
@@ -171,7 +185,7 @@ StressModes ComputeStressModes(const fe::Mesh& mesh, const MatX& modes, bool sol
     }
   });
   out.beam_fibre = BeamFibreTable(mesh, out.beam);
-  if (solid_corners) out.solid_node = SolidNodeTable(mesh, modes, out.solid.elements);
+  if (solid_corners) out.solid_node = SolidNodeTable(mesh, modes, out.solid.elements, element_subset);
   return out;
 }
 

@@ -8,6 +8,7 @@
 /// at a point of a beam section.
 
 #include <Eigen/Core>
+#include <vector>
 
 #include "flexmb/fe/mesh.h"
 #include "flexmb/reduction/reduced_body.h"
@@ -25,7 +26,13 @@ namespace flexmb::reduction {
 /// Beams whose section has stress recovery points also give
 /// StressModes::beam_fibre; with `solid_corners`, solids also give
 /// StressModes::solid_node (the stress at each corner node).
-StressModes ComputeStressModes(const fe::Mesh& mesh, const MatX& modes, bool solid_corners = false);
+/// With `element_subset` (one flag per element of the mesh), only the
+/// flagged elements are computed; the others keep their place in the
+/// tables with zero rows and zero axes, so that the tables of a partition
+/// of the elements sum, entry by entry, to the whole tables (a distributed
+/// reduction, reduction/petsc/).
+StressModes ComputeStressModes(const fe::Mesh& mesh, const MatX& modes, bool solid_corners = false,
+                               const std::vector<char>* element_subset = nullptr);
 
 /// Von Mises stress of a plane stress state (sxx, syy, sxy) (shell
 /// components): sqrt(sxx^2 - sxx syy + syy^2 + 3 sxy^2).

@@ -78,6 +78,17 @@ def differences(ref_path, path):
         vb = aligned(key, np.asarray(b.invariants[key], dtype=float), s)
         out[key] = np.max(np.abs(va - vb)) / scale
     out["modes"] = np.max(np.abs(a.modes - b.modes * s)) / np.max(np.abs(a.modes))
+    # stress modes: the same tables, element lists and axes; values per unit
+    # modal coordinate, compared at the largest value of the table
+    for name, ta in a.stress.items():
+        tb = b.stress[name]
+        assert list(ta["elements"]) == list(tb["elements"]), name
+        va, vb = np.asarray(ta["modes"]), np.asarray(tb["modes"])
+        assert va.shape == vb.shape, name
+        if va.size == 0:
+            continue
+        assert np.max(np.abs(np.asarray(ta["axes"]) - np.asarray(tb["axes"]))) < 1e-14, name
+        out["stress." + name] = np.max(np.abs(va - vb * s[None, :])) / np.max(np.abs(va))
     return out, b
 
 
@@ -87,9 +98,10 @@ def differences(ref_path, path):
 POINT_MASSES = "CONM2,9001,1,,500.,0.1,0.2,0.3\nCONM2,9002,2,,300.,-0.2,0.,0.4,\n,4.,0.1,5.,0.,0.,6.\nCONM2,9003,300,,80.\n"
 
 MODELS = {
-    # name: generator arguments, interface, extra bulk data, bound on the invariants
-    "ladder": (["ladder", "--nx", "30"], "1,2,3,4", "", {"moo1": 1e-9}),
-    "solid": (["solid-boom", "--nx", "24", "--ny", "3", "--nz", "4"], "1,2", POINT_MASSES, {}),
+    # name: generator arguments, interface, extra bulk data, extra options, looser bounds
+    "ladder": (["ladder", "--nx", "30"], "1,2,3,4", "", (), {"moo1": 1e-9, "stress.shell": 1e-9}),
+    "solid": (["solid-boom", "--nx", "24", "--ny", "3", "--nz", "4"], "1,2", POINT_MASSES,
+              ("--solid-corner-stress",), {}),
 }
 
 
@@ -97,16 +109,16 @@ MODELS = {
 def test_distributed_equals_serial(cli, source_dir, tmp_path, name):
     if shutil.which("mpirun") is None:
         pytest.fail("mpirun not found: scripts/install-deps.sh installs openmpi-bin")
-    gen, interface, extra, looser = MODELS[name]
+    gen, interface, extra, options, looser = MODELS[name]
     deck = tmp_path / f"{name}.bdf"
     subprocess.run([sys.executable, os.path.join(source_dir, "scripts", "make_fe_deck.py"), *gen, "--out", str(deck)],
                    check=True)
     deck.write_text(deck.read_text().replace("ENDDATA\n", extra + "ENDDATA\n"))
-    serial = reduce(cli, deck, interface, tmp_path / "serial.h5")
+    serial = reduce(cli, deck, interface, tmp_path / "serial.h5", extra=options)
     assert serial.returncode == 0, serial.stderr
     for ranks in (1, 2, 4):
         out = tmp_path / f"petsc{ranks}.h5"
-        r = reduce(cli, deck, interface, out, ranks)
+        r = reduce(cli, deck, interface, out, ranks, extra=options)
         assert r.returncode == 0, r.stderr
         assert f"on {ranks} MPI ranks" in r.stdout
         d, body = differences(tmp_path / "serial.h5", out)

@@ -18,6 +18,7 @@
 #include "flexmb/reduction/craig_bampton_basis.h"
 #include "flexmb/reduction/inertia_invariants.h"
 #include "flexmb/reduction/rigid_modes.h"
+#include "flexmb/reduction/stress_modes.h"
 
 namespace flexmb::reduction::petsc {
 
@@ -69,6 +70,17 @@ int Size() {
 // Sums a dense matrix over the processes, the result on all of them.
 void SumAll(Eigen::MatrixXd& a) {
   if (a.size() > 0) MPI_Allreduce(MPI_IN_PLACE, a.data(), static_cast<int>(a.size()), MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+}
+// Sums a dense matrix over the processes into rank 0's (column by column,
+// so that no count exceeds an int).
+template <class M>
+void SumOnRoot(M& a) {
+  const bool root = Rank() == 0;
+  for (Eigen::Index j = 0; j < a.cols(); ++j) {
+    if (a.rows() == 0) break;
+    MPI_Reduce(root ? MPI_IN_PLACE : a.col(j).data(), a.col(j).data(), static_cast<int>(a.rows()), MPI_DOUBLE, MPI_SUM,
+               0, PETSC_COMM_WORLD);
+  }
 }
 double SumAll(double v) {
   MPI_Allreduce(MPI_IN_PLACE, &v, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
@@ -619,16 +631,20 @@ ReducedBody ReduceCraigBamptonPetsc(const fe::FeModel& model, const ReductionOpt
     for (int i = 0; i < ni; ++i) u.row(basis.interior[i]) = all.row(i);
     return u;
   };
+  // every process needs the modes of its share's nodes: the whole matrix,
+  // broadcast column by column for the invariants and kept for the stress modes
+  MatX modes_here;
   steps.invariants = [&](const MatX& root_modes, const MatX& modal_mass) {
-    // every process needs the modes of its share's nodes: the whole matrix, column by column
     Eigen::Index rows = root_modes.rows(), cols = root_modes.cols();
     MPI_Bcast(&rows, sizeof rows, MPI_BYTE, 0, PETSC_COMM_WORLD);
     MPI_Bcast(&cols, sizeof cols, MPI_BYTE, 0, PETSC_COMM_WORLD);
-    MatX modes_here = rank == 0 ? root_modes : MatX(rows, cols);
+    if (rank != 0) modes_here.resize(rows, cols);
+    const MatX& m_all = rank == 0 ? root_modes : modes_here;
     for (Eigen::Index j = 0; j < cols; ++j)
-      MPI_Bcast(modes_here.col(j).data(), static_cast<int>(rows), MPI_DOUBLE, 0, PETSC_COMM_WORLD);
+      MPI_Bcast(const_cast<double*>(m_all.col(j).data()), static_cast<int>(rows), MPI_DOUBLE, 0, PETSC_COMM_WORLD);
+    const MatX& modes_here_ref = m_all;
     // mww is the modal mass, as on one process (every process is handed it, so the sum is not)
-    InertiaInvariants inv = ComputeInertiaInvariants(mesh, a, modes_here, &modal_mass, rank == 0);
+    InertiaInvariants inv = ComputeInertiaInvariants(mesh, a, modes_here_ref, &modal_mass, rank == 0);
     std::vector<double> flat;
     Flatten(inv, flat, true);
     if (flat.size() > static_cast<size_t>(INT_MAX)) throw NumericalError("too many invariants to sum", kWhere);
@@ -637,6 +653,18 @@ ReducedBody ReduceCraigBamptonPetsc(const fe::FeModel& model, const ReductionOpt
     Flatten(inv, flat, false);
     inv.mww = 0.5 * (modal_mass + modal_mass.transpose());
     return inv;
+  };
+  steps.stress = [&](const MatX& root_modes) {
+    // this process's elements; the others' rows and axes are zero, so the sum is the whole
+    const std::vector<char> elements(assembly.block_subset.begin(),
+                                     assembly.block_subset.begin() + static_cast<std::ptrdiff_t>(mesh.elements.size()));
+    StressModes stress =
+        ComputeStressModes(mesh, rank == 0 ? root_modes : modes_here, options.solid_corner_stress, &elements);
+    for (StressTable* t : {&stress.shell, &stress.beam, &stress.solid, &stress.beam_fibre, &stress.solid_node}) {
+      SumOnRoot(t->modes);
+      for (Mat3& axes : t->axes) SumOnRoot(axes);
+    }
+    return stress;
   };
   return ReduceBasis(model, a, basis, options, &t, &steps);
 }
