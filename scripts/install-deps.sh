@@ -25,8 +25,9 @@ PACKAGES=(
   python3-pytest
   # parameter studies on a local or remote Dask cluster (flexmb study; docs/studies.md)
   python3-distributed
-  # the study files are rewritten with PyYAML (python/flexmb/studyfile.py)
-  python3-yaml
+  # the study files are rewritten with PyYAML (python/flexmb/studyfile.py);
+  # the study table is also written as HDF5 (study.h5) with pandas and PyTables
+  python3-yaml python3-pandas python3-tables
   # the distributed reduction (flexmb reduce --backend petsc under mpirun;
   # flexmb/reduction/petsc/): PETSc with MUMPS, SLEPc, Open MPI
   petsc-dev slepc-dev libmumps-dev openmpi-bin libopenmpi-dev

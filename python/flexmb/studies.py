@@ -2,7 +2,7 @@
 one by default (one worker process per core), or a running cluster given by
 its scheduler's address. Rows are journaled as they finish (DIR/journal.jsonl),
 so an interrupted study resumes where it stopped; the table is DIR/study.csv
-(and DIR/study.h5 where pandas and PyTables are installed).
+(and DIR/study.h5 with pandas and PyTables, which install-deps.sh installs; without them only the CSV).
 """
 
 import csv
