@@ -153,6 +153,20 @@ def test_mechanism_is_reported(cli, source_dir, tmp_path):
     assert not (tmp_path / "p.h5").exists()
 
 
+def test_element_error_on_one_rank_is_reported(cli, source_dir, tmp_path):
+    """A zero-length rod whose nodes come last belongs to the last rank's
+    share: its error reaches every rank (no rank is left waiting), rank 0
+    reports it with the file and line, and the exit code is an input error's."""
+    deck = tmp_path / "bad.bdf"
+    subprocess.run([sys.executable, os.path.join(source_dir, "scripts", "make_fe_deck.py"), "solid-boom", "--nx", "8",
+                    "--ny", "2", "--nz", "2", "--out", str(deck)], check=True)
+    deck.write_text(deck.read_text().replace(
+        "ENDDATA\n", "GRID,9101,,12.,0.2,0.3\nGRID,9102,,12.,0.2,0.3\nPROD,9,1,1e-4\nCROD,9001,9,9101,9102\nENDDATA\n"))
+    r = reduce(cli, deck, "1,2", tmp_path / "p.h5", ranks=2)
+    assert r.returncode == 2, r.stderr
+    assert "CROD 9001: zero length" in r.stderr and r.stderr.count("zero length") == 1, r.stderr
+
+
 def test_unknown_backend(cli, tmp_path):
     r = subprocess.run([cli, "reduce", "x.bdf", "--interface", "1", "--modes", "2", "-o", "x.h5", "--backend", "mpi"],
                        capture_output=True, text=True)

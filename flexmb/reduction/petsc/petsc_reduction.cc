@@ -69,7 +69,42 @@ int Size() {
 
 // Sums a dense matrix over the processes, the result on all of them.
 void SumAll(Eigen::MatrixXd& a) {
-  if (a.size() > 0) MPI_Allreduce(MPI_IN_PLACE, a.data(), static_cast<int>(a.size()), MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+  for (Eigen::Index done = 0; done < a.size();) {  // in pieces whose count fits an int
+    const int count = static_cast<int>(std::min<Eigen::Index>(a.size() - done, INT_MAX));
+    MPI_Allreduce(MPI_IN_PLACE, a.data() + done, count, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+    done += count;
+  }
+}
+
+// Runs `step` on every process; if it throws on any, every process throws
+// the error of the lowest process that failed (its kind and message), so
+// that none is left waiting in a collective call. `step` must not itself
+// make collective calls that a failing process could skip.
+template <class F>
+auto Agreed(F&& step) -> decltype(step()) {
+  int kind = 0;  // 0 ok, 1 input error, 2 other error
+  std::string message;
+  decltype(step()) out{};
+  try {
+    out = step();
+  } catch (const InputError& e) {
+    kind = 1;
+    message = e.what();
+  } catch (const std::exception& e) {
+    kind = 2;
+    message = e.what();
+  }
+  const int rank = Rank();
+  int first = kind != 0 ? rank : INT_MAX;
+  MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD);
+  if (first == INT_MAX) return out;
+  int length = static_cast<int>(message.size());
+  MPI_Bcast(&kind, 1, MPI_INT, first, PETSC_COMM_WORLD);
+  MPI_Bcast(&length, 1, MPI_INT, first, PETSC_COMM_WORLD);
+  message.resize(static_cast<size_t>(length));
+  MPI_Bcast(message.data(), length, MPI_CHAR, first, PETSC_COMM_WORLD);
+  if (kind == 1) throw InputError(message);
+  throw NumericalError(message);
 }
 // Sums a dense matrix over the processes into rank 0's (column by column,
 // so that no count exceeds an int).
@@ -164,26 +199,30 @@ LocalRows ExchangeEntries(const fe::AssembledModel& a, const InterfaceSplit& spl
   SumAll(kbb);
   SumAll(mbb);
   // entries to the other processes (none to itself: its own stay here)
+  // byte counts of MPI are ints: every process checks its own and all agree before exchanging
   std::vector<int> send(size), recv(size), sdisp(size, 0), rdisp(size, 0);
+  int64_t stotal = 0;
   for (int r = 0; r < size; ++r) {
-    const size_t bytes = r == rank ? 0 : out[static_cast<size_t>(r)].size() * sizeof(Entry);
-    if (bytes > static_cast<size_t>(INT_MAX)) {
-      throw NumericalError("more than 2 GB of matrix entries for one process: run on more processes", kWhere);
-    }
-    send[r] = static_cast<int>(bytes);
+    const int64_t bytes = r == rank ? 0 : static_cast<int64_t>(out[static_cast<size_t>(r)].size() * sizeof(Entry));
+    send[r] = static_cast<int>(std::min<int64_t>(bytes, INT_MAX));
+    stotal += bytes;
   }
+  int too_many = stotal > INT_MAX ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &too_many, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
+  if (too_many) throw NumericalError("more than 2 GB of matrix entries to exchange at once: run on more processes", kWhere);
   MPI_Alltoall(send.data(), 1, MPI_INT, recv.data(), 1, MPI_INT, PETSC_COMM_WORLD);
   std::vector<char> sbuf;
-  int64_t stotal = 0, rtotal = 0;
+  int64_t rtotal = 0;
+  stotal = 0;
   for (int r = 0; r < size; ++r) {
     sdisp[r] = static_cast<int>(stotal);
     rdisp[r] = static_cast<int>(rtotal);
     stotal += send[r];
     rtotal += recv[r];
   }
-  if (stotal > INT_MAX || rtotal > INT_MAX) {
-    throw NumericalError("more than 2 GB of matrix entries to exchange: run on more processes", kWhere);
-  }
+  too_many = rtotal > INT_MAX ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &too_many, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
+  if (too_many) throw NumericalError("more than 2 GB of matrix entries to receive at once: run on more processes", kWhere);
   sbuf.resize(static_cast<size_t>(stotal));
   for (int r = 0; r < size; ++r) {
     if (send[r] > 0) std::memcpy(sbuf.data() + sdisp[r], out[static_cast<size_t>(r)].data(), send[r]);
@@ -482,7 +521,8 @@ ReducedBody ReduceCraigBamptonPetsc(const fe::FeModel& model, const ReductionOpt
   double t0 = MPI_Wtime();
   fe::AssemblyOptions assembly = ReductionAssemblyOptions(options);
   assembly.block_subset = BlockShare(mesh, rank, size);
-  const fe::AssembledModel a = fe::BuildMatrices(model, assembly);
+  // an element's errors now arise on its process only: agreed on by all
+  const fe::AssembledModel a = Agreed([&] { return fe::BuildMatrices(model, assembly); });
   const InterfaceSplit split = SplitInterface(mesh, a, options);
   const int nb = static_cast<int>(split.boundary.size());
   const int ni = static_cast<int>(split.interior.size());
@@ -571,8 +611,9 @@ ReducedBody ReduceCraigBamptonPetsc(const fe::FeModel& model, const ReductionOpt
   // 4. fixed-interface normal modes on the same factor, up to the cut-off
   t0 = MPI_Wtime();
   const double tolerance = options.eigen_tolerance > 0.0 ? options.eigen_tolerance : 1e-12;
-  fe::ModalResult modes = SolveUpToCutoff(split.normal_modes, ni, options.cutoff_hz,
-                                          [&](int c) { return SolveModes(k, m, ksp, c, tolerance); });
+  auto solve = [&](int c) { return SolveModes(k, m, ksp, c, tolerance); };
+  fe::ModalResult modes = split.normal_modes > 0 ? SolveUpToCutoff(split.normal_modes, ni, options.cutoff_hz, solve)
+                                                 : solve(0);
   const Block& phi = modes.modes;
   const int nf = static_cast<int>(phi.cols());
   basis.fixed_interface_hz = modes.frequencies_hz;
@@ -601,6 +642,9 @@ ReducedBody ReduceCraigBamptonPetsc(const fe::FeModel& model, const ReductionOpt
       basis.stiffness.bottomRightCorner(nf, nf) = 0.5 * (kff + kff.transpose());
     }
   }
+  // every process decides on rank 0's bits (rigid modes, keep, the sizes gathered in expand)
+  MPI_Bcast(basis.mass.data(), static_cast<int>(basis.mass.size()), MPI_DOUBLE, 0, PETSC_COMM_WORLD);
+  MPI_Bcast(basis.stiffness.data(), static_cast<int>(basis.stiffness.size()), MPI_DOUBLE, 0, PETSC_COMM_WORLD);
   // no rows of Psi and Phi in the basis itself: only their counts
   basis.psi.resize(0, nb);
   basis.phi.resize(0, nf);
@@ -662,7 +706,12 @@ ReducedBody ReduceCraigBamptonPetsc(const fe::FeModel& model, const ReductionOpt
         ComputeStressModes(mesh, rank == 0 ? root_modes : modes_here, options.solid_corner_stress, &elements);
     for (StressTable* t : {&stress.shell, &stress.beam, &stress.solid, &stress.beam_fibre, &stress.solid_node}) {
       SumOnRoot(t->modes);
-      for (Mat3& axes : t->axes) SumOnRoot(axes);
+      Eigen::MatrixXd axes(9, static_cast<Eigen::Index>(t->axes.size()));  // one column per element
+      for (size_t e = 0; e < t->axes.size(); ++e)
+        axes.col(static_cast<Eigen::Index>(e)) = Eigen::Map<const Eigen::Matrix<double, 9, 1>>(t->axes[e].data());
+      SumAll(axes);
+      for (size_t e = 0; e < t->axes.size(); ++e)
+        t->axes[e] = Eigen::Map<const Mat3>(axes.col(static_cast<Eigen::Index>(e)).data());
     }
     return stress;
   };
