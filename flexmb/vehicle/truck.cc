@@ -21,6 +21,7 @@
 #include "flexmb/vehicle/command_signal.h"
 #include "flexmb/vehicle/contact_patch_joint.h"
 #include "flexmb/vehicle/tir_file.h"
+#include "flexmb/vehicle/truck_frame.h"
 #include "flexmb/vehicle/wheel_brake.h"
 
 namespace flexmb::vehicle {
@@ -101,36 +102,6 @@ void ReadSuspension(const YAML::Node& n, YamlContext& ctx, const char* key, Susp
   s.stabilizer_damping = ctx.Double(node, "stabilizer_damping", 0.0);
   s.extra_arm_height = ctx.Double(node, "extra_arm_height", 0.0);
   if (!(s.extra_arm_height >= 0)) ctx.Fail(node, "extra_arm_height must be >= 0");
-}
-
-// reads the ladder frame's parameters (frame map of the truck)
-void ReadFrame(const YAML::Node& n, YamlContext& ctx, TruckData& d) {
-  const YAML::Node& node = n["frame"];
-  ctx.SetEntity("truck frame");
-  if (!node) ctx.Fail(n, "missing 'frame'");
-  ctx.CheckKeys(node, {"mass", "front_x", "length", "half_spacing", "web_height", "flange_width", "thickness",
-                       "bottom_z", "cross_members", "cross_member_thickness", "element_size", "E", "nu", "rho", "spider_radius", "note"});
-  LadderFrameData& f = d.ladder;
-  f.total_mass = ctx.Positive(node, "mass");
-  f.front_x = ctx.Double(node, "front_x", f.front_x);
-  f.length = ctx.Double(node, "length", f.length);
-  f.half_spacing = ctx.Double(node, "half_spacing", f.half_spacing);
-  f.web_height = ctx.Double(node, "web_height", f.web_height);
-  f.flange_width = ctx.Double(node, "flange_width", f.flange_width);
-  f.thickness = ctx.Double(node, "thickness", f.thickness);
-  f.bottom_z = ctx.Double(node, "bottom_z", f.bottom_z);
-  f.cross_member_thickness = ctx.Double(node, "cross_member_thickness", f.cross_member_thickness);
-  f.element_size = ctx.Double(node, "element_size", f.element_size);
-  f.E = ctx.Double(node, "E", f.E);
-  f.nu = ctx.Double(node, "nu", f.nu);
-  f.rho = ctx.Double(node, "rho", f.rho);
-  f.spider_radius = ctx.Double(node, "spider_radius", f.spider_radius);
-  if (const YAML::Node c = node["cross_members"]) {
-    if (!c.IsSequence() || c.size() < 2) ctx.Fail(c, "expected 'cross_members' as a list of at least two x [m]");
-    f.cross_members.clear();
-    for (const YAML::Node& v : c) f.cross_members.push_back(ctx.Number(v, "cross member x"));
-  }
-  ctx.Guard(node, [&] { SetFrameMesh(d); });
 }
 
 // static wheel-centre heights front, rear [m] from the tire deflections
@@ -258,15 +229,13 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
   }
   h.frame_body = frame;
   // a frame marker at an attachment point: on the elastic frame carried by
-  // the nearest (interface) node, offset to the point
-  // (`anchor`: the attachment point whose node carries a marker offset from it)
-  auto frame_marker = [&](const std::string& name, const Vec3& p, const Mat3& R, const Vec3* anchor = nullptr) {
+  // the attachment's interface node (FrameMountNode), offset to the point
+  // (`anchor`: the attachment whose node carries a marker offset from it)
+  auto frame_marker = [&](const std::string& name, const Vec3& p, const Mat3& R,
+                          const FrameAttachment* anchor = nullptr) {
     if (!d.elastic_frame) return m.AddMarker(frame, name, p, R);
-    const int node = NearestNode(d.elastic_frame->mesh, anchor ? *anchor : p);
-    const auto& in = d.elastic_frame->interface_nodes;
-    if (std::find(in.begin(), in.end(), node) == in.end())
-      throw InputError("frame attachment '" + name + "' is not on an interface node of the elastic frame",
-                       {"", 0, "truck frame"});
+    const int node = anchor ? FrameMountNode(d, *d.elastic_frame, anchor->name, anchor->point)
+                            : FrameMountNode(d, *d.elastic_frame, name, p);
     return m.AddMarker(frame, name, p - d.elastic_frame->mesh.nodes[static_cast<size_t>(node)].x, R, node);
   };
   h.frame_ref = m.AddMarker(frame, "ref", d.frame.cg, I);
@@ -324,8 +293,9 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
       m.AddJoint(std::make_unique<RevoluteJoint>(side + "_axle_pitch"), m.AddMarker(arm, "hub", centre, AxisY()),
                  m.AddMarker(roll_carrier, "pitch", centre, AxisY()));
       const Vec3 up(0, 0, s.extra_arm_height);
+      const FrameAttachment pivot_attachment{"arm_pivot_" + side, pivot};
       m.AddJoint(std::make_unique<DistanceJoint>(side + "_extra_arm", s.arm_length),
-                 frame_marker("extra_arm_pivot_" + side, pivot + up, I, &pivot),
+                 frame_marker("extra_arm_pivot_" + side, pivot + up, I, &pivot_attachment),
                  m.AddMarker(roll_carrier, "extra_arm", centre + up, I));
     }
     const int ri = m.AddMarker(roll_carrier, "roll", centre, AxisX()), rj = m.AddMarker(ax, "roll", centre, AxisX());
@@ -420,7 +390,8 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
     // order).
     const Vec3 arm_end = SteeringArmBall(d, zf);
     const Vec3 ball = PitmanBall(d, zf);
-    const Vec3 pivot = SteeringGearPivot(d, zf), mount = SteeringGearMount(d, zf);
+    const Vec3 pivot = SteeringGearPivot(d, zf);
+    const FrameAttachment mount{"steering_gear", SteeringGearMount(d, zf)};
     PartData pitman;
     pitman.mass = d.pitman_arm_mass;
     pitman.inertia = Vec3(0.03, 0.03, 0.01);
@@ -616,7 +587,7 @@ TruckData ParseTruck(const YAML::Node& n, YamlContext& ctx, const std::string& d
   const std::filesystem::path base(dir);
   d.front_tire = LoadTireFile((base / ctx.String(tires, "front")).string());
   d.rear_tire = LoadTireFile((base / ctx.String(tires, "rear")).string());
-  ReadFrame(n, ctx, d);
+  ReadTruckFrame(n, ctx, dir, d);
   return d;
 }
 

@@ -11,6 +11,7 @@
 /// y to the left, z up from the road; at t = 0 it coincides with the world.
 
 #include <array>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -89,6 +90,16 @@ struct TruckData {
   /// frame is the vehicle frame; its interface nodes include the nodes
   /// nearest to FrameAttachments); otherwise a rigid body.
   std::shared_ptr<const reduction::ReducedBody> elastic_frame;
+  /// The user's FE frame (truck file: frame.body), a body file made by
+  /// `flexmb reduce` whose basic frame is the vehicle frame, in SI units;
+  /// null: the generated ladder frame. The rigid frame takes its mass
+  /// properties, the elastic frame is this body (truck_frame.h).
+  std::shared_ptr<const reduction::ReducedBody> frame_body;
+  std::string frame_body_file;                ///< its path, for messages
+  std::map<std::string, int> frame_mounts;    ///< attachment name -> node id of frame_body
+  /// Largest distance of a mount's node from its attachment point [m]; the
+  /// offset between them is a rigid lever (a bracket idealized as rigid).
+  double mount_tolerance = 0.1;
   PartData front_axle, rear_axle, knuckle, front_wheel, rear_wheel, arm;  ///< unsprung parts
   SuspensionData front, rear;      ///< suspensions
   double steering_stiffness = 4e5;  ///< knuckle servo stiffness about the kingpin [N m/rad]

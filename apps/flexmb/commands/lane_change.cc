@@ -13,6 +13,7 @@
 #include <memory>
 #include <numbers>
 #include <stdexcept>
+#include <tuple>
 
 #include "flexmb/bodies/flexible_body.h"
 #include "flexmb/bodies/rigid_body.h"
@@ -29,6 +30,7 @@
 #include "flexmb/vehicle/driver.h"
 #include "flexmb/vehicle/lane_change_course.h"
 #include "flexmb/vehicle/truck.h"
+#include "flexmb/vehicle/truck_frame.h"
 #include "flexmb/results/truck_animation.h"
 
 namespace flexmb::vehicle {
@@ -154,6 +156,16 @@ LaneChangeFile ReadFile(const std::string& path) {
   const YAML::Node tr = root["truck"];
   if (!tr) ctx.Fail(root, "missing the 'truck' map");
   f.truck = ParseTruck(tr, ctx, std::filesystem::path(path).parent_path().string());
+  // the user's frame comes reduced: its modes and damping are the body file's
+  if (f.truck.frame_body) {
+    ctx.SetEntity("lane_change_test");
+    for (const char* key : {"frame_modes", "frame_keep_modes", "frame_damping"})
+      if (t[key])
+        ctx.Fail(t[key], std::string("'") + key +
+                             "' applies to the generated frame; the truck's frame is the body file " +
+                             f.truck.frame_body_file + " (set modes and damping when reducing it: flexmb reduce "
+                             "--modes, --keep, --damping-ratio)");
+  }
   f.driver.steering_ratio = f.truck.steering_ratio;
   return f;
 }
@@ -300,23 +312,14 @@ TruckFileSettings LoadTruckFileSettings(const std::string& file) {
 
 FrameReductionData LaneChangeFrameReduction(const std::string& file) { return ReadFile(file).reduction; }
 
-std::shared_ptr<reduction::ReducedBody> ReduceTruckFrame(const TruckData& d, const FrameReductionData& r, double g) {
-  if (!d.frame_mesh) throw InputError("the truck has no frame mesh", {"", 0, "truck frame"});
+std::shared_ptr<const reduction::ReducedBody> ReduceTruckFrame(const TruckData& d, const FrameReductionData& r,
+                                                               double g) {
+  if (d.frame_body) return d.frame_body;  // the user's frame, reduced by them
+  GeneratedFrameModel frame = BuildGeneratedFrameModel(d, g);
   fe::FeModel model;
-  model.mesh = *d.frame_mesh;
+  model.mesh = std::move(frame.mesh);
   reduction::ReductionOptions o;
-  const LadderFrameData& lf = d.ladder;
-  for (const FrameAttachment& a : FrameAttachments(d, g)) {
-    const int node = NearestNode(model.mesh, a.point);
-    o.interface_nodes.push_back(node);
-    // the axle arms' pivots reach both rails (the leaf springs' eyes)
-    if (a.name.rfind("arm_pivot", 0) == 0) {
-      const double x = model.mesh.nodes[static_cast<size_t>(node)].x.x();
-      AddBracket(model.mesh, node, {Vec3(x, lf.half_spacing, lf.bottom_z), Vec3(x, -lf.half_spacing, lf.bottom_z)},
-                 lf.spider_radius);
-    }
-  }
-  AddSpiders(model.mesh, o.interface_nodes, lf.spider_radius);
+  o.interface_nodes = std::move(frame.interface_nodes);
   o.normal_modes = r.normal_modes;
   o.keep = r.keep;
   o.damping_ratios = {r.damping_ratio};
@@ -345,7 +348,9 @@ std::unique_ptr<LaneChangeSetup> SetUpLaneChange(const LaneChangeOptions& opt) {
   f = ReadFile(opt.file);
   if (opt.speed_kmh) f.speed_kmh = *opt.speed_kmh;
   if (opt.frame) f.frame = *opt.frame;
-  ApplySolverOverrides(SolverOverrides{std::nullopt, opt.dt}, f.solver);
+  SolverOverrides overrides;
+  overrides.dt = opt.dt;
+  ApplySolverOverrides(overrides, f.solver);
   if (!f.dt_min_given) f.solver.dt_min = 1e-6 * f.solver.dt;
   if (opt.run_up_time) f.run_up_time = *opt.run_up_time;
   if (!(f.run_up_time >= 0) || !std::isfinite(f.run_up_time)) throw InputError("run-up time must be >= 0 s");
@@ -400,7 +405,9 @@ void CheckLaneChange(const LaneChangeOptions& opt, std::FILE* out) {
   const std::array<double, 2> axle = StaticAxleLoads(f.truck, g);
   std::fprintf(out, "lane-change test: entry speed %.1f km/h, run-up %.1f m (%.2f s), %s frame", f.speed_kmh,
                f.course.start_x, f.run_up_time, f.frame.c_str());
-  if (f.truck.elastic_frame)
+  if (f.truck.elastic_frame && f.truck.frame_body)
+    std::fprintf(out, " (%d modal coordinates, from the body file)", f.truck.elastic_frame->invariants.n);
+  else if (f.truck.elastic_frame)
     std::fprintf(out, " (%d modal coordinates, reduced in %.2f s)", f.truck.elastic_frame->invariants.n,
                  setup->reduction_wall_time_s);
   const LaneChangeCourseData& c = f.course;
@@ -411,6 +418,19 @@ void CheckLaneChange(const LaneChangeOptions& opt, std::FILE* out) {
                setup->course->TestDistance());
   std::fprintf(out, "static axle loads: front %.2f kN, rear %.2f kN (%.0f kg in all)\n", axle[0] / 1e3, axle[1] / 1e3,
                (axle[0] + axle[1]) / g);
+  if (f.truck.frame_body) {
+    // the user's frame: its mounts and the largest lever from node to point
+    double largest = 0;
+    std::string where;
+    for (const FrameAttachment& a : FrameAttachments(f.truck, g)) {
+      const int node = FrameMountNode(f.truck, *f.truck.frame_body, a.name, a.point);
+      const double dist = (f.truck.frame_body->mesh.nodes[static_cast<size_t>(node)].x - a.point).norm();
+      if (dist >= largest) std::tie(largest, where) = std::make_pair(dist, a.name);
+    }
+    std::fprintf(out, "frame: body file %s, %.0f kg, %zu mounts on its interface nodes, largest offset %.3f m (%s)\n",
+                 f.truck.frame_body_file.c_str(), f.truck.frame.mass, f.truck.frame_mounts.size(), largest,
+                 where.c_str());
+  }
   std::fprintf(out, "driver: %s, preview %.2f s (min %.1f m), speed %s\n",
                f.driver.steering_law == SteeringLaw::kPreview ? "preview" : "pure pursuit", f.driver.preview_time,
                f.driver.min_preview, f.driver.hold_speed ? "held" : "not held");

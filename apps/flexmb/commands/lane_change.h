@@ -133,13 +133,14 @@ struct FrameReductionData {
   int keep = -1;                   ///< keep the lowest N flexible modes (-1: all, as the seed)
 };
 
-/// Craig-Bampton reduction of the truck's generated frame (d.frame_mesh):
-/// the interface nodes are the nodes nearest to FrameAttachments(d, g),
-/// each with a rigid spider of radius d.ladder.spider_radius (the arm
-/// pivots' brackets also reach both rails, AddBracket), all their static
-/// modes and the fixed-interface normal modes of `r`.
-std::shared_ptr<reduction::ReducedBody> ReduceTruckFrame(const TruckData& d, const FrameReductionData& r,
-                                                         double g = 9.81);
+/// The truck's elastic frame: the user's body file (d.frame_body, as it
+/// is; `r` does not apply), or the Craig-Bampton reduction of the generated
+/// frame (BuildGeneratedFrameModel: the interface nodes nearest to
+/// FrameAttachments(d, g), each with a rigid spider of radius
+/// d.ladder.spider_radius, the arm pivots' brackets reaching both rails),
+/// all their static modes and the fixed-interface normal modes of `r`.
+std::shared_ptr<const reduction::ReducedBody> ReduceTruckFrame(const TruckData& d, const FrameReductionData& r,
+                                                               double g = 9.81);
 
 /// The elastic frame's reduction settings of a lane-change file.
 FrameReductionData LaneChangeFrameReduction(const std::string& file);
