@@ -21,6 +21,7 @@
 #include "flexmb/common/process_tuning.h"
 #include "flexmb/common/error.h"
 #include "apps/flexmb/commands/fe_commands.h"
+#include "apps/flexmb/commands/frame_deck.h"
 #include "apps/flexmb/commands/fe_static.h"
 #include "apps/flexmb/commands/reduce_commands.h"
 #include "apps/flexmb/commands/run.h"
@@ -236,6 +237,12 @@ int main(int argc, char** argv) {
   bool straight_quiet = false;
   straight->add_flag("--quiet,-q", straight_quiet, "no summary line");
 
+  std::string frame_deck_out;
+  CLI::App* frame_deck =
+      truck->add_subcommand("frame-deck", "write the generated ladder frame as a Nastran deck, for flexmb reduce");
+  frame_deck->add_option("file", truck_file, "lane-change file (YAML)")->required();
+  frame_deck->add_option("--out,-o", frame_deck_out, "Nastran bulk data file to write")->required();
+
   CLI::App* check = app.add_subcommand("check", "validate a model file and report its constraints");
   check->add_option("model", model, "model file or lane-change file (YAML)")->required();
   std::optional<std::string> check_frame;
@@ -422,6 +429,8 @@ int main(int argc, char** argv) {
       return 0;
     });
   }
+  if (frame_deck->parsed())
+    return Guarded([&] { return flexmb::cli::WriteTruckFrameDeck(truck_file, frame_deck_out, stdout); });
   if (straight->parsed()) {
     return Guarded([&] {
       if (!straight_opt.road_csv.empty() && straight_opt.road == "iso8608") straight_opt.road = "csv";
