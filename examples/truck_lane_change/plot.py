@@ -3,7 +3,8 @@
 
 Usage: /usr/bin/python3 plot.py RUN_DIR [RUN_DIR ...] [--out DIR]
 Writes lateral_acceleration.png, steering_wheel_angle.png, roll.png,
-yaw_rate.png, axle_loads.png, tire_loads.png and path.png; several run directories are
+yaw_rate.png, axle_loads.png, tire_loads.png, load_transfer.png (load-transfer
+ratio per axle), roll_vs_lateral_acceleration.png and path.png; several run directories are
 overlaid (e.g. rigid against elastic frame, as the seed's Figs. 9 to 14:
 `plot.py RIGID_DIR ELASTIC_DIR --out PNGDIR`). Runs with the elastic frame
 add frame_deflection.png (largest elastic displacement of a frame node
@@ -75,12 +76,14 @@ def main():
         ("axle_loads", "axle load [kN]", ["front_axle_load_kN", "rear_axle_load_kN"]),
         ("tire_loads", "tire vertical load [kN] (rear: twin set)", ["fz_fl_kN", "fz_fr_kN", "fz_rl_kN", "fz_rr_kN"]),
     ]
+    if all("ltr_front" in c for _, c in runs):
+        panels.append(("load_transfer", "load-transfer ratio [-] (1: lift-off)", ["ltr_front", "ltr_rear"]))
     flexmb_plot().overlay(runs, panels, out_dir=out, decorate=mark_run_up)
     elastic = [(label, c) for label, c in runs if "frame_max_displacement_mm" in c]
     for name, key, pos, ylabel in [
         ("frame_deflection", "frame_max_displacement_mm", "frame_max_displacement_x",
-         "max elastic displacement of the frame [mm]"),
-        ("frame_stress", "frame_max_stress_MPa", "frame_max_stress_x", "max von Mises stress in the frame [MPa]"),
+         "max elastic displacement\nof the frame [mm]"),
+        ("frame_stress", "frame_max_stress_MPa", "frame_max_stress_x", "max von Mises stress\nin the frame [MPa]"),
     ]:
         if not elastic:
             break
@@ -98,6 +101,18 @@ def main():
         fig.tight_layout()
         fig.savefig(os.path.join(out, name + ".png"), dpi=110)
         plt.close(fig)
+    # roll against lateral acceleration in the monitored part (x >= 0)
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    for label, c in runs:
+        kept = [k for k, x in enumerate(c["x"]) if x >= 0.0]
+        ax.plot([c["lateral_acceleration"][k] for k in kept], [c["roll_deg"][k] for k in kept], lw=0.9, label=label)
+    ax.set_xlabel("lateral acceleration [m/s$^2$]")
+    ax.set_ylabel("roll angle of the frame [deg]")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "roll_vs_lateral_acceleration.png"), dpi=110)
+    plt.close(fig)
     fig, ax = plt.subplots(figsize=(9, 3))
     for label, c in runs:
         ax.plot(c["x"], c["y"], label=label + " front axle")

@@ -26,6 +26,14 @@ def test_lane_change_matches_cli(cli, truck, tmp_path):
         assert r.metrics[key] == ref[key]
     assert r.max_roll_deg == ref["max_roll_deg"]  # metrics as attributes
     assert r.results["time"][-1] == pytest.approx(r.metrics["t_end"])
+    # load-transfer ratios: from the tire loads of the same rows (6 digits)
+    c = r.results
+    for axle, left, right in (("front", "fz_fl_kN", "fz_fr_kN"), ("rear", "fz_rl_kN", "fz_rr_kN")):
+        ltr = (c[left] - c[right]) / (c[left] + c[right])
+        assert abs(c["ltr_" + axle] - ltr).max() < 1e-5
+        monitored = c["x"] >= 0.0
+        assert r.metrics["max_ltr_" + axle] == pytest.approx(abs(c["ltr_" + axle][monitored]).max(), abs=2e-2)
+    assert r.metrics["rollover_margin"] == pytest.approx(1 - max(r.metrics["max_ltr_front"], r.metrics["max_ltr_rear"]))
 
 
 def short_lane_change(variant):

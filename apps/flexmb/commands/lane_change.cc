@@ -471,7 +471,7 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
                  "time,x,y,centre_line_y,speed_kmh,lateral_acceleration,steering_wheel_angle_deg,road_wheel_angle_deg,"
                  "roll_deg,pitch_deg,yaw_deg,yaw_rate_degps,front_axle_load_kN,rear_axle_load_kN,fz_fl_kN,fz_fr_kN,"
                  "fz_rl_kN,fz_rr_kN,liftoff_fl,liftoff_fr,liftoff_rl,liftoff_rr,corridor_margin,drive_torque_kNm,"
-                 "wheel_angle_left_deg,wheel_angle_right_deg%s\n",
+                 "wheel_angle_left_deg,wheel_angle_right_deg,ltr_front,ltr_rear%s\n",
                  h.elastic ? ",frame_max_displacement_mm,frame_max_displacement_node,frame_max_displacement_x,"
                              "frame_max_stress_MPa,frame_max_stress_element,frame_max_stress_x"
                            : "");
@@ -530,6 +530,12 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
         lift[k] = c.fz <= 0.0 ? 1 : 0;
       }
       const double front = fz[0] + fz[1], rear = fz[2] + fz[3];
+      // load-transfer ratio per axle (a lifted wheel carries no load)
+      double ltr[2];
+      for (int a = 0; a < 2; ++a) {
+        const double left = std::max(fz[2 * a], 0.0), right = std::max(fz[2 * a + 1], 0.0);
+        ltr[a] = left + right > 0 ? (left - right) / (left + right) : 0.0;
+      }
       // corridor margin of the gauge points
       double margin = 1e300;
       for (int g : h.gauge) margin = std::min(margin, course.Margin(ws.markers[g].p_WM.x(), ws.markers[g].p_WM.y()));
@@ -549,6 +555,7 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
         r.max_yaw_rate_deg = std::max(r.max_yaw_rate_deg, std::abs(yaw_rate) * kDeg);
         r.min_axle_load[0] = std::min(r.min_axle_load[0], front);
         r.min_axle_load[1] = std::min(r.min_axle_load[1], rear);
+        for (int a = 0; a < 2; ++a) r.max_abs_ltr[a] = std::max(r.max_abs_ltr[a], std::abs(ltr[a]));
         if (margin < 0 && r.corridor_exit_time < 0) r.corridor_exit_time = st.t;
         if ((lift[0] || lift[1] || lift[2] || lift[3]) && r.lift_off_time < 0) r.lift_off_time = st.t;
       }
@@ -561,11 +568,11 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
         const int len = std::snprintf(
             line, sizeof(line),
             "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%d,%d,%d,"
-            "%d,%.6g,%.6g,%.6g,%.6g",
+            "%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g",
             st.t, pf.x() - x_start, pf.y(), course.CentreLine(pf.x()), speed * 3.6, ay, *driver.steering_wheel_angle() * kDeg,
             driver.road_wheel_angle() * kDeg, rpy.x() * kDeg, rpy.y() * kDeg, yaw * kDeg, yaw_rate * kDeg, front / 1e3,
             rear / 1e3, fz[0] / 1e3, fz[1] / 1e3, fz[2] / 1e3, fz[3] / 1e3, lift[0], lift[1], lift[2], lift[3], margin,
-            *driver.drive_torque() / 1e3, KingpinAngle(0) * kDeg, KingpinAngle(1) * kDeg);
+            *driver.drive_torque() / 1e3, KingpinAngle(0) * kDeg, KingpinAngle(1) * kDeg, ltr[0], ltr[1]);
         if (len < 0 || static_cast<size_t>(len) >= sizeof(line)) throw std::logic_error("results.csv row too long");
         if (!frame_response.active()) std::fprintf(csv, "%s\n", line);
       }
@@ -698,6 +705,9 @@ std::string LaneChangeJson(const LaneChangeResult& r) {
   add("max_yaw_rate_degps", JsonNumber(r.max_yaw_rate_deg));
   add("min_front_axle_load", JsonNumber(r.min_axle_load[0]));
   add("min_rear_axle_load", JsonNumber(r.min_axle_load[1]));
+  add("max_ltr_front", JsonNumber(r.max_abs_ltr[0]));
+  add("max_ltr_rear", JsonNumber(r.max_abs_ltr[1]));
+  add("rollover_margin", JsonNumber(1.0 - std::max(r.max_abs_ltr[0], r.max_abs_ltr[1])));
   add("static_front_axle_load", JsonNumber(r.static_axle_load[0]));
   add("static_rear_axle_load", JsonNumber(r.static_axle_load[1]));
   add("steps", std::to_string(r.steps));

@@ -68,6 +68,10 @@ struct LaneChangeResult {
   double max_steering_wheel_deg = 0.0;  ///< max |steering-wheel angle| [deg]
   double max_yaw_rate_deg = 0.0;      ///< max |yaw rate| [deg/s]
   double min_axle_load[2] = {0, 0};   ///< smallest front, rear axle load [N]
+  /// Largest |load-transfer ratio| of the front and rear axle [-]: LTR =
+  /// (Fz_left - Fz_right) / (Fz_left + Fz_right) of the axle's tire loads;
+  /// 1 when one side's wheels lift off (rollover margin: 1 - the larger).
+  double max_abs_ltr[2] = {0, 0};
   double static_axle_load[2] = {0, 0};  ///< lever-rule static axle loads [N]
   long steps = 0;                     ///< accepted steps
   long newton_iterations = 0;         ///< Newton iterations of all step attempts
