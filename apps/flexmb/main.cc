@@ -22,6 +22,7 @@
 #include "flexmb/common/error.h"
 #include "apps/flexmb/commands/fe_commands.h"
 #include "apps/flexmb/commands/frame_deck.h"
+#include "apps/flexmb/commands/handling.h"
 #include "apps/flexmb/commands/fe_static.h"
 #include "apps/flexmb/commands/reduce_commands.h"
 #include "apps/flexmb/commands/run.h"
@@ -243,6 +244,29 @@ int main(int argc, char** argv) {
   frame_deck->add_option("file", truck_file, "lane-change file (YAML)")->required();
   frame_deck->add_option("--out,-o", frame_deck_out, "Nastran bulk data file to write")->required();
 
+  flexmb::vehicle::HandlingOptions handling_opt;
+  CLI::App* handling = truck->add_subcommand(
+      "handling", "handling tests: step steer (ISO 14793), constant steering-wheel angle (ISO 14792)");
+  handling->add_option("file", handling_opt.file, "lane-change file (YAML): the truck, road_mu, driver gains, solver")
+      ->required();
+  handling->add_option("--test", handling_opt.test, "step-steer (default) or constant-steer");
+  handling->add_option("--out,-o", handling_opt.out_dir, "output directory (results.csv, summary.json)");
+  handling->add_option("--speed", handling_opt.speed_kmh,
+                       "speed [km/h] (step steer; default: the file's entry speed), start speed (constant steer; 10)");
+  handling->add_option("--steer", handling_opt.steer_deg,
+                       "steering-wheel angle [deg] (default: the single-track angle for --ay or --radius)");
+  handling->add_option("--ay", handling_opt.target_ay, "step steer: steady lateral acceleration of the default angle [m/s^2] (2)");
+  handling->add_option("--radius", handling_opt.radius, "constant steer: kinematic radius of the default angle [m] (50)");
+  handling->add_option("--rise-time", handling_opt.rise_time, "step steer: ramp of the steering input [s] (0.15)");
+  handling->add_option("--hold", handling_opt.hold_time, "step steer: time after the step [s] (6)");
+  handling->add_option("--speed-rate", handling_opt.speed_rate_kmh_s, "constant steer: speed rise [km/h per s] (1)");
+  handling->add_option("--max-ay", handling_opt.max_ay, "constant steer: end at this lateral acceleration [m/s^2] (3)");
+  handling->add_option("--max-speed", handling_opt.max_speed_kmh, "constant steer: or at this speed [km/h] (90)");
+  handling->add_option("--frame", handling_opt.frame, "frame model, rigid or elastic (default: the file's)");
+  handling->add_option("--dt", handling_opt.dt, "step size [s] (default: the file's)");
+  bool handling_quiet = false;
+  handling->add_flag("--quiet,-q", handling_quiet, "no summary line");
+
   CLI::App* check = app.add_subcommand("check", "validate a model file and report its constraints");
   check->add_option("model", model, "model file or lane-change file (YAML)")->required();
   std::optional<std::string> check_frame;
@@ -427,6 +451,14 @@ int main(int argc, char** argv) {
       std::printf("{\"max_pass_speed_kmh\": %.3f, \"low_passed\": %s, \"tolerance_kmh\": %g}\n", low_ok ? v : 0.0,
                   low_ok ? "true" : "false", v_tol);
       return 0;
+    });
+  }
+  if (handling->parsed()) {
+    return Guarded([&] {
+      handling_opt.info = handling_quiet ? nullptr : stdout;
+      const flexmb::vehicle::HandlingResult r = flexmb::vehicle::RunHandlingTest(handling_opt);
+      if (!r.completed) std::fprintf(stderr, "error: handling test did not complete: %s\n", r.message.c_str());
+      return r.completed ? 0 : 1;
     });
   }
   if (frame_deck->parsed())

@@ -1,0 +1,314 @@
+#include "apps/flexmb/commands/handling.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <numbers>
+
+#include "apps/flexmb/commands/analysis_support.h"
+#include "apps/flexmb/commands/lane_change.h"
+#include "flexmb/body_file/body_file.h"
+#include "flexmb/common/error.h"
+#include "flexmb/math/rotation.h"
+#include "flexmb/solver/simulator.h"
+#include "flexmb/vehicle/single_track.h"
+#include "flexmb/vehicle/tire.h"
+
+namespace flexmb::vehicle {
+// file-scope names in a namespace of their own (unity builds, docs/design.md "Build time")
+namespace handling_cc {
+
+constexpr double kDeg = 180.0 / std::numbers::pi;
+
+[[noreturn]] void Fail(const HandlingOptions& o, const std::string& option, const std::string& what) {
+  throw InputError(option + " " + what, {o.file, 0, "truck handling " + o.test});
+}
+
+// the quantities of one output row
+struct Row {
+  double t = 0, speed = 0, delta_sw = 0, delta_road = 0, yaw_rate = 0, ay = 0, beta = 0, roll = 0;
+};
+
+// least-squares slope of y over x
+double Slope(const std::vector<double>& x, const std::vector<double>& y) {
+  const double n = static_cast<double>(x.size());
+  double mx = 0, my = 0;
+  for (size_t k = 0; k < x.size(); ++k) mx += x[k] / n, my += y[k] / n;
+  double sxy = 0, sxx = 0;
+  for (size_t k = 0; k < x.size(); ++k) sxy += (x[k] - mx) * (y[k] - my), sxx += (x[k] - mx) * (x[k] - mx);
+  return sxx > 0 ? sxy / sxx : std::numeric_limits<double>::quiet_NaN();
+}
+
+// step-response values of one signal (ISO 7401 definitions): the steady
+// state (mean of the last second), the response time (to 90 % of it) and
+// the peak response time from t_ref (50 % of the steering input), and the
+// overshoot of the peak over the steady state
+struct StepResponse {
+  double steady = 0, response_time = 0, peak_time = 0, overshoot = 0;
+};
+
+StepResponse Respond(const std::vector<Row>& rows, double Row::*x, double t_ref) {
+  StepResponse s;
+  const double t_end = rows.back().t;
+  int n = 0;
+  for (const Row& r : rows)
+    if (r.t >= t_end - 1.0) s.steady += r.*x, ++n;
+  s.steady /= n;
+  const double sign = s.steady >= 0 ? 1.0 : -1.0;
+  s.response_time = std::numeric_limits<double>::quiet_NaN();
+  double peak = -1e300;
+  for (const Row& r : rows) {
+    if (r.t < t_ref) continue;
+    if (std::isnan(s.response_time) && sign * r.*x >= 0.9 * std::abs(s.steady)) s.response_time = r.t - t_ref;
+    if (sign * r.*x > peak) peak = sign * r.*x, s.peak_time = r.t - t_ref;
+  }
+  s.overshoot = (peak - std::abs(s.steady)) / std::abs(s.steady);
+  // no peak above the steady state (overshoot below 0.5 %): no peak time
+  if (s.overshoot < 0.005) s.peak_time = std::numeric_limits<double>::quiet_NaN();
+  return s;
+}
+
+struct HandlingEnd {};
+
+}  // namespace handling_cc
+
+double HandlingResult::Metric(const std::string& name) const {
+  for (const auto& [key, value] : metrics)
+    if (key == name) return value;
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+HandlingResult RunHandlingTest(const HandlingOptions& opt) {
+  using namespace handling_cc;
+  if (opt.test != "step-steer" && opt.test != "constant-steer")
+    Fail(opt, "--test", "must be step-steer or constant-steer, got '" + opt.test + "'");
+  const bool step = opt.test == "step-steer";
+  TruckFileSettings f = LoadTruckFileSettings(opt.file);
+  const std::string frame = opt.frame.value_or(f.frame);
+  if (frame != "rigid" && frame != "elastic") Fail(opt, "--frame", "must be rigid or elastic, got '" + frame + "'");
+  if (opt.dt) {
+    if (!(*opt.dt > 0) || !std::isfinite(*opt.dt)) Fail(opt, "--dt", "must be a positive step [s]");
+    f.solver.dt = *opt.dt;
+  }
+  if (!f.dt_min_given) f.solver.dt_min = 1e-6 * f.solver.dt;
+  const double v0 = opt.speed_kmh.value_or(step ? f.speed_kmh : 10.0) / 3.6;
+  if (!(v0 >= 1.0) || !std::isfinite(v0)) Fail(opt, "--speed", "must be at least 3.6 km/h");
+  if (!(opt.step_time >= 0.5) || !(opt.rise_time > 0) || !(opt.hold_time >= 2.0))
+    Fail(opt, "--step-time/--rise-time/--hold", "need a step time >= 0.5 s, a rise time > 0 and a hold >= 2 s");
+  if (!step && (!(opt.speed_rate_kmh_s > 0) || !(opt.max_ay > 0) || !(opt.max_speed_kmh > v0 * 3.6)))
+    Fail(opt, "--speed-rate/--max-ay/--max-speed", "need a positive speed rate and lateral acceleration, and a "
+                                                    "top speed above the start speed");
+  if (!(opt.target_ay > 0) || !(opt.radius > 0)) Fail(opt, "--ay/--radius", "must be positive");
+
+  Model model;
+  const double g = -model.gravity_W.z();
+  const SingleTrack ref = TruckSingleTrack(f.truck, g);
+  double delta_sw = 0;
+  if (opt.steer_deg) {
+    if (!std::isfinite(*opt.steer_deg) || *opt.steer_deg == 0) Fail(opt, "--steer", "must be a nonzero angle [deg]");
+    delta_sw = *opt.steer_deg / kDeg;
+  } else {
+    delta_sw = step ? ref.SteeringWheelAngleFor(opt.target_ay, v0, g) : ref.steering_ratio * ref.wheelbase / opt.radius;
+  }
+  if (!opt.out_dir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(opt.out_dir, ec);
+  }
+  if (frame == "elastic") {
+    auto body = ReduceTruckFrame(f.truck, f.reduction, g);
+    if (!opt.out_dir.empty() && !f.truck.frame_body)
+      io::WriteBody(*body, (std::filesystem::path(opt.out_dir) / "frame.h5").string());
+    f.truck.elastic_frame = std::move(body);
+  }
+  auto steer = std::make_shared<double>(0.0), torque = std::make_shared<double>(0.0);
+  model.name = "truck_handling_" + opt.test;
+  model.solver = f.solver;
+  const TruckHandles h = BuildTruck(f.truck, v0, f.mu, steer, torque, model);
+  model.Finalize();
+  const Body& frame_body = *model.bodies[h.frame_body];
+  const Marker& frame_ref = model.markers[static_cast<size_t>(h.frame_ref)];
+
+  std::FILE* csv = nullptr;
+  if (!opt.out_dir.empty()) {
+    csv = std::fopen((std::filesystem::path(opt.out_dir) / "results.csv").string().c_str(), "w");
+    if (!csv) throw InputError("cannot write results.csv", {opt.out_dir, 0, ""});
+    std::fprintf(csv, "time,x,y,speed_kmh,steering_wheel_angle_deg,road_wheel_angle_deg,yaw_rate_degps,"
+                      "lateral_acceleration,sideslip_deg,roll_deg,curvature,fz_fl_kN,fz_fr_kN,fz_rl_kN,fz_rr_kN,"
+                      "ltr_front,ltr_rear,drive_torque_kNm\n");
+    std::fflush(csv);
+  }
+  // the steering input; constant steer: ramped in over 1 s, the speed rises
+  // from 3 s after that
+  const double t_speed = opt.step_time + 4.0;
+  const double t_end = step ? opt.step_time + opt.rise_time + opt.hold_time
+                            : t_speed + (opt.max_speed_kmh / 3.6 - v0) / (opt.speed_rate_kmh_s / 3.6) + 5.0;
+  const double ramp = step ? opt.rise_time : 1.0;
+  auto steering = [&](double t) { return delta_sw * std::clamp((t - opt.step_time) / ramp, 0.0, 1.0); };
+  auto target_speed = [&](double t) { return step ? v0 : v0 + opt.speed_rate_kmh_s / 3.6 * std::max(0.0, t - t_speed); };
+
+  HandlingResult r;
+  std::vector<Row> rows;
+  double integral = 0, t_last = 0, next_row = 0, max_ltr = 0;
+  Simulator sim(model);
+  const auto wall0 = std::chrono::steady_clock::now();
+  try {
+    sim.Initialize();
+    sim.Run(t_end, 0.0, [&](const State& st, const Workspace& ws) {
+      const MarkerState& fr = ws.markers[h.frame_ref];
+      const Vec3 rpy = RollPitchYaw(fr.R_WM);
+      const Vec3 ex(std::cos(rpy.z()), std::sin(rpy.z()), 0), ey(-std::sin(rpy.z()), std::cos(rpy.z()), 0);
+      const Vec6 acc = fr.J * ws.vdot.segment(frame_body.v_offset, frame_body.nv()) +
+                       frame_body.MarkerAccelerationBias(st.q.data() + frame_body.q_offset,
+                                                         st.v.data() + frame_body.v_offset, frame_ref);
+      Row row;
+      row.t = st.t;
+      row.speed = fr.v_WM.dot(ex);
+      row.delta_sw = *steer;
+      for (int k = 0; k < 2; ++k) {
+        const Joint& j = *model.joints[h.kingpin_joint[k]];
+        row.delta_road += 0.5 * j.Coordinate(0, ws.markers[j.marker_i], ws.markers[j.marker_j], nullptr);
+      }
+      row.yaw_rate = fr.w_WM.z();
+      row.ay = acc.head<3>().dot(ey);
+      row.beta = std::atan2(fr.v_WM.dot(ey), row.speed);
+      row.roll = rpy.x();
+      double fz[4], ltr[2];
+      for (int k = 0; k < 4; ++k) {
+        const MarkerState& wm = ws.markers[h.wheel_marker[k]];
+        TireContact c;
+        static_cast<const Tire&>(*model.forces[h.tire_force[k]]).Wrench(wm.p_WM, wm.R_WM, wm.v_WM, wm.w_WM, &c);
+        fz[k] = std::max(c.fz, 0.0);
+      }
+      for (int a = 0; a < 2; ++a)
+        ltr[a] = fz[2 * a] + fz[2 * a + 1] > 0 ? (fz[2 * a] - fz[2 * a + 1]) / (fz[2 * a] + fz[2 * a + 1]) : 0.0;
+      if (st.t >= opt.step_time) max_ltr = std::max({max_ltr, std::abs(ltr[0]), std::abs(ltr[1])});
+      // controls held over the next step: steering, PI speed control
+      *steer = steering(st.t);
+      const double err = target_speed(st.t) - row.speed;
+      integral += err * (st.t - t_last);
+      t_last = st.t;
+      *torque = std::clamp(f.driver.speed_kp * err + f.driver.speed_ki * integral, -f.driver.max_drive_torque,
+                           f.driver.max_drive_torque);
+      r.completed = st.t >= t_end - 1e-9;
+      if (st.t >= next_row - 1e-9 || r.completed) {
+        next_row = st.t + f.output_interval;
+        rows.push_back(row);
+        const Vec3 p = fr.p_WM;
+        if (csv) {
+          std::fprintf(csv, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n",
+                       st.t, p.x(), p.y(), row.speed * 3.6, row.delta_sw * kDeg, row.delta_road * kDeg,
+                       row.yaw_rate * kDeg, row.ay, row.beta * kDeg, row.roll * kDeg, row.yaw_rate / row.speed,
+                       fz[0] / 1e3, fz[1] / 1e3, fz[2] / 1e3, fz[3] / 1e3, ltr[0], ltr[1], *torque / 1e3);
+          std::fflush(csv);
+        }
+      }
+      if (std::abs(rpy.x()) > std::numbers::pi / 4) {
+        r.message = "the truck rolled over (|roll| > 45 deg)";
+        throw HandlingEnd{};
+      }
+      if (!step && st.t > t_speed && (std::abs(row.ay) >= opt.max_ay || row.speed * 3.6 >= opt.max_speed_kmh ||
+                                      max_ltr >= 1.0)) {
+        r.completed = true;
+        throw HandlingEnd{};
+      }
+    });
+  } catch (const HandlingEnd&) {
+  } catch (const NumericalError& e) {
+    r.completed = false;
+    r.message = e.what();
+  } catch (...) {
+    if (csv) std::fclose(csv);
+    throw;
+  }
+  if (csv) std::fclose(csv);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+
+  auto add = [&](const std::string& k, double v) { r.metrics.emplace_back(k, v); };
+  add("steering_wheel_angle_deg", delta_sw * kDeg);
+  add("steering_ratio", ref.steering_ratio);
+  add("wheelbase", ref.wheelbase);
+  add("single_track_understeer_gradient_deg_per_g", ref.understeer_gradient * kDeg);
+  add("single_track_front_cornering_stiffness", ref.cornering_stiffness[0]);
+  add("single_track_rear_cornering_stiffness", ref.cornering_stiffness[1]);
+  if (step && r.completed) {
+    const double t_ref = opt.step_time + 0.5 * opt.rise_time;
+    const StepResponse yr = Respond(rows, &Row::yaw_rate, t_ref), ay = Respond(rows, &Row::ay, t_ref);
+    const StepResponse beta = Respond(rows, &Row::beta, t_ref), roll = Respond(rows, &Row::roll, t_ref);
+    add("speed_kmh", v0 * 3.6);
+    add("yaw_rate_gain", yr.steady / delta_sw);
+    add("single_track_yaw_rate_gain", ref.YawRateGain(v0, g));
+    add("lateral_acceleration_gain", ay.steady / delta_sw);
+    add("steady_yaw_rate_degps", yr.steady * kDeg);
+    add("steady_lateral_acceleration", ay.steady);
+    add("steady_sideslip_deg", beta.steady * kDeg);
+    add("steady_roll_deg", roll.steady * kDeg);
+    add("yaw_rate_response_time", yr.response_time);
+    add("yaw_rate_peak_response_time", yr.peak_time);
+    add("yaw_rate_overshoot", yr.overshoot);
+    add("lateral_acceleration_response_time", ay.response_time);
+    add("lateral_acceleration_peak_response_time", ay.peak_time);
+    add("lateral_acceleration_overshoot", ay.overshoot);
+  }
+  if (!step) {
+    // quasi-steady states with the steering held and the speed rising,
+    // 0.5 <= |a_y| <= min(2, max_ay) m/s^2 (the linear range):
+    // delta / ratio = L kappa + K a_y / g, kappa = r / v
+    std::vector<double> ay, lk, dk, roll, beta;
+    for (const Row& w : rows)
+      if (w.t > t_speed && std::abs(w.ay) >= 0.5 && std::abs(w.ay) <= std::min(2.0, opt.max_ay)) {
+        ay.push_back(w.ay / g);
+        lk.push_back(-ref.wheelbase * w.yaw_rate / w.speed);
+        dk.push_back(w.delta_road - ref.wheelbase * w.yaw_rate / w.speed);
+        roll.push_back(w.roll * kDeg);
+        beta.push_back(w.beta * kDeg);
+      }
+    add("quasi_steady_from", t_speed);
+    add("start_speed_kmh", v0 * 3.6);
+    add("end_speed_kmh", rows.empty() ? 0.0 : rows.back().speed * 3.6);
+    add("max_lateral_acceleration", rows.empty() ? 0.0 : std::abs(rows.back().ay));
+    add("fit_points", static_cast<double>(ay.size()));
+    if (ay.size() >= 10) {
+      add("understeer_gradient_deg_per_g", Slope(ay, lk) * kDeg);
+      add("understeer_gradient_road_wheels_deg_per_g", Slope(ay, dk) * kDeg);
+      add("roll_gradient_deg_per_g", Slope(ay, roll));
+      add("sideslip_gradient_deg_per_g", Slope(ay, beta));
+    } else if (r.completed) {
+      r.completed = false;
+      r.message = "fewer than 10 rows with 0.5 <= |a_y| <= 2 m/s^2: raise --max-ay or --max-speed, or the angle";
+    }
+  }
+  add("max_ltr", max_ltr);
+  add("t_end", rows.empty() ? 0.0 : rows.back().t);
+  add("steps", static_cast<double>(sim.stats().steps));
+  add("wall_time_s", wall);
+  if (!opt.out_dir.empty()) {
+    cli::JsonObjectText j;
+    j.Text("test", opt.test);
+    j.Text("status", r.completed ? "ok" : "failed");
+    j.Text("message", r.message);
+    j.Text("frame", frame);
+    for (const auto& [k, v] : r.metrics) j.Number(k, v);
+    cli::WriteAnalysisFile((std::filesystem::path(opt.out_dir) / "summary.json").string(), j.str());
+  }
+  if (opt.info) {
+    std::fprintf(opt.info, "%s (%s frame), steering wheel %.1f deg: %s", opt.test.c_str(), frame.c_str(),
+                 delta_sw * kDeg, r.completed ? "completed" : ("stopped: " + r.message).c_str());
+    if (step && r.completed)
+      std::fprintf(opt.info, "; yaw-rate gain %.4f 1/s (single track %.4f), response time %.3f s, overshoot %.1f %%",
+                   r.Metric("yaw_rate_gain"), r.Metric("single_track_yaw_rate_gain"),
+                   r.Metric("yaw_rate_response_time"), 100 * r.Metric("yaw_rate_overshoot"));
+    if (!step && !std::isnan(r.Metric("understeer_gradient_deg_per_g")))
+      std::fprintf(opt.info, "; understeer gradient %.2f deg/g (at the road wheels %.2f, single track %.2f), roll "
+                             "gradient %.2f deg/g",
+                   r.Metric("understeer_gradient_deg_per_g"), r.Metric("understeer_gradient_road_wheels_deg_per_g"),
+                   r.Metric("single_track_understeer_gradient_deg_per_g"), r.Metric("roll_gradient_deg_per_g"));
+    std::fprintf(opt.info, "\n");
+  }
+  return r;
+}
+
+}  // namespace flexmb::vehicle

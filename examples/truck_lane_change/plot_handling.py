@@ -1,0 +1,100 @@
+#!/usr/bin/python3
+"""Plots of a handling test (`flexmb truck handling ... --out RUN_DIR`).
+
+Usage: /usr/bin/python3 plot_handling.py RUN_DIR [RUN_DIR ...] [--out DIR]
+step-steer: step_response.png (steering-wheel angle, yaw rate, lateral
+acceleration and roll over time); constant-steer: understeer.png (steering
+angle less the kinematic angle L / R, at the steering wheel and at the road
+wheels, against lateral acceleration, with the single-track line) and
+roll_gradient.png (roll and side slip against lateral acceleration).
+Several runs of one test are overlaid (e.g. rigid against elastic frame).
+"""
+import argparse
+import csv
+import json
+import math
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def load(run):
+    with open(os.path.join(run, "results.csv")) as f:
+        rows = list(csv.DictReader(f))
+    with open(os.path.join(run, "summary.json")) as f:
+        summary = json.load(f)
+    label = "%s (%s frame)" % (os.path.basename(os.path.normpath(run)), summary["frame"])
+    # constant steer: the quasi-steady states only (the speed rising)
+    t0 = summary.get("quasi_steady_from", 0.0)
+    rows = [r for r in rows if float(r["time"]) >= t0]
+    return label, {k: [float(r[k]) for r in rows] for k in rows[0]}, summary
+
+
+def step_steer(runs, out):
+    fig, axes = plt.subplots(4, 1, figsize=(7, 9), sharex=True)
+    keys = [("steering_wheel_angle_deg", "steering wheel [deg]"), ("yaw_rate_degps", "yaw rate [deg/s]"),
+            ("lateral_acceleration", "lateral acc. [m/s$^2$]"), ("roll_deg", "roll [deg]")]
+    for label, c, _ in runs:
+        for ax, (key, _) in zip(axes, keys):
+            ax.plot(c["time"], c[key], label=label)
+    for ax, (_, ylabel) in zip(axes, keys):
+        ax.set_ylabel(ylabel)
+        ax.grid(True, alpha=0.3)
+    axes[-1].set_xlabel("time [s]")
+    axes[0].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "step_response.png"), dpi=110)
+    plt.close(fig)
+
+
+def constant_steer(runs, out, g=9.81):
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for label, c, s in runs:
+        ay = c["lateral_acceleration"]
+        kin = [s["wheelbase"] * k for k in c["curvature"]]
+        sw = [math.radians(d) / s["steering_ratio"] - x for d, x in zip(c["steering_wheel_angle_deg"], kin)]
+        rw = [math.radians(d) - x for d, x in zip(c["road_wheel_angle_deg"], kin)]
+        ax.plot(ay, [math.degrees(v) for v in sw], lw=0.9, label=label + ", steering wheel / ratio")
+        ax.plot(ay, [math.degrees(v) for v in rw], lw=0.9, ls="--", label=label + ", road wheels")
+        k = s["single_track_understeer_gradient_deg_per_g"]
+        ax.plot([0, max(ay)], [0, k * max(ay) / g], "k:", lw=0.8, label="single-track slope %.2f deg/g" % k)
+    ax.set_xlabel("lateral acceleration [m/s$^2$]")
+    ax.set_ylabel("steer angle - L / R [deg]")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "understeer.png"), dpi=110)
+    plt.close(fig)
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for label, c, _ in runs:
+        ax.plot(c["lateral_acceleration"], c["roll_deg"], label=label + ", roll")
+        ax.plot(c["lateral_acceleration"], c["sideslip_deg"], ls="--", label=label + ", side slip")
+    ax.set_xlabel("lateral acceleration [m/s$^2$]")
+    ax.set_ylabel("angle [deg]")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "roll_gradient.png"), dpi=110)
+    plt.close(fig)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("runs", nargs="+")
+    ap.add_argument("--out", default=None, help="directory for the PNGs (default: the first run directory)")
+    a = ap.parse_args()
+    out = a.out or a.runs[0]
+    os.makedirs(out, exist_ok=True)
+    runs = [load(r) for r in a.runs]
+    tests = {s["test"] for _, _, s in runs}
+    if len(tests) != 1:
+        raise SystemExit("runs of different tests: %s" % ", ".join(sorted(tests)))
+    (step_steer if tests == {"step-steer"} else constant_steer)(runs, out)
+    print("plots in %s" % out)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,132 @@
+"""`flexmb truck handling`: the step-steer (ISO 14793) and constant
+steering-wheel angle (ISO 14792) tests of the example truck against an
+independent linear single-track model computed here from the truck's tire
+data (Pacejka, Tire and Vehicle Dynamics, 3rd ed., sec. 1.3: cornering
+stiffness of the Magic Formula, the aligning moments' trail in the yaw
+balance). docs/validation.md, "Truck handling tests"."""
+
+import csv
+import json
+import math
+import os
+import shutil
+import subprocess
+
+import pytest
+import yaml
+
+G = 9.81
+
+
+def cornering_stiffness(tire, fz):
+    """Magic Formula cornering stiffness of one tire at load fz [N/rad]."""
+    fz0 = tire["nominal_load"]
+    return tire["pky1"] * fz0 * math.sin(2 * math.atan(fz / (tire["pky2"] * fz0)))
+
+
+@pytest.fixture(scope="module")
+def variant(source_dir_module, tmp_path_factory):
+    """The example truck with a stiff steering (no compliance steer) and
+    softer front tires (pky1 6.0: a clear understeer gradient; with the
+    example's tires both axles' W / C are equal and K is only the trail's)."""
+    work = tmp_path_factory.mktemp("handling")
+    example = os.path.join(source_dir_module, "examples", "truck_lane_change")
+    for name in ("truck.yaml", "tire_11r22_5.yaml", "tire_11r22_5_twin.yaml"):
+        shutil.copy(os.path.join(example, name), work)
+    truck = (work / "truck.yaml").read_text()
+    assert truck.count("    stiffness: 1.5e5") == 1
+    (work / "truck.yaml").write_text(truck.replace("    stiffness: 1.5e5", "    stiffness: 1.5e8"))
+    front = (work / "tire_11r22_5.yaml").read_text()
+    assert front.count("  pky1: 8.5") == 1
+    (work / "tire_11r22_5.yaml").write_text(front.replace("  pky1: 8.5", "  pky1: 6.0"))
+    tires = {k: yaml.safe_load((work / f).read_text())["tire"]
+             for k, f in (("front", "tire_11r22_5.yaml"), ("rear", "tire_11r22_5_twin.yaml"))}
+    return work, tires
+
+
+def handling(cli, model, out, *args):
+    subprocess.run([cli, "truck", "handling", str(model), "--out", str(out), "-q", *args], check=True,
+                   capture_output=True)
+    with open(out / "results.csv") as f:
+        rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+    return json.loads((out / "summary.json").read_text()), rows
+
+
+def reference_k(tires, rows, fit):
+    """Single-track understeer gradient [rad per g]: the mass split from the
+    axle loads at rest, the cornering stiffnesses at the loads of the fitted
+    rows (the slow speed-up shifts 0.3 kN to the rear axle), the trail."""
+    mean = lambda rs, keys: sum(sum(r[k] for k in keys) for r in rs) / len(rs) * 1e3  # noqa: E731
+    rest = [r for r in rows if 1.0 < r["time"] < 1.9]
+    wf, wr = mean(rest, ("fz_fl_kN", "fz_fr_kN")), mean(rest, ("fz_rl_kN", "fz_rr_kN"))
+    ff, fr = mean(fit, ("fz_fl_kN", "fz_fr_kN")), mean(fit, ("fz_rl_kN", "fz_rr_kN"))
+    tf, tr = tires["front"], tires["rear"]
+    cf = 2 * tf["count"] * cornering_stiffness(tf, ff / 2 / tf["count"])
+    cr = 2 * tr["count"] * cornering_stiffness(tr, fr / 2 / tr["count"])
+    L, w = 4.2, wf + wr
+    a, b = L * wr / w, L * wf / w
+    arm = L - tf["trail"] + tr["trail"]
+    return w * (b + tr["trail"]) / arm / cf - w * (a - tf["trail"]) / arm / cr
+
+
+def slope(x, y):
+    n = len(x)
+    mx, my = sum(x) / n, sum(y) / n
+    return sum((p - mx) * (q - my) for p, q in zip(x, y)) / sum((p - mx) ** 2 for p in x)
+
+
+def test_constant_steer_understeer_gradient_against_the_single_track_model(cli, variant, tmp_path):
+    work, tires = variant
+    summary, rows = handling(cli, work / "truck.yaml", tmp_path / "cs", "--test", "constant-steer", "--radius",
+                             "150", "--max-ay", "1.0", "--speed-rate", "0.25")
+    assert summary["status"] == "ok" and summary["test"] == "constant-steer"
+    # small lateral acceleration: 0.1 to 0.4 m/s^2, at the road wheels (the
+    # steering's own compliance left out)
+    fit = [r for r in rows if r["time"] > 6 and 0.1 <= r["lateral_acceleration"] <= 0.4]
+    assert len(fit) > 1000
+    k = slope([r["lateral_acceleration"] / G for r in fit],
+              [math.radians(r["road_wheel_angle_deg"]) - 4.2 * r["curvature"] for r in fit])
+    ref = reference_k(tires, rows, fit)
+    # measured 3.94 against 3.80 deg/g (3.7 %)
+    assert math.degrees(k) == pytest.approx(math.degrees(ref), rel=0.05)
+    # the command's own fit (0.5 to 1 m/s^2) and its single-track value
+    assert summary["understeer_gradient_road_wheels_deg_per_g"] == pytest.approx(math.degrees(k), rel=0.06)
+    assert summary["single_track_understeer_gradient_deg_per_g"] == pytest.approx(math.degrees(ref), rel=0.03)
+    assert 5 < summary["roll_gradient_deg_per_g"] < 15
+
+
+def test_step_steer_yaw_rate_gain_against_the_single_track_model(cli, variant, tmp_path):
+    work, tires = variant
+    summary, rows = handling(cli, work / "truck.yaml", tmp_path / "ss", "--test", "step-steer", "--speed", "60",
+                             "--ay", "1")
+    assert summary["status"] == "ok"
+    v = 60 / 3.6
+    steady = [r for r in rows if r["time"] >= rows[-1]["time"] - 1.0]
+    fit = [r for r in rows if r["time"] < 1.9]  # loads before the step for the cornering stiffness
+    k = reference_k(tires, rows, fit)
+    delta_sw = math.radians(summary["steering_wheel_angle_deg"])
+    gain_ref = v / (4.2 + k * v * v / G) / 20.0
+    r_ss = sum(math.radians(r["yaw_rate_degps"]) for r in steady) / len(steady)
+    # measured 0.1364 against 0.1373 1/s
+    assert r_ss / delta_sw == pytest.approx(gain_ref, rel=0.02)
+    assert summary["yaw_rate_gain"] == pytest.approx(r_ss / delta_sw, rel=1e-3)
+    assert summary["steady_lateral_acceleration"] == pytest.approx(1.0, rel=0.05)  # the single track's angle
+    # ISO 7401 response values: the response follows the step within a second
+    assert 0.1 < summary["yaw_rate_response_time"] < 1.0
+    assert summary["yaw_rate_peak_response_time"] >= summary["yaw_rate_response_time"]  # overshoot 2.6 %
+    assert 0.0 <= summary["yaw_rate_overshoot"] < 0.5
+
+
+def test_example_truck_compliance_steer_and_errors(cli, source_dir, tmp_path):
+    truck = os.path.join(source_dir, "examples", "truck_lane_change", "truck.yaml")
+    summary, _ = handling(cli, truck, tmp_path / "cs", "--test", "constant-steer")
+    # the steering's compliance adds understeer at the steering wheel
+    assert summary["understeer_gradient_deg_per_g"] > summary["understeer_gradient_road_wheels_deg_per_g"] > 0
+    plot = os.path.join(source_dir, "examples", "truck_lane_change", "plot_handling.py")
+    subprocess.run(["/usr/bin/python3", plot, str(tmp_path / "cs")], check=True, capture_output=True)
+    assert (tmp_path / "cs" / "understeer.png").stat().st_size > 10000
+    for args, message in ((["--test", "slalom"], "--test must be step-steer or constant-steer"),
+                          (["--speed", "0"], "--speed must be at least"),
+                          (["--steer", "0"], "--steer must be a nonzero angle")):
+        r = subprocess.run([cli, "truck", "handling", truck, *args], capture_output=True, text=True)
+        assert r.returncode != 0 and message in r.stderr and "truck.yaml" in r.stderr, r.stderr
