@@ -246,10 +246,10 @@ int main(int argc, char** argv) {
 
   flexmb::vehicle::HandlingOptions handling_opt;
   CLI::App* handling = truck->add_subcommand(
-      "handling", "handling tests: step steer (ISO 14793), constant steering-wheel angle (ISO 14792)");
+      "handling", "handling tests: step steer (ISO 14793), constant steering-wheel angle (ISO 14792), braking, braking in a turn");
   handling->add_option("file", handling_opt.file, "lane-change file (YAML): the truck, road_mu, driver gains, solver")
       ->required();
-  handling->add_option("--test", handling_opt.test, "step-steer (default) or constant-steer");
+  handling->add_option("--test", handling_opt.test, "step-steer (default), constant-steer, braking or brake-in-turn");
   handling->add_option("--out,-o", handling_opt.out_dir, "output directory (results.csv, summary.json)");
   handling->add_option("--speed", handling_opt.speed_kmh,
                        "speed [km/h] (step steer; default: the file's entry speed), start speed (constant steer; 10)");
@@ -262,6 +262,10 @@ int main(int argc, char** argv) {
   handling->add_option("--speed-rate", handling_opt.speed_rate_kmh_s, "constant steer: speed rise [km/h per s] (1)");
   handling->add_option("--max-ay", handling_opt.max_ay, "constant steer: end at this lateral acceleration [m/s^2] (3)");
   handling->add_option("--max-speed", handling_opt.max_speed_kmh, "constant steer: or at this speed [km/h] (90)");
+  handling->add_option("--brake-torque", handling_opt.brake_torque,
+                       "braking: total brake torque [N m] (default: for --decel on the unloaded radius)");
+  handling->add_option("--decel", handling_opt.decel, "braking: deceleration of the default brake torque [m/s^2] (3)");
+  handling->add_option("--brake-rise-time", handling_opt.brake_rise_time, "braking: ramp of the brake torque [s] (0.2)");
   handling->add_option("--frame", handling_opt.frame, "frame model, rigid or elastic (default: the file's)");
   handling->add_option("--dt", handling_opt.dt, "step size [s] (default: the file's)");
   bool handling_quiet = false;

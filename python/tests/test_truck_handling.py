@@ -20,8 +20,8 @@ G = 9.81
 
 def cornering_stiffness(tire, fz):
     """Magic Formula cornering stiffness of one tire at load fz [N/rad]."""
-    fz0 = tire["nominal_load"]
-    return tire["pky1"] * fz0 * math.sin(2 * math.atan(fz / (tire["pky2"] * fz0)))
+    fz0 = float(tire["nominal_load"])  # PyYAML reads 9.0e5 (no exponent sign) as text: float() all numbers
+    return float(tire["pky1"]) * fz0 * math.sin(2 * math.atan(fz / (float(tire["pky2"]) * fz0)))
 
 
 @pytest.fixture(scope="module")
@@ -65,8 +65,9 @@ def reference_k(tires, rows, fit):
     cr = 2 * tr["count"] * cornering_stiffness(tr, fr / 2 / tr["count"])
     L, w = 4.2, wf + wr
     a, b = L * wr / w, L * wf / w
-    arm = L - tf["trail"] + tr["trail"]
-    return w * (b + tr["trail"]) / arm / cf - w * (a - tf["trail"]) / arm / cr
+    t_f, t_r = float(tf["trail"]), float(tr["trail"])
+    arm = L - t_f + t_r
+    return w * (b + t_r) / arm / cf - w * (a - t_f) / arm / cr
 
 
 def slope(x, y):
@@ -117,6 +118,49 @@ def test_step_steer_yaw_rate_gain_against_the_single_track_model(cli, variant, t
     assert 0.0 <= summary["yaw_rate_overshoot"] < 0.5
 
 
+def test_straight_braking_deceleration_against_the_brake_torque(cli, source_dir, tmp_path):
+    """Steady braking: a (m + I / (h r)) = T_f / h_f + T_r / h_r + f_r W, the
+    brake torque shared 0.4 / 0.6 front / rear (brakes.front_share) acting on
+    the loaded radii h = R0 - Fz / (n k) at the axle loads of the MFDD window,
+    I the wheels' spin inertia, f_r the rolling resistance."""
+    example = os.path.join(source_dir, "examples", "truck_lane_change")
+    truck = yaml.safe_load(open(os.path.join(example, "truck.yaml")))["truck"]
+    tires = {k: yaml.safe_load(open(os.path.join(example, truck["tires"][k])))["tire"] for k in ("front", "rear")}
+    summary, rows = handling(cli, os.path.join(example, "truck.yaml"), tmp_path / "br", "--test", "braking",
+                             "--speed", "60")
+    assert summary["status"] == "ok"
+    rest = [r for r in rows if 1.0 < r["time"] < 1.9]
+    w = sum(r["fz_fl_kN"] + r["fz_fr_kN"] + r["fz_rl_kN"] + r["fz_rr_kN"] for r in rest) / len(rest) * 1e3
+    v1 = summary["brake_onset_speed_kmh"]
+    window = [r for r in rows if r["time"] > 2.0 and 0.1 * v1 < r["speed_kmh"] < 0.8 * v1]
+    h = {}
+    for axle, left, right in (("front", "fz_fl_kN", "fz_fr_kN"), ("rear", "fz_rl_kN", "fz_rr_kN")):
+        fz = sum(r[left] + r[right] for r in window) / len(window) * 1e3 / 2
+        t = tires[axle]
+        h[axle] = float(t["unloaded_radius"]) - fz / (t["count"] * float(t["vertical_stiffness"]))
+    share = float(truck["brakes"]["front_share"])
+    tb = summary["brake_torque"]
+    inertia = 2 * float(truck["front_wheel"]["inertia"][1]) + 2 * float(truck["rear_wheel"]["inertia"][1])
+    rolling = float(tires["front"]["rolling_resistance"])
+    assert rolling == float(tires["rear"]["rolling_resistance"])
+    force = share * tb / h["front"] + (1 - share) * tb / h["rear"] + rolling * w
+    decel = force / (w / G + inertia / (0.5 * (h["front"] + h["rear"])) ** 2)
+    # measured 3.123 against 3.094 m/s^2 (0.9 %)
+    assert summary["mean_fully_developed_deceleration"] == pytest.approx(decel, rel=0.02)
+    # stopping distance from the onset speed at that deceleration, plus the
+    # 0.2 s ramp of the torque (half of it at the onset speed): within 5 %
+    v = v1 / 3.6
+    assert summary["stopping_distance"] == pytest.approx(v * v / (2 * decel) + 0.1 * v, rel=0.05)
+    assert summary["max_front_axle_load"] > 1.2 * w * 0.33 and abs(summary["lateral_deviation"]) < 0.05
+    # braking in the turn: from a steady a_y of about 2 m/s^2
+    turn, _ = handling(cli, os.path.join(example, "truck.yaml"), tmp_path / "bt", "--test", "brake-in-turn",
+                       "--speed", "60")
+    assert turn["status"] == "ok"
+    assert turn["lateral_acceleration_before"] == pytest.approx(2.0, rel=0.15)
+    for key in ("yaw_rate_ratio_1s", "lateral_acceleration_ratio_1s", "heading_deviation_1s_deg", "stopping_distance"):
+        assert math.isfinite(turn[key])
+
+
 def test_example_truck_compliance_steer_and_errors(cli, source_dir, tmp_path):
     truck = os.path.join(source_dir, "examples", "truck_lane_change", "truck.yaml")
     summary, _ = handling(cli, truck, tmp_path / "cs", "--test", "constant-steer")
@@ -125,7 +169,8 @@ def test_example_truck_compliance_steer_and_errors(cli, source_dir, tmp_path):
     plot = os.path.join(source_dir, "examples", "truck_lane_change", "plot_handling.py")
     subprocess.run(["/usr/bin/python3", plot, str(tmp_path / "cs")], check=True, capture_output=True)
     assert (tmp_path / "cs" / "understeer.png").stat().st_size > 10000
-    for args, message in ((["--test", "slalom"], "--test must be step-steer or constant-steer"),
+    for args, message in ((["--test", "slalom"], "--test must be step-steer, constant-steer, braking or brake-in-turn"),
+                          (["--test", "braking", "--steer", "10"], "--steer does not apply to straight-line braking"),
                           (["--speed", "0"], "--speed must be at least"),
                           (["--steer", "0"], "--steer must be a nonzero angle")):
         r = subprocess.run([cli, "truck", "handling", truck, *args], capture_output=True, text=True)

@@ -31,7 +31,45 @@ constexpr double kDeg = 180.0 / std::numbers::pi;
 // the quantities of one output row
 struct Row {
   double t = 0, speed = 0, delta_sw = 0, delta_road = 0, yaw_rate = 0, ay = 0, beta = 0, roll = 0;
+  double x = 0, y = 0, yaw = 0, pitch = 0, ax = 0, axle_load[2] = {0, 0};
 };
+
+// ECE R13 (Annex 4) braking measures from the rows from the brake onset
+// t_brake: stopping distance and time (to 0.5 km/h), the mean fully
+// developed deceleration d_m = (v_b^2 - v_e^2) / (25.92 (s_e - s_b)) with
+// v_b = 0.8 v_1, v_e = 0.1 v_1 [km/h, m], the largest deceleration, pitch
+// and front axle load, the smallest rear axle load
+void BrakingMeasures(const std::vector<Row>& rows, double t_brake, std::vector<std::pair<std::string, double>>& m) {
+  double s = 0, s_b = -1, s_e = -1, v1 = -1, stop_t = -1, ax_max = 0, pitch_max = 0, front_max = 0, rear_min = 1e300;
+  const Row* prev = nullptr;
+  for (const Row& r : rows) {
+    if (r.t < t_brake) continue;
+    if (prev) s += std::hypot(r.x - prev->x, r.y - prev->y);
+    prev = &r;
+    if (v1 < 0) v1 = r.speed * 3.6;
+    const double v = r.speed * 3.6;
+    if (s_b < 0 && v <= 0.8 * v1) s_b = s;
+    if (s_e < 0 && v <= 0.1 * v1) s_e = s;
+    ax_max = std::max(ax_max, -r.ax);
+    pitch_max = std::max(pitch_max, std::abs(r.pitch));
+    front_max = std::max(front_max, r.axle_load[0]);
+    rear_min = std::min(rear_min, r.axle_load[1]);
+    if (v <= 0.5) {
+      stop_t = r.t - t_brake;
+      break;
+    }
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  m.emplace_back("brake_onset_speed_kmh", v1);
+  m.emplace_back("stopping_distance", stop_t >= 0 ? s : nan);
+  m.emplace_back("stopping_time", stop_t >= 0 ? stop_t : nan);
+  m.emplace_back("mean_fully_developed_deceleration",
+                 s_e > s_b && s_b >= 0 ? (0.64 - 0.01) * v1 * v1 / (25.92 * (s_e - s_b)) : nan);
+  m.emplace_back("max_deceleration", ax_max);
+  m.emplace_back("max_pitch_deg", pitch_max * 180.0 / std::numbers::pi);
+  m.emplace_back("max_front_axle_load", front_max);
+  m.emplace_back("min_rear_axle_load", rear_min);
+}
 
 // least-squares slope of y over x
 double Slope(const std::vector<double>& x, const std::vector<double>& y) {
@@ -84,9 +122,10 @@ double HandlingResult::Metric(const std::string& name) const {
 
 HandlingResult RunHandlingTest(const HandlingOptions& opt) {
   using namespace handling_cc;
-  if (opt.test != "step-steer" && opt.test != "constant-steer")
-    Fail(opt, "--test", "must be step-steer or constant-steer, got '" + opt.test + "'");
-  const bool step = opt.test == "step-steer";
+  if (opt.test != "step-steer" && opt.test != "constant-steer" && opt.test != "braking" && opt.test != "brake-in-turn")
+    Fail(opt, "--test", "must be step-steer, constant-steer, braking or brake-in-turn, got '" + opt.test + "'");
+  const bool step = opt.test == "step-steer", circle = opt.test == "constant-steer";
+  const bool braking = !step && !circle, in_turn = opt.test == "brake-in-turn";
   TruckFileSettings f = LoadTruckFileSettings(opt.file);
   const std::string frame = opt.frame.value_or(f.frame);
   if (frame != "rigid" && frame != "elastic") Fail(opt, "--frame", "must be rigid or elastic, got '" + frame + "'");
@@ -95,24 +134,28 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
     f.solver.dt = *opt.dt;
   }
   if (!f.dt_min_given) f.solver.dt_min = 1e-6 * f.solver.dt;
-  const double v0 = opt.speed_kmh.value_or(step ? f.speed_kmh : 10.0) / 3.6;
+  const double v0 = opt.speed_kmh.value_or(circle ? 10.0 : f.speed_kmh) / 3.6;
   if (!(v0 >= 1.0) || !std::isfinite(v0)) Fail(opt, "--speed", "must be at least 3.6 km/h");
   if (!(opt.step_time >= 0.5) || !(opt.rise_time > 0) || !(opt.hold_time >= 2.0))
     Fail(opt, "--step-time/--rise-time/--hold", "need a step time >= 0.5 s, a rise time > 0 and a hold >= 2 s");
-  if (!step && (!(opt.speed_rate_kmh_s > 0) || !(opt.max_ay > 0) || !(opt.max_speed_kmh > v0 * 3.6)))
+  if (circle && (!(opt.speed_rate_kmh_s > 0) || !(opt.max_ay > 0) || !(opt.max_speed_kmh > v0 * 3.6)))
     Fail(opt, "--speed-rate/--max-ay/--max-speed", "need a positive speed rate and lateral acceleration, and a "
                                                     "top speed above the start speed");
   if (!(opt.target_ay > 0) || !(opt.radius > 0)) Fail(opt, "--ay/--radius", "must be positive");
+  if (!(opt.decel > 0) || !(opt.brake_rise_time > 0) || (opt.brake_torque && !(*opt.brake_torque > 0)))
+    Fail(opt, "--decel/--brake-torque/--brake-rise-time", "must be positive");
 
   Model model;
   const double g = -model.gravity_W.z();
   const SingleTrack ref = TruckSingleTrack(f.truck, g);
   double delta_sw = 0;
-  if (opt.steer_deg) {
+  if (opt.test == "braking") {
+    if (opt.steer_deg) Fail(opt, "--steer", "does not apply to straight-line braking (brake-in-turn steers)");
+  } else if (opt.steer_deg) {
     if (!std::isfinite(*opt.steer_deg) || *opt.steer_deg == 0) Fail(opt, "--steer", "must be a nonzero angle [deg]");
     delta_sw = *opt.steer_deg / kDeg;
   } else {
-    delta_sw = step ? ref.SteeringWheelAngleFor(opt.target_ay, v0, g) : ref.steering_ratio * ref.wheelbase / opt.radius;
+    delta_sw = circle ? ref.steering_ratio * ref.wheelbase / opt.radius : ref.SteeringWheelAngleFor(opt.target_ay, v0, g);
   }
   if (!opt.out_dir.empty()) {
     std::error_code ec;
@@ -125,9 +168,13 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
     f.truck.elastic_frame = std::move(body);
   }
   auto steer = std::make_shared<double>(0.0), torque = std::make_shared<double>(0.0);
+  auto brake = std::make_shared<double>(0.0);
+  const double brake_torque =
+      opt.brake_torque.value_or((ref.axle_load[0] + ref.axle_load[1]) / g * opt.decel * 0.5 *
+                                (f.truck.front_tire.unloaded_radius + f.truck.rear_tire.unloaded_radius));
   model.name = "truck_handling_" + opt.test;
   model.solver = f.solver;
-  const TruckHandles h = BuildTruck(f.truck, v0, f.mu, steer, torque, model);
+  const TruckHandles h = BuildTruck(f.truck, v0, f.mu, steer, torque, model, brake);
   model.Finalize();
   const Body& frame_body = *model.bodies[h.frame_body];
   const Marker& frame_ref = model.markers[static_cast<size_t>(h.frame_ref)];
@@ -138,14 +185,18 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
     if (!csv) throw InputError("cannot write results.csv", {opt.out_dir, 0, ""});
     std::fprintf(csv, "time,x,y,speed_kmh,steering_wheel_angle_deg,road_wheel_angle_deg,yaw_rate_degps,"
                       "lateral_acceleration,sideslip_deg,roll_deg,curvature,fz_fl_kN,fz_fr_kN,fz_rl_kN,fz_rr_kN,"
-                      "ltr_front,ltr_rear,drive_torque_kNm\n");
+                      "ltr_front,ltr_rear,drive_torque_kNm,brake_torque_kNm,yaw_deg,pitch_deg,"
+                      "longitudinal_acceleration\n");
     std::fflush(csv);
   }
   // the steering input; constant steer: ramped in over 1 s, the speed rises
   // from 3 s after that
+  // braking: from the step time (straight), 4 s after the turn-in (in a turn)
   const double t_speed = opt.step_time + 4.0;
-  const double t_end = step ? opt.step_time + opt.rise_time + opt.hold_time
-                            : t_speed + (opt.max_speed_kmh / 3.6 - v0) / (opt.speed_rate_kmh_s / 3.6) + 5.0;
+  const double t_brake = in_turn ? opt.step_time + 4.0 : opt.step_time;
+  const double t_end = step     ? opt.step_time + opt.rise_time + opt.hold_time
+                       : circle ? t_speed + (opt.max_speed_kmh / 3.6 - v0) / (opt.speed_rate_kmh_s / 3.6) + 5.0
+                                : t_brake + 3.0 * v0 / opt.decel + 10.0;
   const double ramp = step ? opt.rise_time : 1.0;
   auto steering = [&](double t) { return delta_sw * std::clamp((t - opt.step_time) / ramp, 0.0, 1.0); };
   auto target_speed = [&](double t) { return step ? v0 : v0 + opt.speed_rate_kmh_s / 3.6 * std::max(0.0, t - t_speed); };
@@ -176,6 +227,11 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
       row.ay = acc.head<3>().dot(ey);
       row.beta = std::atan2(fr.v_WM.dot(ey), row.speed);
       row.roll = rpy.x();
+      row.x = fr.p_WM.x();
+      row.y = fr.p_WM.y();
+      row.yaw = rpy.z();
+      row.pitch = rpy.y();
+      row.ax = acc.head<3>().dot(ex);
       double fz[4], ltr[2];
       for (int k = 0; k < 4; ++k) {
         const MarkerState& wm = ws.markers[h.wheel_marker[k]];
@@ -183,8 +239,10 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
         static_cast<const Tire&>(*model.forces[h.tire_force[k]]).Wrench(wm.p_WM, wm.R_WM, wm.v_WM, wm.w_WM, &c);
         fz[k] = std::max(c.fz, 0.0);
       }
-      for (int a = 0; a < 2; ++a)
-        ltr[a] = fz[2 * a] + fz[2 * a + 1] > 0 ? (fz[2 * a] - fz[2 * a + 1]) / (fz[2 * a] + fz[2 * a + 1]) : 0.0;
+      for (int a = 0; a < 2; ++a) {
+        row.axle_load[a] = fz[2 * a] + fz[2 * a + 1];
+        ltr[a] = row.axle_load[a] > 0 ? (fz[2 * a] - fz[2 * a + 1]) / row.axle_load[a] : 0.0;
+      }
       if (st.t >= opt.step_time) max_ltr = std::max({max_ltr, std::abs(ltr[0]), std::abs(ltr[1])});
       // controls held over the next step: steering, PI speed control
       *steer = steering(st.t);
@@ -193,16 +251,23 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
       t_last = st.t;
       *torque = std::clamp(f.driver.speed_kp * err + f.driver.speed_ki * integral, -f.driver.max_drive_torque,
                            f.driver.max_drive_torque);
-      r.completed = st.t >= t_end - 1e-9;
+      if (braking && st.t >= t_brake) {  // the driver is off the throttle and on the brake
+        *torque = 0.0;
+        *brake = brake_torque * std::min(1.0, (st.t - t_brake) / opt.brake_rise_time);
+      }
+      const bool stopped = braking && st.t > t_brake && row.speed * 3.6 <= 0.5;
+      r.completed = (!braking && st.t >= t_end - 1e-9) || stopped;
       if (st.t >= next_row - 1e-9 || r.completed) {
         next_row = st.t + f.output_interval;
         rows.push_back(row);
         const Vec3 p = fr.p_WM;
         if (csv) {
-          std::fprintf(csv, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n",
+          std::fprintf(csv, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,"
+                            "%.6g,%.6g,%.6g,%.6g\n",
                        st.t, p.x(), p.y(), row.speed * 3.6, row.delta_sw * kDeg, row.delta_road * kDeg,
                        row.yaw_rate * kDeg, row.ay, row.beta * kDeg, row.roll * kDeg, row.yaw_rate / row.speed,
-                       fz[0] / 1e3, fz[1] / 1e3, fz[2] / 1e3, fz[3] / 1e3, ltr[0], ltr[1], *torque / 1e3);
+                       fz[0] / 1e3, fz[1] / 1e3, fz[2] / 1e3, fz[3] / 1e3, ltr[0], ltr[1], *torque / 1e3,
+                       *brake / 1e3, row.yaw * kDeg, row.pitch * kDeg, row.ax);
           std::fflush(csv);
         }
       }
@@ -210,7 +275,8 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
         r.message = "the truck rolled over (|roll| > 45 deg)";
         throw HandlingEnd{};
       }
-      if (!step && st.t > t_speed && (std::abs(row.ay) >= opt.max_ay || row.speed * 3.6 >= opt.max_speed_kmh ||
+      if (stopped) throw HandlingEnd{};
+      if (circle && st.t > t_speed && (std::abs(row.ay) >= opt.max_ay || row.speed * 3.6 >= opt.max_speed_kmh ||
                                       max_ltr >= 1.0)) {
         r.completed = true;
         throw HandlingEnd{};
@@ -225,6 +291,8 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
     throw;
   }
   if (csv) std::fclose(csv);
+  if (braking && !r.completed && r.message.empty())
+    r.message = "the truck did not stop within " + std::to_string(static_cast<int>(t_end)) + " s";
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
 
   auto add = [&](const std::string& k, double v) { r.metrics.emplace_back(k, v); };
@@ -253,7 +321,29 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
     add("lateral_acceleration_peak_response_time", ay.peak_time);
     add("lateral_acceleration_overshoot", ay.overshoot);
   }
-  if (!step) {
+  if (braking && !rows.empty()) {
+    add("brake_torque", brake_torque);
+    add("brake_onset_time", t_brake);
+    BrakingMeasures(rows, t_brake, r.metrics);
+    // the state at the brake onset and 1 s later
+    auto at = [&](double t) {
+      return *std::min_element(rows.begin(), rows.end(),
+                               [&](const Row& a, const Row& b) { return std::abs(a.t - t) < std::abs(b.t - t); });
+    };
+    const Row r0 = at(t_brake), r1 = at(t_brake + 1.0), last = rows.back();
+    // heading and lateral position of the path against the line (straight)
+    // or the turn (in a turn, heading only) held from the brake onset
+    add("heading_change_deg", (last.yaw - r0.yaw) * kDeg);
+    if (!in_turn) add("lateral_deviation", -std::sin(r0.yaw) * (last.x - r0.x) + std::cos(r0.yaw) * (last.y - r0.y));
+    if (in_turn) {
+      add("yaw_rate_before_degps", r0.yaw_rate * kDeg);
+      add("lateral_acceleration_before", r0.ay);
+      add("yaw_rate_ratio_1s", r1.yaw_rate / r0.yaw_rate);
+      add("lateral_acceleration_ratio_1s", r1.ay / r0.ay);
+      add("heading_deviation_1s_deg", (r1.yaw - r0.yaw - r0.yaw_rate * (r1.t - r0.t)) * kDeg);
+    }
+  }
+  if (circle) {
     // quasi-steady states with the steering held and the speed rising,
     // 0.5 <= |a_y| <= min(2, max_ay) m/s^2 (the linear range):
     // delta / ratio = L kappa + K a_y / g, kappa = r / v
@@ -301,7 +391,14 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
       std::fprintf(opt.info, "; yaw-rate gain %.4f 1/s (single track %.4f), response time %.3f s, overshoot %.1f %%",
                    r.Metric("yaw_rate_gain"), r.Metric("single_track_yaw_rate_gain"),
                    r.Metric("yaw_rate_response_time"), 100 * r.Metric("yaw_rate_overshoot"));
-    if (!step && !std::isnan(r.Metric("understeer_gradient_deg_per_g")))
+    if (braking && r.completed)
+      std::fprintf(opt.info, "; stopping distance %.1f m from %.1f km/h, mean fully developed deceleration %.2f m/s^2",
+                   r.Metric("stopping_distance"), r.Metric("brake_onset_speed_kmh"),
+                   r.Metric("mean_fully_developed_deceleration"));
+    if (in_turn && r.completed)
+      std::fprintf(opt.info, "; yaw-rate ratio after 1 s %.3f, heading deviation %.2f deg", r.Metric("yaw_rate_ratio_1s"),
+                   r.Metric("heading_deviation_1s_deg"));
+    if (circle && !std::isnan(r.Metric("understeer_gradient_deg_per_g")))
       std::fprintf(opt.info, "; understeer gradient %.2f deg/g (at the road wheels %.2f, single track %.2f), roll "
                              "gradient %.2f deg/g",
                    r.Metric("understeer_gradient_deg_per_g"), r.Metric("understeer_gradient_road_wheels_deg_per_g"),

@@ -9,7 +9,14 @@
 ///    acceleration;
 ///  - constant-steer (ISO 14792, steady-state circular driving, constant
 ///    steering-wheel angle): the speed rises slowly at a held angle; the
-///    understeer, roll and side-slip gradients from the quasi-steady states.
+///    understeer, roll and side-slip gradients from the quasi-steady states;
+///  - braking (straight-line braking, ECE R13 type-0 measures): a brake
+///    torque step at speed; stopping distance, mean fully developed
+///    deceleration, pitch, dynamic axle loads, path and heading deviation;
+///  - brake-in-turn (after ISO 14794): braking from a steady turn at a held
+///    steering-wheel angle; the yaw-rate and lateral-acceleration ratios and
+///    the heading deviation 1 s after the brake onset, besides the braking
+///    measures.
 /// summary.json holds the linear single-track model's values beside the
 /// truck's (single_track.h). docs/cli.md, "truck handling".
 
@@ -25,7 +32,7 @@ namespace flexmb::vehicle {
 struct HandlingOptions {
   std::string file;                   ///< lane-change file (the truck, road_mu, driver gains, solver)
   std::string out_dir;                ///< results.csv and summary.json ("": none)
-  std::string test = "step-steer";    ///< "step-steer" or "constant-steer"
+  std::string test = "step-steer";    ///< "step-steer", "constant-steer", "braking" or "brake-in-turn"
   /// Step steer: the speed; constant steer: the start speed [km/h]
   /// (default: the file's entry speed; constant steer: 10).
   std::optional<double> speed_kmh;
@@ -40,6 +47,11 @@ struct HandlingOptions {
   double speed_rate_kmh_s = 1.0;      ///< constant steer: rise of the speed [km/h per s]
   double max_ay = 3.0;                ///< constant steer: end at this lateral acceleration [m/s^2]
   double max_speed_kmh = 90.0;        ///< constant steer: or at this speed [km/h]
+  /// Braking: total brake torque of all wheels [N m] (default: the torque
+  /// for `decel` on the unloaded tire radius, rotating inertia left out).
+  std::optional<double> brake_torque;
+  double decel = 3.0;                 ///< braking: default torque's deceleration [m/s^2]
+  double brake_rise_time = 0.2;       ///< braking: ramp of the brake torque [s]
   std::optional<std::string> frame;   ///< "rigid" or "elastic" (default: the file's)
   std::optional<double> dt;           ///< step size override [s]
   std::FILE* info = nullptr;          ///< one summary line (nullptr: none)
