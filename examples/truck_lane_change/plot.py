@@ -12,7 +12,6 @@ relative to the floating frame, and the x of that node) and frame_stress.png
 (largest von Mises stress of the shell stress modes, and the x of that
 element) over time.
 """
-import argparse
 import csv
 import importlib.util
 import json
@@ -61,13 +60,9 @@ def mark_run_up(ax, runs):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("runs", nargs="+")
-    ap.add_argument("--out", default=None, help="directory for the PNGs (default: the first run directory)")
-    a = ap.parse_args()
-    out = a.out or a.runs[0]
-    os.makedirs(out, exist_ok=True)
-    runs = [load(r) for r in a.runs]
+    fp = flexmb_plot()
+    run_dirs, out = fp.run_dir_arguments()
+    runs = [load(r) for r in run_dirs]
     panels = [
         ("lateral_acceleration", "lateral acceleration [m/s$^2$]", ["lateral_acceleration"]),
         ("steering_wheel_angle", "steering-wheel angle [deg]", ["steering_wheel_angle_deg"]),
@@ -78,7 +73,7 @@ def main():
     ]
     if all("ltr_front" in c for _, c in runs):
         panels.append(("load_transfer", "load-transfer ratio [-] (1: lift-off)", ["ltr_front", "ltr_rear"]))
-    flexmb_plot().overlay(runs, panels, out_dir=out, decorate=mark_run_up)
+    fp.overlay(runs, panels, out_dir=out, decorate=mark_run_up)
     elastic = [(label, c) for label, c in runs if "frame_max_displacement_mm" in c]
     for name, key, pos, ylabel in [
         ("frame_deflection", "frame_max_displacement_mm", "frame_max_displacement_x",
@@ -102,29 +97,17 @@ def main():
         fig.savefig(os.path.join(out, name + ".png"), dpi=110)
         plt.close(fig)
     # roll against lateral acceleration in the monitored part (x >= 0)
-    fig, ax = plt.subplots(figsize=(6, 4.5))
+    series = []
     for label, c in runs:
         kept = [k for k, x in enumerate(c["x"]) if x >= 0.0]
-        ax.plot([c["lateral_acceleration"][k] for k in kept], [c["roll_deg"][k] for k in kept], lw=0.9, label=label)
-    ax.set_xlabel("lateral acceleration [m/s$^2$]")
-    ax.set_ylabel("roll angle of the frame [deg]")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "roll_vs_lateral_acceleration.png"), dpi=110)
-    plt.close(fig)
-    fig, ax = plt.subplots(figsize=(9, 3))
-    for label, c in runs:
-        ax.plot(c["x"], c["y"], label=label + " front axle")
+        series.append(([c["lateral_acceleration"][k] for k in kept], [c["roll_deg"][k] for k in kept], label,
+                       {"lw": 0.9}))
+    fp.save_xy(os.path.join(out, "roll_vs_lateral_acceleration.png"), series, "lateral acceleration [m/s$^2$]",
+               "roll angle of the frame [deg]", figsize=(6, 4.5))
+    series = [(c["x"], c["y"], label + " front axle", {}) for label, c in runs]
     c = runs[0][1]
-    ax.plot(c["x"], c["centre_line_y"], "k--", lw=0.8, label="course centre line")
-    ax.set_xlabel("x [m]")
-    ax.set_ylabel("y [m]")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "path.png"), dpi=110)
-    plt.close(fig)
+    series.append((c["x"], c["centre_line_y"], "course centre line", {"color": "k", "ls": "--", "lw": 0.8}))
+    fp.save_xy(os.path.join(out, "path.png"), series, "x [m]", "y [m]", figsize=(9, 3))
     print("plots in %s" % out)
 
 

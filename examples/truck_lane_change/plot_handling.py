@@ -9,7 +9,6 @@ wheels, against lateral acceleration, with the single-track line) and
 roll_gradient.png (roll and side slip against lateral acceleration).
 Several runs of one test are overlaid (e.g. rigid against elastic frame).
 """
-import argparse
 import csv
 import json
 import math
@@ -19,6 +18,8 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+from plot import flexmb_plot  # noqa: E402  (plot.py beside this script)
 
 
 def load(run):
@@ -51,44 +52,30 @@ def step_steer(runs, out):
 
 
 def constant_steer(runs, out, g=9.81):
-    fig, ax = plt.subplots(figsize=(7, 4.5))
+    series = []
     for label, c, s in runs:
         ay = c["lateral_acceleration"]
         kin = [s["wheelbase"] * k for k in c["curvature"]]
-        sw = [math.radians(d) / s["steering_ratio"] - x for d, x in zip(c["steering_wheel_angle_deg"], kin)]
-        rw = [math.radians(d) - x for d, x in zip(c["road_wheel_angle_deg"], kin)]
-        ax.plot(ay, [math.degrees(v) for v in sw], lw=0.9, label=label + ", steering wheel / ratio")
-        ax.plot(ay, [math.degrees(v) for v in rw], lw=0.9, ls="--", label=label + ", road wheels")
+        sw = [math.degrees(math.radians(d) / s["steering_ratio"] - x) for d, x in zip(c["steering_wheel_angle_deg"], kin)]
+        rw = [math.degrees(math.radians(d) - x) for d, x in zip(c["road_wheel_angle_deg"], kin)]
         k = s["single_track_understeer_gradient_deg_per_g"]
-        ax.plot([0, max(ay)], [0, k * max(ay) / g], "k:", lw=0.8, label="single-track slope %.2f deg/g" % k)
-    ax.set_xlabel("lateral acceleration [m/s$^2$]")
-    ax.set_ylabel("steer angle - L / R [deg]")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "understeer.png"), dpi=110)
-    plt.close(fig)
-    fig, ax = plt.subplots(figsize=(7, 4.5))
+        series += [(ay, sw, label + ", steering wheel / ratio", {"lw": 0.9}),
+                   (ay, rw, label + ", road wheels", {"lw": 0.9, "ls": "--"}),
+                   ([0, max(ay)], [0, k * max(ay) / g], "single-track slope %.2f deg/g" % k,
+                    {"color": "k", "ls": ":", "lw": 0.8})]
+    fp = flexmb_plot()
+    fp.save_xy(os.path.join(out, "understeer.png"), series, "lateral acceleration [m/s$^2$]",
+               "steer angle - L / R [deg]")
+    series = []
     for label, c, _ in runs:
-        ax.plot(c["lateral_acceleration"], c["roll_deg"], label=label + ", roll")
-        ax.plot(c["lateral_acceleration"], c["sideslip_deg"], ls="--", label=label + ", side slip")
-    ax.set_xlabel("lateral acceleration [m/s$^2$]")
-    ax.set_ylabel("angle [deg]")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "roll_gradient.png"), dpi=110)
-    plt.close(fig)
+        series += [(c["lateral_acceleration"], c["roll_deg"], label + ", roll", {}),
+                   (c["lateral_acceleration"], c["sideslip_deg"], label + ", side slip", {"ls": "--"})]
+    fp.save_xy(os.path.join(out, "roll_gradient.png"), series, "lateral acceleration [m/s$^2$]", "angle [deg]")
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("runs", nargs="+")
-    ap.add_argument("--out", default=None, help="directory for the PNGs (default: the first run directory)")
-    a = ap.parse_args()
-    out = a.out or a.runs[0]
-    os.makedirs(out, exist_ok=True)
-    runs = [load(r) for r in a.runs]
+    run_dirs, out = flexmb_plot().run_dir_arguments()
+    runs = [load(r) for r in run_dirs]
     tests = {s["test"] for _, _, s in runs}
     if len(tests) != 1:
         raise SystemExit("runs of different tests: %s" % ", ".join(sorted(tests)))

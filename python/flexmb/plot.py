@@ -16,6 +16,36 @@ def _plt():
     return plt
 
 
+def save_xy(path, series, xlabel, ylabel, figsize=(7, 4.5), dpi=110):
+    """One x-y figure of `series`, each (x, y, label, style) with style a dict
+    of plot keywords, with grid and legend, written to `path` and closed."""
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=figsize)
+    for x, y, label, style in series:
+        ax.plot(x, y, label=label, **style)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=dpi)
+    plt.close(fig)
+
+
+def run_dir_arguments(description=None, argv=None):
+    """The command line of the example plot scripts, RUN_DIR [RUN_DIR ...]
+    [--out DIR]: returns (run directories, output directory), the output
+    directory (default: the first run's) created."""
+    import argparse
+    ap = argparse.ArgumentParser(description=description)
+    ap.add_argument("runs", nargs="+")
+    ap.add_argument("--out", default=None, help="directory for the PNGs (default: the first run directory)")
+    a = ap.parse_args(argv)
+    out = a.out or a.runs[0]
+    os.makedirs(out, exist_ok=True)
+    return a.runs, out
+
+
 def time_history(ax, runs, keys, xkey="time", label_keys=None):
     """Plots `keys` against `xkey` of every run into the axes `ax`; one line per
     run and key, labelled "run" (one key) or "run key" (several). label_keys
