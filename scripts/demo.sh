@@ -2,8 +2,10 @@
 # The main demo: the truck lane change ("perestavka", issue 7) at 55 km/h,
 # once with the rigid and once with the elastic (Craig-Bampton) ladder frame,
 # and the seed's comparison plots (rigid against elastic, frame deflection
-# and stress); then Andrews' squeezer (IFToMM A03) and the two-loop four-bar
-# (A02) through the command line; then the crane example's work cycle
+# and stress); the handling tests (step steer, constant steering-wheel angle,
+# braking in a turn) and the truck with its frame from a Nastran deck; then
+# Andrews' squeezer (IFToMM A03) and the two-loop four-bar (A02) through the
+# command line; then the crane example's work cycle
 # (examples/crane: boom FE model written as Nastran, reduced, run, plotted).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,6 +24,17 @@ for frame in rigid elastic; do
 done
 /usr/bin/python3 examples/truck_lane_change/plot.py "$out/truck_rigid" "$out/truck_elastic" --out "$out/truck_plots"
 echo "truck demo: $(( ($(date +%s%N) - start) / 1000000 )) ms wall time (two runs, the frame's reduction and plots)"
+echo "== truck handling: step steer at 60 km/h (ISO 14793), constant steering-wheel angle (ISO 14792), braking in a turn"
+for t in step-steer constant-steer brake-in-turn; do
+  speed=(--speed 60)  # constant steer: from 10 km/h up
+  if [ "$t" = constant-steer ]; then speed=(); fi
+  "$bin" truck handling examples/truck_lane_change/truck.yaml --test "$t" "${speed[@]}" --out "$out/truck_$t"
+done
+/usr/bin/python3 examples/truck_lane_change/plot_handling.py "$out/truck_step-steer"
+/usr/bin/python3 examples/truck_lane_change/plot_handling.py "$out/truck_constant-steer"
+echo "== truck with its frame from an FE deck: frame-deck, flexmb reduce, frame: {body, mounts}"
+/usr/bin/python3 examples/truck_lane_change/own_frame.py --out "$out/own_frame" --flexmb "$bin"
+"$bin" run "$out/own_frame/truck_own_frame.yaml" --frame elastic --speed 55 --out "$out/truck_own_frame"
 for ex in andrews_squeezer four_bar_2; do
   if [ -f "examples/$ex/model.yaml" ]; then
     echo "== $ex"
@@ -41,7 +54,9 @@ sed -n 1,3p "$crane/reduce.txt"
 cat "$crane/plots/crane_metrics.json"; echo
 echo "== crane: the hoisting rope two ways, massless and an ANCF rope of changing length, hoisting during the slew"
 /usr/bin/python3 examples/crane/rope_methods.py --flexmb "$bin" --body "$crane/boom.h5" --out "$crane/rope_methods" --animation
-echo "results in $out: truck_rigid/, truck_elastic/ (results.csv, summary.json; frame.h5, the reduced"
+echo "results in $out: truck_step-steer/, truck_constant-steer/, truck_brake-in-turn/ (handling tests: summary.json"
+echo "with the single-track model beside the truck, PNGs), own_frame/ (frame.bdf, frame.h5, truck_own_frame.yaml) and"
+echo "truck_own_frame/ (the lane change with that frame), truck_rigid/, truck_elastic/ (results.csv, summary.json; frame.h5, the reduced"
 echo "frame; animation/anim.pvd, the whole truck with the deformed, stress-coloured frame for ParaView), truck_plots/ (PNG: rigid against elastic, frame deflection and stress), and the examples'"
 echo "folders (results.csv, summary.json, anim.pvd for ParaView); crane/run (results.csv, anim.pvd: boom deformed 20x and stress-coloured, platform, drum, luffing cylinder, load)"
 echo "and crane/plots (crane_metrics.json: phi_2, swing, slewing torque, winch torque, cylinder force, boom deflection and stress; PNGs)"
