@@ -14,6 +14,7 @@
 #include "apps/flexmb/commands/fe_commands.h"
 #include "apps/flexmb/commands/reduce_commands.h"
 #include "apps/flexmb/commands/run.h"
+#include "apps/flexmb/commands/handling.h"
 #include "apps/flexmb/commands/lane_change.h"
 #include "python/core_bindings.h"
 
@@ -181,6 +182,44 @@ PYBIND11_MODULE(_core, m) {
         py::arg("dt") = py::none(), py::arg("out_dir") = "", py::arg("stop_on_failure") = false,
         py::arg("stop_distance") = py::none(), py::arg("run_up_time") = py::none(),
         "`flexmb run` of a lane-change file: the result as JSON text.");
+  m.def("truck_handling", [](const std::string& file, const std::string& test, const std::string& out_dir,
+                             std::optional<double> speed_kmh, std::optional<double> steer_deg,
+                             std::optional<std::string> frame, std::optional<double> dt, const py::dict& options) {
+    flexmb::vehicle::HandlingOptions o;
+    o.file = file;
+    o.test = test;
+    o.out_dir = out_dir;
+    o.speed_kmh = speed_kmh;
+    o.steer_deg = steer_deg;
+    o.frame = frame;
+    o.dt = dt;
+    // the numeric settings by their names in HandlingOptions
+    const std::pair<const char*, double*> numbers[] = {
+        {"target_ay", &o.target_ay},           {"radius", &o.radius},
+        {"step_time", &o.step_time},           {"rise_time", &o.rise_time},
+        {"hold_time", &o.hold_time},           {"speed_rate_kmh_s", &o.speed_rate_kmh_s},
+        {"max_ay", &o.max_ay},                 {"max_speed_kmh", &o.max_speed_kmh},
+        {"decel", &o.decel},                   {"brake_rise_time", &o.brake_rise_time}};
+    for (const auto& [key, value] : options) {
+      const std::string name = py::str(key);
+      if (name == "brake_torque") {
+        o.brake_torque = value.cast<double>();
+        continue;
+      }
+      bool known = false;
+      for (const auto& [n, p] : numbers)
+        if (name == n) *p = value.cast<double>(), known = true;
+      if (!known) throw flexmb::InputError("unknown handling option '" + name + "'", {file, 0, "truck_handling"});
+    }
+    flexmb::vehicle::HandlingResult r;
+    {
+      py::gil_scoped_release release;
+      r = flexmb::vehicle::RunHandlingTest(o);
+    }
+    return flexmb::vehicle::HandlingJson(r);
+  }, py::arg("file"), py::arg("test"), py::arg("out_dir") = "", py::arg("speed_kmh") = py::none(),
+        py::arg("steer_deg") = py::none(), py::arg("frame") = py::none(), py::arg("dt") = py::none(),
+        py::arg("options") = py::dict(), "`flexmb truck handling`: summary.json as JSON text.");
   m.def("max_pass_speed", [](const std::string& file, double low, double high, double tol,
                              std::optional<std::string> frame) {
     flexmb::vehicle::LaneChangeOptions o;

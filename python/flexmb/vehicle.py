@@ -1,5 +1,6 @@
-"""The truck lane change (`flexmb run truck.yaml`) and the max-speed search
-(`flexmb truck max-speed`) from Python."""
+"""The truck lane change (`flexmb run truck.yaml`), the max-speed search
+(`flexmb truck max-speed`) and the handling tests (`flexmb truck handling`)
+from Python."""
 
 import dataclasses
 import json
@@ -42,6 +43,23 @@ def lane_change(file, speed_kmh=None, frame=None, dt=None, out_dir=None, stop_on
     text = _core.lane_change(os.fspath(file), speed_kmh, frame, dt, os.fspath(out_dir) if out_dir else "",
                              stop_on_failure, stop_distance, run_up_time)
     metrics = json.loads(text)
+    results = read_results(out_dir) if out_dir and os.path.exists(os.path.join(out_dir, "results.csv")) else None
+    return LaneChangeResult(metrics, results)
+
+
+def truck_handling(file, test="step-steer", speed_kmh=None, steer_deg=None, frame=None, dt=None, out_dir=None,
+                   **options):
+    """Runs the handling test `test` (step-steer, constant-steer, braking,
+    brake-in-turn) of the truck of lane-change file `file`; `options` are the
+    other settings of `flexmb truck handling` by their HandlingOptions names
+    (target_ay, radius, rise_time, hold_time, speed_rate_kmh_s, max_ay,
+    max_speed_kmh, brake_torque, decel, brake_rise_time). Returns a
+    LaneChangeResult-like result: .metrics (summary.json), .results (with
+    out_dir), .completed."""
+    text = _core.truck_handling(os.fspath(file), test, os.fspath(out_dir) if out_dir else "", speed_kmh, steer_deg,
+                                frame, dt, options)
+    metrics = json.loads(text)
+    metrics["completed"] = metrics.get("status") == "ok"
     results = read_results(out_dir) if out_dir and os.path.exists(os.path.join(out_dir, "results.csv")) else None
     return LaneChangeResult(metrics, results)
 

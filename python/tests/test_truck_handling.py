@@ -175,3 +175,17 @@ def test_example_truck_compliance_steer_and_errors(cli, source_dir, tmp_path):
                           (["--steer", "0"], "--steer must be a nonzero angle")):
         r = subprocess.run([cli, "truck", "handling", truck, *args], capture_output=True, text=True)
         assert r.returncode != 0 and message in r.stderr and "truck.yaml" in r.stderr, r.stderr
+
+
+def test_python_api_equals_the_command(cli, source_dir, tmp_path):
+    import flexmb
+    truck = os.path.join(source_dir, "examples", "truck_lane_change", "truck.yaml")
+    r = flexmb.truck_handling(truck, "step-steer", speed_kmh=50, out_dir=tmp_path / "py", target_ay=1.5)
+    ref, _ = handling(cli, truck, tmp_path / "cli", "--test", "step-steer", "--speed", "50", "--ay", "1.5")
+    assert r.completed
+    for key in ("yaw_rate_gain", "steady_lateral_acceleration", "yaw_rate_response_time", "steps"):
+        assert r.metrics[key] == ref[key]
+    assert (tmp_path / "py" / "results.csv").read_bytes() == (tmp_path / "cli" / "results.csv").read_bytes()
+    assert r.results["yaw_rate_degps"][-1] == pytest.approx(r.steady_yaw_rate_degps, rel=1e-3)
+    with pytest.raises(Exception, match="unknown handling option 'radiuss'"):
+        flexmb.truck_handling(truck, "constant-steer", radiuss=40)

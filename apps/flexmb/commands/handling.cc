@@ -120,6 +120,16 @@ double HandlingResult::Metric(const std::string& name) const {
   return std::numeric_limits<double>::quiet_NaN();
 }
 
+std::string HandlingJson(const HandlingResult& r) {
+  cli::JsonObjectText j;
+  j.Text("test", r.test);
+  j.Text("status", r.completed ? "ok" : "failed");
+  j.Text("message", r.message);
+  j.Text("frame", r.frame);
+  for (const auto& [k, v] : r.metrics) j.Number(k, v);
+  return j.str();
+}
+
 HandlingResult RunHandlingTest(const HandlingOptions& opt) {
   using namespace handling_cc;
   if (opt.test != "step-steer" && opt.test != "constant-steer" && opt.test != "braking" && opt.test != "brake-in-turn")
@@ -375,15 +385,10 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
   add("t_end", rows.empty() ? 0.0 : rows.back().t);
   add("steps", static_cast<double>(sim.stats().steps));
   add("wall_time_s", wall);
-  if (!opt.out_dir.empty()) {
-    cli::JsonObjectText j;
-    j.Text("test", opt.test);
-    j.Text("status", r.completed ? "ok" : "failed");
-    j.Text("message", r.message);
-    j.Text("frame", frame);
-    for (const auto& [k, v] : r.metrics) j.Number(k, v);
-    cli::WriteAnalysisFile((std::filesystem::path(opt.out_dir) / "summary.json").string(), j.str());
-  }
+  r.test = opt.test;
+  r.frame = frame;
+  if (!opt.out_dir.empty())
+    cli::WriteAnalysisFile((std::filesystem::path(opt.out_dir) / "summary.json").string(), HandlingJson(r));
   if (opt.info) {
     std::fprintf(opt.info, "%s (%s frame), steering wheel %.1f deg: %s", opt.test.c_str(), frame.c_str(),
                  delta_sw * kDeg, r.completed ? "completed" : ("stopped: " + r.message).c_str());

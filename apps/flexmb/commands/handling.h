@@ -60,6 +60,8 @@ struct HandlingOptions {
 /// Outcome of a handling test: named metrics (SI units unless the name
 /// says deg), in the order summary.json lists them.
 struct HandlingResult {
+  std::string test;                   ///< the test run
+  std::string frame;                  ///< "rigid" or "elastic"
   bool completed = false;
   std::string message;                ///< why the run stopped early
   std::vector<std::pair<std::string, double>> metrics;
@@ -71,5 +73,9 @@ struct HandlingResult {
 /// a bad file; a numerical failure ends the run with completed false and
 /// the rows so far kept.
 HandlingResult RunHandlingTest(const HandlingOptions& opt);
+
+/// summary.json of a handling test: test, status, message, frame and the
+/// metrics (NaN as null).
+std::string HandlingJson(const HandlingResult& r);
 
 }  // namespace flexmb::vehicle
