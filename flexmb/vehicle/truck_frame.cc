@@ -1,6 +1,7 @@
 #include "flexmb/vehicle/truck_frame.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <set>
@@ -65,7 +66,10 @@ void ReadFrameBody(const YAML::Node& node, YamlContext& ctx, const std::string& 
   for (const auto& kv : mounts) {
     const std::string name = kv.first.as<std::string>();
     if (!names.count(name)) ctx.Fail(kv.first, "unknown mount " + Quoted(name) + "; this truck's mounts are: " + list);
-    d.frame_mounts[name] = static_cast<int>(ctx.Number(kv.second, "node id of mount " + Quoted(name)));
+    const double id = ctx.Number(kv.second, "node id of mount " + Quoted(name));
+    if (!(id >= 1) || id != std::floor(id) || id > 2147483647.0)
+      ctx.Fail(kv.second, "the node id of mount " + Quoted(name) + " must be a positive integer");
+    d.frame_mounts[name] = static_cast<int>(id);
   }
   for (const FrameAttachment& a : FrameAttachments(d)) {
     if (!d.frame_mounts.count(a.name))

@@ -104,6 +104,8 @@ def test_bad_mounts_are_errors_naming_file_line_and_mount(cli, files):
     check_error(cli, own, [(tow, tow.replace("tow_hitch", "tow_hook"))], r"unknown mount 'tow_hook'; .*tow_hitch")
     check_error(cli, own, [(pivot.group(0), "      arm_pivot_front: 999999\n")],
                 rf"bad\.yaml:{line}: frame mount 'arm_pivot_front': node 999999 does not exist in body file")
+    check_error(cli, own, [(pivot.group(0), "      arm_pivot_front: 12.5\n")],
+                rf"bad\.yaml:{line}: .*node id of mount 'arm_pivot_front' must be a positive integer")
     check_error(cli, own, [(pivot.group(0), "      arm_pivot_front: 1\n")],
                 rf"bad\.yaml:{line}: .*node 1 of .* is not an interface node")
     check_error(cli, own, [("mount_tolerance: 0.3", "mount_tolerance: 0.1")],
