@@ -99,10 +99,18 @@ StepResponse Respond(const std::vector<Row>& rows, double Row::*x, double t_ref)
   const double sign = s.steady >= 0 ? 1.0 : -1.0;
   s.response_time = std::numeric_limits<double>::quiet_NaN();
   double peak = -1e300;
+  const double level = 0.9 * std::abs(s.steady);
+  const Row* prev = nullptr;
   for (const Row& r : rows) {
     if (r.t < t_ref) continue;
-    if (std::isnan(s.response_time) && sign * r.*x >= 0.9 * std::abs(s.steady)) s.response_time = r.t - t_ref;
+    // the 90 % crossing, interpolated between the output rows
+    if (std::isnan(s.response_time) && sign * r.*x >= level) {
+      const double before = prev ? sign * prev->*x : level;
+      const double f = before < level ? (level - before) / (sign * r.*x - before) : 0.0;
+      s.response_time = (prev ? prev->t + f * (r.t - prev->t) : r.t) - t_ref;
+    }
     if (sign * r.*x > peak) peak = sign * r.*x, s.peak_time = r.t - t_ref;
+    prev = &r;
   }
   s.overshoot = (peak - std::abs(s.steady)) / std::abs(s.steady);
   // no peak above the steady state (overshoot below 0.5 %): no peak time
