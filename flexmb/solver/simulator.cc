@@ -42,10 +42,15 @@ const ConstraintReport& Simulator::Initialize() {
   return report_;
 }
 
-StaticsResult Simulator::SettleStatics(const StaticsSettings& settings) {
+StaticsResult Simulator::SettleStatics(const StaticsSettings& settings, bool keep_velocities) {
   if (!initialized_) Initialize();
+  const VecX v0 = state_.v;
   const StaticsResult r = SolveStatics(model_, state_, ws_, settings);
   SparseLu lu;
+  if (keep_velocities) {
+    state_.v = v0;
+    ProjectVelocities(model_, state_, ws_, lu);
+  }
   InitialAccelerations(model_, state_, ws_, lu);
   integrator_.Start(state_);
   return r;

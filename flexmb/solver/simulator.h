@@ -64,7 +64,12 @@ class Simulator {
   /// time (SolveStatics, velocities zero) and restarts the integrator from
   /// there (accelerations and multipliers of the new state). Throws
   /// NumericalError as SolveStatics; the state is then unchanged in time.
-  StaticsResult SettleStatics(const StaticsSettings& settings = {});
+  /// With `keep_velocities` the velocities of before are given back to the
+  /// settled state, projected onto its velocity constraints: a vehicle
+  /// rolling off from the equilibrium of its standing self (the forward
+  /// speed and wheel spins kept, the sag of springs, tires and an elastic
+  /// frame already there).
+  StaticsResult SettleStatics(const StaticsSettings& settings = {}, bool keep_velocities = false);
 
   /// Evaluates the workspace at the current state (markers, constraints,
   /// forces) so that sensors can read it.

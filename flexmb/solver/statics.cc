@@ -178,7 +178,7 @@ class StaticsSolver {
   // Newton iterations at load factor mu from the current iterate
   StaticsNewton Newton(double mu, int& used) {
     SparseLu& lu = lu_;
-    double last_step = INFINITY;
+    double last_step = INFINITY, last_residual = INFINITY;
     bool inertia_held = false;
     for (int it = 0;; ++it) {
       const double norm = Residual(mu, true);
@@ -190,9 +190,21 @@ class StaticsSolver {
       // eps |K| |q| (a stiff ANCF boom under a small load: 2e-6 N of 2e-2 N)
       const double floor = 100.0 * std::numeric_limits<double>::epsilon() * kscale_ *
                            std::max(1.0, s_.q.lpNorm<Eigen::Infinity>());
-      if (last_step <= set_.tolerance && res_.residual <= std::max(set_.residual_tol * fscale_, floor) &&
-          phi_norm <= m_.solver.assembly_tol)
+      // held throughout (hold_always): a residual no displacement removes
+      // (a creep) stops the iteration once small and no longer decreasing
+      const bool stalled = set_.hold_always && res_.residual > 0.9 * last_residual;
+      last_residual = res_.residual;
+      if ((last_step <= set_.tolerance || stalled) && res_.residual <= std::max(set_.residual_tol * fscale_, floor) &&
+          phi_norm <= m_.solver.assembly_tol) {
+        if (last_step > set_.tolerance) {
+          Eigen::Index k = 0;
+          r_.head(nv_).cwiseAbs().maxCoeff(&k);
+          res_.creep = StaticsColumnName(m_, ws_, static_cast<int>(k));
+        } else {
+          res_.creep.clear();
+        }
         return StaticsNewton::kConverged;
+      }
       // a direction held by its inertia alone that does not settle is a
       // free motion under load (a free body under gravity): say so
       if (it >= set_.max_iterations || res_.iterations >= set_.max_total_iterations)
@@ -200,7 +212,12 @@ class StaticsSolver {
       ++res_.iterations;
       ++used;
       StoreLambda();
-      AssembleIterationMatrix(m_, s_, ws_, MatrixCoefficients{0.0, 0.0, 1.0, m_.solver.geometric_stiffness});
+      // hold_always: the pseudo-transient matrix of the fallback below from the start
+      const double tau = set_.damping_hold_time, tm = 10.0 * tau;
+      const bool hold = set_.hold_always && tau > 0.0;
+      AssembleIterationMatrix(m_, s_, ws_,
+                              MatrixCoefficients{hold ? 1.0 / (tm * tm) : 0.0, hold ? 1.0 / tau : 0.0, 1.0,
+                                                 m_.solver.geometric_stiffness});
       for (int k = 0; k < nv_; ++k) kscale_ = std::max(kscale_, std::abs(ws_.S.coeff(k, k)));
       if (!FactorizeScaled()) {
         singular_ = lu.singular_column();

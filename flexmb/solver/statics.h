@@ -39,6 +39,7 @@
 ///   gravity) never settles and is reported as a free motion.
 
 #include <functional>
+#include <string>
 
 #include "flexmb/model/model.h"
 #include "flexmb/model/workspace.h"
@@ -51,6 +52,13 @@ struct StaticsResult {
   double residual = 0.0;      ///< final largest force residual [N, N m]
   int increments = 0;         ///< converged load increments
   int cuts = 0;               ///< failed increments (each halved the increment)
+  /// With StaticsSettings::hold_always: the coordinate of the largest
+  /// residual when the iteration stopped on a stalled residual below the
+  /// tolerance (a creep: a force that no displacement removes, e.g. a
+  /// contact patch's weight along its slide spinning a free wheel, which a
+  /// body at rest moves under at force / damping); empty when the steps
+  /// converged.
+  std::string creep;
 };
 
 /// Settings of the static solver.
@@ -65,6 +73,17 @@ struct StaticsSettings {
   /// Time tau [s] of the damping that holds directions without stiffness
   /// (see the file comment); 0: none (a singular K_t is an error at once).
   double damping_hold_time = 1.0;
+  /// The pseudo-transient iteration matrix K_t + C / tau + M / (10 tau)^2
+  /// from the first iteration, not only once K_t is found singular: for a
+  /// system whose directions without stiffness round-off can hide from the
+  /// singularity test (a vehicle on its tires, free to roll at rest, with an
+  /// elastic frame whose stiff static modes set the pivots' scale). The
+  /// residual stays the true one, so the fixed point is the same
+  /// equilibrium, reached at a linear rate where the damping terms matter;
+  /// stiff directions converge as by Newton. The iteration also stops when
+  /// the residual is below residual_tol and no longer decreasing
+  /// (StaticsResult::creep names where it stands).
+  bool hold_always = false;
   /// Called after every converged load increment with the load factor
   /// reached (in (0, 1]), the Newton iterations of that increment and the
   /// statistics so far; the state passed to SolveStatics then holds that

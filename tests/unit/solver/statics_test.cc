@@ -10,6 +10,7 @@
 #include "flexmb/forces/plane_contact.h"
 #include "flexmb/joints/revolute.h"
 #include "flexmb/solver/initial_conditions.h"
+#include "flexmb/solver/simulator.h"
 
 namespace flexmb {
 namespace {
@@ -180,4 +181,79 @@ TEST(Statics, DampingHoldsDirectionsWithoutStiffness) {
 }
 
 }  // namespace
+// hold_always (the truck's settle): the pseudo-transient matrix from the
+// first iteration reaches the same equilibrium as the plain solve; a load
+// that nothing but the friction's damping holds (a creep) stops it once
+// the residual is below the tolerance and no longer falls, and `creep`
+// names the coordinate, where the plain solve cannot converge.
+TEST(Statics, HoldAlwaysReachesTheSameEquilibriumAndNamesACreep) {
+  Model m;
+  StaticsBlockOnGround(m, 0.5);
+  State s = m.InitialState();
+  Workspace ws;
+  MakeConsistent(m, s, ws);
+  StaticsSettings held;
+  held.hold_always = true;
+  held.residual_tol = 1e-7;
+  const StaticsResult r = SolveStatics(m, s, ws, held);
+  const double g = -m.gravity_W.z();
+  EXPECT_NEAR(s.q(2), 0.25 - 400.0 * g / (4 * 2e6), 1e-12);
+  EXPECT_NEAR(s.q(0), 0.3, 1e-12);
+  EXPECT_NEAR(s.q(1), -0.2, 1e-12);
+  EXPECT_TRUE(r.creep.empty()) << r.creep;
+
+  // a push of 2e-4 N (5e-8 of the weight) along the ground
+  Model pushed;
+  StaticsBlockOnGround(pushed, 0.5);
+  pushed.gravity_W.x() = 5e-7;
+  State s2 = pushed.InitialState();
+  Workspace ws2;
+  MakeConsistent(pushed, s2, ws2);
+  const StaticsResult r2 = SolveStatics(pushed, s2, ws2, held);
+  EXPECT_NE(r2.creep.find("block"), std::string::npos) << r2.creep;
+  EXPECT_LE(r2.residual, 1e-7 * 400.0 * g);
+  EXPECT_NEAR(s2.q(2), 0.25 - 400.0 * g / (4 * 2e6), 1e-9);
+  State s3 = pushed.InitialState();
+  Workspace ws3;
+  MakeConsistent(pushed, s3, ws3);
+  EXPECT_THROW(SolveStatics(pushed, s3, ws3), NumericalError);
+}
+
+// Simulator::SettleStatics with keep_velocities: the positions settle (the
+// block on its contacts), the velocities of before come back (a block
+// sliding at 2 m/s keeps sliding); without it they are zero.
+TEST(Statics, SettleKeepsTheVelocitiesWhenAsked) {
+  for (const bool keep : {true, false}) {
+    Model moving;
+    RigidBodyData d;
+    d.mass = 400.0;
+    d.inertia_C = Mat3::Identity() * 50.0;
+    d.p_WB = Vec3(0.3, -0.2, 0.2499);
+    d.v_WB = Vec3(2.0, 0.0, 0.0);
+    const int b = moving.AddBody(std::make_unique<RigidBody>("block", d));
+    PlaneContactLaw law;
+    law.stiffness = 2e6;
+    law.damping = 1e4;
+    law.friction = 0.5;
+    int n = 0;
+    for (const double x : {-0.5, 0.5})
+      for (const double y : {-0.5, 0.5}) {
+        const std::string name = "c" + std::to_string(n++);
+        moving.AddForce(std::make_unique<PlaneContact>(name, law),
+                        moving.AddMarker(b, name, Vec3(x, y, -0.25), Mat3::Identity()), -1);
+      }
+    moving.Finalize();
+    Simulator sim(moving);
+    sim.Initialize();
+    StaticsSettings held;
+    held.hold_always = true;
+    sim.SettleStatics(held, keep);
+    const double g = -moving.gravity_W.z();
+    EXPECT_NEAR(sim.state().q(2), 0.25 - 400.0 * g / (4 * 2e6), 1e-12);
+    EXPECT_NEAR(sim.state().q(0), 0.3, 1e-12);
+    EXPECT_NEAR(sim.state().v(0), keep ? 2.0 : 0.0, 1e-12);
+    EXPECT_NEAR(sim.state().v(2), 0.0, 1e-12);
+  }
+}
+
 }  // namespace flexmb
