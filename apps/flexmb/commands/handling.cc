@@ -226,6 +226,7 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
   const auto wall0 = std::chrono::steady_clock::now();
   try {
     sim.Initialize();
+    if (f.solver.analysis == Analysis::kStaticsThenDynamics) sim.SettleStatics(TruckStaticsSettings(), true);
     sim.Run(t_end, 0.0, [&](const State& st, const Workspace& ws) {
       const MarkerState& fr = ws.markers[h.frame_ref];
       const Vec3 rpy = RollPitchYaw(fr.R_WM);

@@ -47,6 +47,7 @@ struct EndOfTest {};
 SolverSettings LaneChangeSolverDefaults() {
   SolverSettings s;
   s.dt = 0.002;
+  s.analysis = Analysis::kStaticsThenDynamics;
   return s;
 }
 
@@ -148,8 +149,10 @@ LaneChangeFile ReadFile(const std::string& path) {
   if (const YAML::Node s = t["solver"]) {
     ctx.SetEntity("solver");
     ReadSolverSection(s, ctx, f.solver, {"output_interval"});
-    if (f.solver.analysis != Analysis::kDynamics)
-      ctx.Fail(s["analysis"], "a lane-change test is a time integration: 'analysis' must be dynamics");
+    if (f.solver.analysis == Analysis::kStatics)
+      ctx.Fail(s["analysis"],
+               "a lane-change test is a time integration: 'analysis' must be statics_then_dynamics (the default: "
+               "rolling off from the static equilibrium) or dynamics (from the ride height of the lever rule)");
     f.dt_min_given = bool(s["dt_min"]);
     f.output_interval = ctx.Double(s, "output_interval", f.output_interval);
   }
@@ -300,6 +303,13 @@ bool IsLaneChangeFile(const std::string& path) {
   } catch (const std::exception&) {
     return false;
   }
+}
+
+StaticsSettings TruckStaticsSettings() {
+  StaticsSettings s;
+  s.hold_always = true;
+  s.residual_tol = 1e-7;
+  return s;
 }
 
 TruckData LoadLaneChangeTruck(const std::string& file) { return ReadFile(file).truck; }
@@ -502,6 +512,7 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
   r.frame_modal_coordinates = h.elastic ? f.truck.elastic_frame->invariants.n : 0;
   try {
     sim.Initialize();
+    if (f.solver.analysis == Analysis::kStaticsThenDynamics) sim.SettleStatics(TruckStaticsSettings(), true);
     sim.Run(t_limit, 0.0, [&](const State& st, const Workspace& ws) {
       const MarkerState& fr = ws.markers[h.frame_ref];
       const Vec3 rpy = RollPitchYaw(fr.R_WM);

@@ -13,10 +13,21 @@
 #include <string>
 
 #include "flexmb/model/state.h"
+#include "flexmb/solver/statics.h"
 #include "flexmb/vehicle/driver.h"
 #include "flexmb/vehicle/truck.h"
 
 namespace flexmb::vehicle {
+
+/// Settings of the static equilibrium of the standing truck that its tests
+/// roll off from and its modes are taken about (SolveStatics with
+/// hold_always: nothing but the tires' slip damping holds the truck's
+/// position, heading and wheel spins at rest). Stops at a force residual
+/// of 1e-7 of the largest force; a contact patch's weight along its slide
+/// on a slightly tilted carrier, balanced by the carcass spring whose
+/// torque spins the free wheel, leaves a residual of about 1e-8 of it that
+/// no displacement removes (StaticsResult::creep).
+StaticsSettings TruckStaticsSettings();
 
 /// What a lane-change run should do.
 struct LaneChangeOptions {

@@ -209,6 +209,7 @@ StraightRunResult RunStraight(const StraightRunOptions& opt) {
   double next_row = 0.0;
   try {
     sim.Initialize();
+    if (f.solver.analysis == Analysis::kStaticsThenDynamics) sim.SettleStatics(TruckStaticsSettings(), true);
     sim.Run(t_limit, 0.0, [&](const State& st, const Workspace& ws) {
       const MarkerState& fr = ws.markers[h.frame_ref];
       const double yaw = std::atan2(fr.R_WM(1, 0), fr.R_WM(0, 0));

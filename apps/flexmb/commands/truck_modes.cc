@@ -14,7 +14,7 @@
 #include "flexmb/common/error.h"
 #include "flexmb/solver/assembler.h"
 #include "flexmb/solver/initial_conditions.h"
-#include "flexmb/solver/sparse_lu.h"
+#include "flexmb/solver/statics.h"
 
 namespace flexmb::cli {
 namespace {
@@ -57,73 +57,21 @@ MatX TruckModesRigidBasis(const Model& m, const State& s, int g, const Vec3& c) 
   return G;
 }
 
-// multipliers of the active rows into s.lambda (inactive equations 0)
-void TruckModesStoreLambda(const Model& m, const Workspace& ws, const VecX& lam, State& s) {
-  s.lambda.setZero();
-  for (int e = 0; e < m.nc; ++e)
-    if (ws.row_of_eq[static_cast<size_t>(e)] >= 0) s.lambda(e) = lam(ws.row_of_eq[static_cast<size_t>(e)]);
-}
-
-// static equilibrium of the standing truck: Newton on [B^T lambda - Q; phi]
-// with the pseudo-transient matrix K_t + C / tau + M / tau^2 (tau = 1 s,
-// M / tau^2 about 1 % of the suspension and tire rates). Nothing holds the
-// truck's horizontal position, yaw and wheel spin at rest but the tires'
-// slip damping (SolveStatics stops at the singular K_t); where K_t is
-// regular the fixed point is the same equilibrium, reached at a linear rate.
-// A residual that no coordinate can remove (a contact patch's weight along
-// its slide on a slightly tilted carrier, balanced by the carcass spring,
-// whose torque spins the free wheel: at rest the truck creeps at about
-// force / slip damping) stops the iteration once below 1e-7 of the largest
-// force and no longer decreasing; `warnings` then names it.
+// static equilibrium of the standing truck (TruckStaticsSettings: nothing
+// holds its position, heading and wheel spins at rest but the tires' slip
+// damping); a residual no displacement removes (a creep) is named in
+// `warnings`
 void TruckModesStatics(const Model& m, State& s, Workspace& ws, const std::string& path,
                        std::vector<std::string>& warnings) {
-  const int nv = m.nv, na = ws.n_active;
-  const double tau = 1.0;
-  VecX lam = VecX::Zero(na), r(nv + na), q0, dx(nv);
-  for (int e = 0; e < m.nc; ++e)
-    if (ws.row_of_eq[static_cast<size_t>(e)] >= 0) lam(ws.row_of_eq[static_cast<size_t>(e)]) = s.lambda(e);
-  s.v.setZero();
-  SparseLu lu;
-  double fscale = 1.0, step = INFINITY, res = INFINITY, last = INFINITY;
-  for (int it = 0; it <= 300; ++it) {
-    EvaluateMarkers(m, s, ws);
-    EvaluateConstraints(m, s, ws);
-    EvaluateForces(m, s, ws, true);
-    r.head(nv) = -ws.Q;
-    r.head(nv) += ws.B.transpose() * lam;
-    r.tail(na) = ws.phi;
-    if (!r.allFinite()) break;
-    fscale = std::max(fscale, ws.Q.lpNorm<Eigen::Infinity>());
-    res = r.head(nv).lpNorm<Eigen::Infinity>();
-    const double phi = na > 0 ? r.tail(na).lpNorm<Eigen::Infinity>() : 0.0;
-    const bool stalled = res > 0.9 * last;
-    if ((step <= 1e-9 || stalled) && res <= 1e-7 * fscale && phi <= m.solver.assembly_tol) {
-      TruckModesStoreLambda(m, ws, lam, s);
-      if (step > 1e-9) {
-        Eigen::Index k = 0;
-        r.head(nv).cwiseAbs().maxCoeff(&k);
-        warnings.push_back("the standing truck creeps: a residual force of " + std::to_string(res) + " at " +
-                           VelocityCoordinateName(m, static_cast<int>(k)) +
-                           " that no static displacement removes; linearized about the state reached");
-      }
-      return;
-    }
-    last = res;
-    TruckModesStoreLambda(m, ws, lam, s);
-    AssembleIterationMatrix(m, s, ws,
-                            MatrixCoefficients{1.0 / (tau * tau), 1.0 / tau, 1.0, m.solver.geometric_stiffness});
-    if (!lu.Factorize(ws.S)) break;
-    ws.rhs = -r;
-    lu.Solve(ws.rhs);
-    dx = ws.rhs.head(nv);
-    q0 = s.q;
-    RetractAll(m, q0, dx, s.q);
-    lam += ws.rhs.tail(na);
-    step = dx.lpNorm<Eigen::Infinity>();
+  StaticsResult r;
+  try {
+    r = SolveStatics(m, s, ws, vehicle::TruckStaticsSettings());
+  } catch (const NumericalError& e) {
+    throw NumericalError(std::string("the standing truck has no static equilibrium: ") + e.what(), {path, 0, "truck"});
   }
-  throw NumericalError("the standing truck has no static equilibrium (pseudo-transient Newton: largest force "
-                       "residual " + std::to_string(res) + " after 300 iterations)",
-                       {path, 0, "truck"});
+  if (!r.creep.empty())
+    warnings.push_back("the standing truck creeps: a residual force of " + std::to_string(r.residual) + " at " +
+                       r.creep + " that no static displacement removes; linearized about the state reached");
 }
 
 const char* const kTruckModesSprung[6] = {"longitudinal", "lateral", "bounce", "roll", "pitch", "yaw"};
