@@ -21,6 +21,43 @@ Driver::Driver(const DriverData& d, const LaneChangeCourse& course, double targe
   if (!std::isfinite(target_speed) || target_speed < 0) throw InputError("target speed must be >= 0", ctx);
   if (!(d.lag_time >= 0) || !std::isfinite(d.understeer_gradient))
     throw InputError("lag_time must be >= 0 and the understeer gradient finite", ctx);
+  if (!(d.reaction_delay >= 0) || !std::isfinite(d.reaction_delay) || !(d.neuromuscular_lag >= 0) ||
+      !std::isfinite(d.neuromuscular_lag))
+    throw InputError("reaction_delay and neuromuscular_lag must be finite and >= 0 s", ctx);
+  if (d.reaction_delay > 0) {
+    hist_t_.assign(64, 0.0);
+    hist_u_.assign(64, 0.0);
+  }
+}
+
+void Driver::PushTarget(double t, double u) {
+  const size_t cap = hist_t_.size();
+  if (count_ == cap) {
+    // grow: unroll the ring into twice the room
+    std::vector<double> nt(2 * cap), nu(2 * cap);
+    for (size_t k = 0; k < count_; ++k) {
+      nt[k] = hist_t_[(head_ + k) % cap];
+      nu[k] = hist_u_[(head_ + k) % cap];
+    }
+    hist_t_.swap(nt);
+    hist_u_.swap(nu);
+    head_ = 0;
+  }
+  const size_t at = (head_ + count_) % hist_t_.size();
+  hist_t_[at] = t;
+  hist_u_[at] = u;
+  ++count_;
+}
+
+double Driver::DelayedTarget(double t) {
+  const double seen = t - data_.reaction_delay;
+  const size_t cap = hist_t_.size();
+  // drop the samples superseded before `seen`
+  while (count_ >= 2 && hist_t_[(head_ + 1) % cap] <= seen) {
+    head_ = (head_ + 1) % cap;
+    --count_;
+  }
+  return count_ >= 1 && hist_t_[head_] <= seen ? hist_u_[head_] : 0.0;
 }
 
 void Driver::Update(const VehicleView& v) {
@@ -62,6 +99,18 @@ void Driver::Update(const VehicleView& v) {
     }
   }
   target_sw = std::clamp(target_sw, -data_.max_wheel_angle, data_.max_wheel_angle);
+  // reaction delay: the target the driver decided on reaction_delay ago
+  if (data_.reaction_delay > 0) {
+    PushTarget(v.t, target_sw);
+    target_sw = DelayedTarget(v.t);
+  }
+  // neuromuscular lag: the arms moved over the last interval towards the
+  // target held in it (exact first-order response), then aim at the new one
+  if (data_.neuromuscular_lag > 0) {
+    if (dt > 0) arm_ = held_target_ + (arm_ - held_target_) * std::exp(-dt / data_.neuromuscular_lag);
+    held_target_ = target_sw;
+    target_sw = arm_;
+  }
   if (dt > 0) {
     const double step = data_.max_wheel_rate * dt;
     *delta_sw_ = std::clamp(target_sw, *delta_sw_ - step, *delta_sw_ + step);

@@ -28,6 +28,7 @@
 ///   from the front axle entering section 2.
 
 #include <memory>
+#include <vector>
 
 #include "flexmb/vehicle/lane_change_course.h"
 
@@ -59,6 +60,15 @@ struct DriverData {
   /// is above the target the controller's negative output is a brake torque.
   double max_brake_torque = 40000.0;
   bool hold_speed = true;             ///< run the speed controller
+  /// Reaction delay [s], >= 0: the driver acts on what the steering law
+  /// computed this long ago (a transport delay of perception and decision;
+  /// zero-order hold of the sampled targets). 0: none.
+  double reaction_delay = 0.0;
+  /// Neuromuscular lag [s], >= 0: the time constant of the first-order lag
+  /// by which the arms follow the (delayed) target angle, integrated exactly
+  /// over each sampling interval with the target held; the rate limit
+  /// max_wheel_rate acts after it. 0: none.
+  double neuromuscular_lag = 0.0;
 };
 
 /// What the driver sees of the vehicle at a sampling instant (world, road plane).
@@ -105,6 +115,15 @@ class Driver {
   double integral_ = 0.0;
   double t_last_ = 0.0;
   bool started_ = false;
+  // reaction delay: ring buffer of the sampled targets (time, angle),
+  // oldest at head_; grows by doubling, so a run allocates only while its
+  // delay window first fills
+  std::vector<double> hist_t_, hist_u_;
+  size_t head_ = 0, count_ = 0;
+  double held_target_ = 0.0;  // neuromuscular lag: the target held over the last interval
+  double arm_ = 0.0;          // neuromuscular lag: the arms' angle [rad]
+  void PushTarget(double t, double u);
+  double DelayedTarget(double t);
 };
 
 }  // namespace flexmb::vehicle

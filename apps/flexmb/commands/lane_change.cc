@@ -126,7 +126,8 @@ LaneChangeFile ReadFile(const std::string& path) {
   if (const YAML::Node d = Section(t, "driver", ctx,
                                     {"steering_law", "preview_time", "min_preview", "lag_time", "understeer_gradient_deg",
                                      "steer_in_section1", "max_wheel_angle_deg", "max_wheel_rate_deg",
-                                     "neutral_in_section3", "speed_kp", "speed_ki", "max_drive_torque", "hold_speed"})) {
+                                     "neutral_in_section3", "speed_kp", "speed_ki", "max_drive_torque", "hold_speed",
+                                     "reaction_delay", "neuromuscular_lag"})) {
     DriverData& dd = f.driver;
     const std::string law = ctx.String(d, "steering_law", "preview");
     if (law != "preview" && law != "pure_pursuit")
@@ -144,6 +145,12 @@ LaneChangeFile ReadFile(const std::string& path) {
     dd.speed_kp = ctx.Double(d, "speed_kp", dd.speed_kp);
     dd.speed_ki = ctx.Double(d, "speed_ki", dd.speed_ki);
     dd.max_drive_torque = ctx.Double(d, "max_drive_torque", dd.max_drive_torque);
+    dd.reaction_delay = ctx.Double(d, "reaction_delay", dd.reaction_delay);
+    if (!(dd.reaction_delay >= 0) || !std::isfinite(dd.reaction_delay))
+      ctx.Fail(d["reaction_delay"], "reaction_delay must be >= 0 s");
+    dd.neuromuscular_lag = ctx.Double(d, "neuromuscular_lag", dd.neuromuscular_lag);
+    if (!(dd.neuromuscular_lag >= 0) || !std::isfinite(dd.neuromuscular_lag))
+      ctx.Fail(d["neuromuscular_lag"], "neuromuscular_lag must be >= 0 s");
     dd.hold_speed = ctx.Bool(d, "hold_speed", dd.hold_speed);
   }
   if (const YAML::Node s = t["solver"]) {
@@ -312,6 +319,50 @@ StaticsSettings TruckStaticsSettings() {
   return s;
 }
 
+namespace {
+
+// a numeric key of the driver section: its member and the factor from the
+// file's units to DriverData's
+struct LaneChangeDriverKey {
+  const char* name;
+  double DriverData::*member;
+  double scale;
+};
+
+const LaneChangeDriverKey& FindDriverKey(const std::string& key) {
+  static const LaneChangeDriverKey keys[] = {
+      {"preview_time", &DriverData::preview_time, 1.0},
+      {"min_preview", &DriverData::min_preview, 1.0},
+      {"lag_time", &DriverData::lag_time, 1.0},
+      {"understeer_gradient_deg", &DriverData::understeer_gradient, 1.0 / kDeg},
+      {"max_wheel_angle_deg", &DriverData::max_wheel_angle, 1.0 / kDeg},
+      {"max_wheel_rate_deg", &DriverData::max_wheel_rate, 1.0 / kDeg},
+      {"speed_kp", &DriverData::speed_kp, 1.0},
+      {"speed_ki", &DriverData::speed_ki, 1.0},
+      {"max_drive_torque", &DriverData::max_drive_torque, 1.0},
+      {"reaction_delay", &DriverData::reaction_delay, 1.0},
+      {"neuromuscular_lag", &DriverData::neuromuscular_lag, 1.0}};
+  std::string names;
+  for (const LaneChangeDriverKey& k : keys) {
+    if (key == k.name) return k;
+    names += std::string(names.empty() ? "" : ", ") + k.name;
+  }
+  throw InputError("unknown driver setting '" + key + "'; the driver's numeric keys are " + names);
+}
+
+}  // namespace
+
+void SetDriverSetting(DriverData& d, const std::string& key, double value) {
+  const LaneChangeDriverKey& k = FindDriverKey(key);
+  if (!std::isfinite(value)) throw InputError("driver setting '" + key + "' must be a finite number");
+  d.*(k.member) = value * k.scale;
+}
+
+double GetDriverSetting(const DriverData& d, const std::string& key) {
+  const LaneChangeDriverKey& k = FindDriverKey(key);
+  return d.*(k.member) / k.scale;
+}
+
 TruckData LoadLaneChangeTruck(const std::string& file) { return ReadFile(file).truck; }
 
 TruckFileSettings LoadTruckFileSettings(const std::string& file) {
@@ -362,6 +413,7 @@ std::unique_ptr<LaneChangeSetup> SetUpLaneChange(const LaneChangeOptions& opt) {
   overrides.dt = opt.dt;
   ApplySolverOverrides(overrides, f.solver);
   if (!f.dt_min_given) f.solver.dt_min = 1e-6 * f.solver.dt;
+  for (const auto& [key, value] : opt.driver_settings) SetDriverSetting(f.driver, key, value);
   if (opt.run_up_time) f.run_up_time = *opt.run_up_time;
   if (!(f.run_up_time >= 0) || !std::isfinite(f.run_up_time)) throw InputError("run-up time must be >= 0 s");
   if (!std::isfinite(f.speed_kmh) || f.speed_kmh < 0) throw InputError("entry speed must be >= 0 km/h");
@@ -441,9 +493,10 @@ void CheckLaneChange(const LaneChangeOptions& opt, std::FILE* out) {
                  f.truck.frame_body_file.c_str(), f.truck.frame.mass, f.truck.frame_mounts.size(), largest,
                  where.c_str());
   }
-  std::fprintf(out, "driver: %s, preview %.2f s (min %.1f m), speed %s\n",
+  std::fprintf(out, "driver: %s, preview %.2f s (min %.1f m), reaction delay %.2f s, neuromuscular lag %.2f s, speed %s\n",
                f.driver.steering_law == SteeringLaw::kPreview ? "preview" : "pure pursuit", f.driver.preview_time,
-               f.driver.min_preview, f.driver.hold_speed ? "held" : "not held");
+               f.driver.min_preview, f.driver.reaction_delay, f.driver.neuromuscular_lag,
+               f.driver.hold_speed ? "held" : "not held");
   std::fprintf(out, "solver: dt %g s, rho_inf %g, newton_tol %g, jacobian_reuse %s (rate %g)\n", f.solver.dt,
                f.solver.rho_inf, f.solver.newton_tol, f.solver.jacobian_reuse ? "on" : "off",
                f.solver.jacobian_reuse_rate);

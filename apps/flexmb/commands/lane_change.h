@@ -11,6 +11,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "flexmb/model/state.h"
 #include "flexmb/solver/statics.h"
@@ -46,6 +48,9 @@ struct LaneChangeOptions {
   /// of section 1 [m] (a shorter
   /// run for tests); the run counts as completed when it gets there.
   std::optional<double> stop_distance;
+  /// Driver settings set after the file is read, in its order: numeric keys
+  /// of the file's driver section in its units (SetDriverSetting).
+  std::vector<std::pair<std::string, double>> driver_settings;
   /// Time [s] at the entry speed on straight road before section 1 (the
   /// settling of the start: frame sag, suspension, tire patches, speed
   /// control; not monitored), overrides the file's `run_up_time` (1 s).
@@ -115,6 +120,16 @@ struct LaneChangeResult {
 /// `lane_change_test`). False for unreadable files (the normal loader then
 /// reports the fault).
 bool IsLaneChangeFile(const std::string& path);
+
+/// Sets the driver's `key`, a numeric key of the lane-change file's driver
+/// section (preview_time, lag_time, understeer_gradient_deg,
+/// reaction_delay, ...), to `value` in the file's units. Throws InputError
+/// naming the valid keys for an unknown one, or for a value not finite
+/// (the Driver checks the ranges).
+void SetDriverSetting(DriverData& d, const std::string& key, double value);
+
+/// The value of the driver's `key` in the file's units (SetDriverSetting).
+double GetDriverSetting(const DriverData& d, const std::string& key);
 
 /// Runs the test. Throws InputError for a bad file or option; a numerical
 /// failure of the simulation or a rollover (|roll| > 45 deg) ends the run
