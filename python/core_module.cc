@@ -15,6 +15,7 @@
 #include "apps/flexmb/commands/reduce_commands.h"
 #include "apps/flexmb/commands/run.h"
 #include "apps/flexmb/commands/handling.h"
+#include "apps/flexmb/commands/driver_sensitivity.h"
 #include "apps/flexmb/commands/lane_change.h"
 #include "python/core_bindings.h"
 
@@ -159,11 +160,18 @@ PYBIND11_MODULE(_core, m) {
     return ModuleJson([&](std::ostream& out) { flexmb::io::BodyInfo(o, out); });
   }, py::arg("body"), "`flexmb body info --json`.");
 
-  m.def("lane_change", [](const std::string& file, std::optional<double> speed_kmh,
+  // a driver dict {key: value} as LaneChangeOptions::driver_settings, in its order
+  auto driver_settings = [](const py::dict& driver) {
+    std::vector<std::pair<std::string, double>> out;
+    for (const auto& [key, value] : driver) out.emplace_back(py::str(key), value.cast<double>());
+    return out;
+  };
+  m.def("lane_change", [driver_settings](const std::string& file, std::optional<double> speed_kmh,
                           std::optional<std::string> frame, std::optional<double> dt, const std::string& out_dir,
                           bool stop_on_failure, std::optional<double> stop_distance,
-                          std::optional<double> run_up_time) {
+                          std::optional<double> run_up_time, const py::dict& driver) {
     flexmb::vehicle::LaneChangeOptions o;
+    o.driver_settings = driver_settings(driver);
     o.file = file;
     o.out_dir = out_dir;
     o.speed_kmh = speed_kmh;
@@ -180,7 +188,7 @@ PYBIND11_MODULE(_core, m) {
     return flexmb::vehicle::LaneChangeJson(r);
   }, py::arg("file"), py::arg("speed_kmh") = py::none(), py::arg("frame") = py::none(),
         py::arg("dt") = py::none(), py::arg("out_dir") = "", py::arg("stop_on_failure") = false,
-        py::arg("stop_distance") = py::none(), py::arg("run_up_time") = py::none(),
+        py::arg("stop_distance") = py::none(), py::arg("run_up_time") = py::none(), py::arg("driver") = py::dict(),
         "`flexmb run` of a lane-change file: the result as JSON text.");
   m.def("truck_handling", [](const std::string& file, const std::string& test, const std::string& out_dir,
                              std::optional<double> speed_kmh, std::optional<double> steer_deg,
@@ -220,10 +228,11 @@ PYBIND11_MODULE(_core, m) {
   }, py::arg("file"), py::arg("test"), py::arg("out_dir") = "", py::arg("speed_kmh") = py::none(),
         py::arg("steer_deg") = py::none(), py::arg("frame") = py::none(), py::arg("dt") = py::none(),
         py::arg("options") = py::dict(), "`flexmb truck handling`: summary.json as JSON text.");
-  m.def("max_pass_speed", [](const std::string& file, double low, double high, double tol,
-                             std::optional<std::string> frame) {
+  m.def("max_pass_speed", [driver_settings](const std::string& file, double low, double high, double tol,
+                             std::optional<std::string> frame, const py::dict& driver) {
     flexmb::vehicle::LaneChangeOptions o;
     o.file = file;
+    o.driver_settings = driver_settings(driver);
     o.frame = frame;
     o.stop_on_failure = true;
     bool low_ok = false;
@@ -234,7 +243,27 @@ PYBIND11_MODULE(_core, m) {
     }
     return py::make_tuple(v, low_ok);
   }, py::arg("file"), py::arg("low"), py::arg("high"), py::arg("tol") = 0.5, py::arg("frame") = py::none(),
-        "Highest passed entry speed [km/h] by bisection, and whether `low` passed.");
+        py::arg("driver") = py::dict(), "Highest passed entry speed [km/h] by bisection, and whether `low` passed.");
+  m.def("driver_sensitivity", [](const std::string& file, const py::dict& vary, double low, double high, double tol,
+                                 std::optional<std::string> frame, const std::string& out_dir) {
+    flexmb::vehicle::DriverSensitivityOptions o;
+    o.base.file = file;
+    o.base.frame = frame;
+    o.low = low;
+    o.high = high;
+    o.tol = tol;
+    o.out_dir = out_dir;
+    for (const auto& [key, values] : vary)
+      o.vary.push_back({py::str(key), values.cast<std::vector<double>>()});
+    flexmb::vehicle::DriverSensitivityResult r;
+    {
+      py::gil_scoped_release release;
+      r = flexmb::vehicle::RunDriverSensitivity(o);
+    }
+    return flexmb::vehicle::DriverSensitivityJson(o, r);
+  }, py::arg("file"), py::arg("vary"), py::arg("low") = 20.0, py::arg("high") = 90.0, py::arg("tol") = 1.0,
+        py::arg("frame") = py::none(), py::arg("out_dir") = "",
+        "`flexmb truck driver-sensitivity`: summary.json as JSON text.");
 
   m.def("process_tuning", [] {
     const flexmb::ProcessTuning t = flexmb::PlanProcessTuning();

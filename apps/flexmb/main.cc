@@ -21,6 +21,7 @@
 #include "flexmb/common/process_tuning.h"
 #include "flexmb/common/error.h"
 #include "apps/flexmb/commands/fe_commands.h"
+#include "apps/flexmb/commands/driver_sensitivity.h"
 #include "apps/flexmb/commands/frame_deck.h"
 #include "apps/flexmb/commands/handling.h"
 #include "apps/flexmb/commands/fe_static.h"
@@ -219,6 +220,21 @@ int main(int argc, char** argv) {
   max_speed->add_option("--high", v_high, "highest speed tried [km/h] (default 90)");
   max_speed->add_option("--tol", v_tol, "bisection tolerance [km/h] (default 1)");
   max_speed->add_option("--frame", frame, "frame model, rigid or elastic (default: the file's)");
+
+  flexmb::vehicle::DriverSensitivityOptions sens_opt;
+  std::vector<std::string> sens_vary;
+  bool sens_quiet = false;
+  CLI::App* sens = truck->add_subcommand(
+      "driver-sensitivity", "highest passing lane-change speed for a range of driver settings (the truck or the driver?)");
+  sens->add_option("file", truck_file, "lane-change file (YAML)")->required();
+  sens->add_option("--vary", sens_vary, "KEY=V1,V2,...: a numeric key of the driver section and its values (repeatable)")
+      ->required();
+  sens->add_option("--low", sens_opt.low, "lowest speed tried [km/h] (default 20)");
+  sens->add_option("--high", sens_opt.high, "highest speed tried [km/h] (default 90)");
+  sens->add_option("--tol", sens_opt.tol, "bisection tolerance [km/h] (default 1)");
+  sens->add_option("--frame", frame, "frame model, rigid or elastic (default: the file's)");
+  sens->add_option("--out,-o", sens_opt.out_dir, "output directory: sensitivity.csv, summary.json");
+  sens->add_flag("--quiet,-q", sens_quiet, "no table and trials");
 
   flexmb::vehicle::StraightRunOptions straight_opt;
   CLI::App* straight = truck->add_subcommand("straight-run", "straight run over a rough road at a constant speed");
@@ -454,6 +470,16 @@ int main(int argc, char** argv) {
       const double v = flexmb::vehicle::MaxPassSpeed(o, v_low, v_high, v_tol, stderr, &low_ok);
       std::printf("{\"max_pass_speed_kmh\": %.3f, \"low_passed\": %s, \"tolerance_kmh\": %g}\n", low_ok ? v : 0.0,
                   low_ok ? "true" : "false", v_tol);
+      return 0;
+    });
+  }
+  if (sens->parsed()) {
+    return Guarded([&] {
+      sens_opt.base.file = truck_file;
+      sens_opt.base.frame = frame;
+      for (const std::string& v : sens_vary) sens_opt.vary.push_back(flexmb::vehicle::ParseDriverVariation(v));
+      sens_opt.info = sens_quiet ? nullptr : stdout;
+      flexmb::vehicle::RunDriverSensitivity(sens_opt);
       return 0;
     });
   }

@@ -12,7 +12,7 @@ from .model import load, from_dict, from_yaml, check
 from .results import Results, read_results
 from .commands import run_file, fe_modes, fe_mode_shapes, fe_info, fe_export, reduce, body_info
 from .bodies import Body, read_body
-from .vehicle import LaneChangeResult, lane_change, max_pass_speed, truck_handling
+from .vehicle import LaneChangeResult, driver_sensitivity, lane_change, max_pass_speed, truck_handling
 from .study import run_study, Table
 from .studyfile import load_study
 from .studies import study
@@ -24,7 +24,7 @@ __all__ = [
     "Results", "read_results",
     "run_file", "fe_modes", "fe_mode_shapes", "fe_info", "fe_export", "reduce", "body_info",
     "Body", "read_body",
-    "LaneChangeResult", "lane_change", "max_pass_speed", "truck_handling",
+    "LaneChangeResult", "driver_sensitivity", "lane_change", "max_pass_speed", "truck_handling",
     "run_study", "Table", "load_study", "study",
     "StaticsResult", "ModesResult", "StateSpace", "statics", "modes", "linearize", "read_mtx",
 ]

@@ -36,12 +36,14 @@ class LaneChangeResult:
 
 
 def lane_change(file, speed_kmh=None, frame=None, dt=None, out_dir=None, stop_on_failure=False,
-                stop_distance=None, run_up_time=None):
+                stop_distance=None, run_up_time=None, driver=None):
     """Runs the lane-change test of `file` at speed_kmh [km/h] with a 'rigid'
     or 'elastic' frame (None: as the file says). With out_dir, results.csv
-    and summary.json are written there and read back into .results."""
+    and summary.json are written there and read back into .results.
+    `driver`: {key: value} of the file's driver section's numeric keys in
+    its units (e.g. {"reaction_delay": 0.15}), set after the file is read."""
     text = _core.lane_change(os.fspath(file), speed_kmh, frame, dt, os.fspath(out_dir) if out_dir else "",
-                             stop_on_failure, stop_distance, run_up_time)
+                             stop_on_failure, stop_distance, run_up_time, dict(driver or {}))
     metrics = json.loads(text)
     results = read_results(out_dir) if out_dir and os.path.exists(os.path.join(out_dir, "results.csv")) else None
     return LaneChangeResult(metrics, results)
@@ -64,8 +66,20 @@ def truck_handling(file, test="step-steer", speed_kmh=None, steer_deg=None, fram
     return LaneChangeResult(metrics, results)
 
 
-def max_pass_speed(file, low, high, tol=0.5, frame=None):
+def max_pass_speed(file, low, high, tol=0.5, frame=None, driver=None):
     """Highest entry speed [km/h] in [low, high] at which the test is passed
-    (bisection to tol km/h). Returns None if even `low` fails."""
-    v, low_ok = _core.max_pass_speed(os.fspath(file), low, high, tol, frame)
+    (bisection to tol km/h). Returns None if even `low` fails. `driver` as
+    in lane_change."""
+    v, low_ok = _core.max_pass_speed(os.fspath(file), low, high, tol, frame, dict(driver or {}))
     return v if low_ok else None
+
+
+def driver_sensitivity(file, vary, low=20.0, high=90.0, tol=1.0, frame=None, out_dir=None):
+    """`flexmb truck driver-sensitivity`: the highest passing speed with the
+    file's driver and with each setting of `vary` ({key: [values]}, the
+    driver section's numeric keys in its units) changed one at a time.
+    Returns summary.json as a dict (base_max_pass_speed_kmh, settings,
+    driver_spread_kmh, ...); with out_dir also writes sensitivity.csv."""
+    text = _core.driver_sensitivity(os.fspath(file), {k: [float(x) for x in v] for k, v in vary.items()}, low, high,
+                                    tol, frame, os.fspath(out_dir) if out_dir else "")
+    return json.loads(text)
