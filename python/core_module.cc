@@ -207,11 +207,16 @@ PYBIND11_MODULE(_core, m) {
         {"step_time", &o.step_time},           {"rise_time", &o.rise_time},
         {"hold_time", &o.hold_time},           {"speed_rate_kmh_s", &o.speed_rate_kmh_s},
         {"max_ay", &o.max_ay},                 {"max_speed_kmh", &o.max_speed_kmh},
-        {"decel", &o.decel},                   {"brake_rise_time", &o.brake_rise_time}};
+        {"decel", &o.decel},                   {"brake_rise_time", &o.brake_rise_time},
+        {"frequency", &o.frequency}};
     for (const auto& [key, value] : options) {
       const std::string name = py::str(key);
       if (name == "brake_torque") {
         o.brake_torque = value.cast<double>();
+        continue;
+      }
+      if (name == "periods") {
+        o.periods = value.cast<int>();
         continue;
       }
       bool known = false;

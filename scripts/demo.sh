@@ -31,6 +31,12 @@ for t in step-steer constant-steer brake-in-turn; do
   "$bin" truck handling examples/truck_lane_change/truck.yaml --test "$t" "${speed[@]}" --out "$out/truck_$t"
 done
 /usr/bin/python3 examples/truck_lane_change/plot_handling.py "$out/truck_step-steer"
+echo "== truck handling: sine steer (ISO 14793) at 0.2, 0.5 and 1 Hz, 60 km/h, against the single-track model"
+for fq in 0.2 0.5 1.0; do
+  "$bin" truck handling examples/truck_lane_change/truck.yaml --test sine-steer --speed 60 --ay 0.5 --frequency "$fq" \
+    --out "$out/truck_sine-steer_$fq"
+done
+/usr/bin/python3 examples/truck_lane_change/plot_handling.py "$out"/truck_sine-steer_* --out "$out/truck_sine-steer"
 /usr/bin/python3 examples/truck_lane_change/plot_handling.py "$out/truck_constant-steer"
 echo "== truck with its frame from an FE deck: frame-deck, flexmb reduce, frame: {body, mounts}"
 /usr/bin/python3 examples/truck_lane_change/own_frame.py --out "$out/own_frame" --flexmb "$bin"

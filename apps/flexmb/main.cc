@@ -262,10 +262,11 @@ int main(int argc, char** argv) {
 
   flexmb::vehicle::HandlingOptions handling_opt;
   CLI::App* handling = truck->add_subcommand(
-      "handling", "handling tests: step steer (ISO 14793), constant steering-wheel angle (ISO 14792), braking, braking in a turn");
+      "handling", "handling tests: step steer and sine steer (ISO 14793), constant steering-wheel angle (ISO 14792), braking, braking in a turn");
   handling->add_option("file", handling_opt.file, "lane-change file (YAML): the truck, road_mu, driver gains, solver")
       ->required();
-  handling->add_option("--test", handling_opt.test, "step-steer (default), constant-steer, braking or brake-in-turn");
+  handling->add_option("--test", handling_opt.test,
+                       "step-steer (default), sine-steer, constant-steer, braking or brake-in-turn");
   handling->add_option("--out,-o", handling_opt.out_dir, "output directory (results.csv, summary.json)");
   handling->add_option("--speed", handling_opt.speed_kmh,
                        "speed [km/h] (step steer; default: the file's entry speed), start speed (constant steer; 10)");
@@ -275,6 +276,8 @@ int main(int argc, char** argv) {
   handling->add_option("--radius", handling_opt.radius, "constant steer: kinematic radius of the default angle [m] (50)");
   handling->add_option("--rise-time", handling_opt.rise_time, "step steer: ramp of the steering input [s] (0.15)");
   handling->add_option("--hold", handling_opt.hold_time, "step steer: time after the step [s] (6)");
+  handling->add_option("--frequency", handling_opt.frequency, "sine steer: input frequency [Hz] (0.5)");
+  handling->add_option("--periods", handling_opt.periods, "sine steer: periods of the input, the first not fitted (4)");
   handling->add_option("--speed-rate", handling_opt.speed_rate_kmh_s, "constant steer: speed rise [km/h per s] (1)");
   handling->add_option("--max-ay", handling_opt.max_ay, "constant steer: end at this lateral acceleration [m/s^2] (3)");
   handling->add_option("--max-speed", handling_opt.max_speed_kmh, "constant steer: or at this speed [km/h] (90)");

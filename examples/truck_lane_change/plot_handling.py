@@ -3,7 +3,10 @@
 
 Usage: /usr/bin/python3 plot_handling.py RUN_DIR [RUN_DIR ...] [--out DIR]
 step-steer: step_response.png (steering-wheel angle, yaw rate, lateral
-acceleration and roll over time); constant-steer: understeer.png (steering
+acceleration and roll over time); sine-steer: sine_response.png (the same)
+and frequency_response.png (gain and phase lag of the yaw rate and lateral
+acceleration against frequency, one point per run, beside the single-track
+model's); constant-steer: understeer.png (steering
 angle less the kinematic angle L / R, at the steering wheel and at the road
 wheels, against lateral acceleration, with the single-track line) and
 roll_gradient.png (roll and side slip against lateral acceleration).
@@ -34,7 +37,7 @@ def load(run):
     return label, {k: [float(r[k]) for r in rows] for k in rows[0]}, summary
 
 
-def step_steer(runs, out):
+def step_steer(runs, out, name="step_response.png"):
     fig, axes = plt.subplots(4, 1, figsize=(7, 9), sharex=True)
     keys = [("steering_wheel_angle_deg", "steering wheel [deg]"), ("yaw_rate_degps", "yaw rate [deg/s]"),
             ("lateral_acceleration", "lateral acc. [m/s$^2$]"), ("roll_deg", "roll [deg]")]
@@ -47,7 +50,28 @@ def step_steer(runs, out):
     axes[-1].set_xlabel("time [s]")
     axes[0].legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "step_response.png"), dpi=110)
+    fig.savefig(os.path.join(out, name), dpi=110)
+    plt.close(fig)
+
+
+def sine_steer(runs, out):
+    step_steer(runs, out, "sine_response.png")
+    pts = sorted((s["frequency_hz"], s) for _, _, s in runs)
+    f = [p[0] for p in pts]
+    fig, axes = plt.subplots(2, 2, figsize=(9, 6), sharex=True)
+    for col, (key, unit) in enumerate((("yaw_rate", "1/s"), ("lateral_acceleration", "m/s$^2$"))):
+        for row, (metric, ylabel) in enumerate((("_gain", "gain [%s per rad]" % unit),
+                                                ("_phase_lag_deg", "phase lag [deg]"))):
+            ax = axes[row][col]
+            ax.plot(f, [p[1][key + metric] for p in pts], "o-", label="truck")
+            ax.plot(f, [p[1]["single_track_" + key + metric] for p in pts], "s--", label="single-track model")
+            ax.set_ylabel(ylabel)
+            ax.grid(True, alpha=0.3)
+        axes[0][col].set_title(key.replace("_", " "))
+        axes[1][col].set_xlabel("frequency [Hz]")
+    axes[0][0].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "frequency_response.png"), dpi=110)
     plt.close(fig)
 
 
@@ -79,7 +103,10 @@ def main():
     tests = {s["test"] for _, _, s in runs}
     if len(tests) != 1:
         raise SystemExit("runs of different tests: %s" % ", ".join(sorted(tests)))
-    (step_steer if tests == {"step-steer"} else constant_steer)(runs, out)
+    plot = {"step-steer": step_steer, "sine-steer": sine_steer, "constant-steer": constant_steer}.get(tests.pop())
+    if plot is None:
+        raise SystemExit("no plots for this test (step-steer, sine-steer, constant-steer)")
+    plot(runs, out)
     print("plots in %s" % out)
 
 

@@ -1,5 +1,9 @@
 #include "flexmb/vehicle/single_track.h"
 
+#include <cmath>
+
+#include <Eigen/Dense>
+
 #include "flexmb/vehicle/tire.h"
 
 namespace flexmb::vehicle {
@@ -10,6 +14,34 @@ double SingleTrack::YawRateGain(double v, double g) const {
 
 double SingleTrack::SteeringWheelAngleFor(double ay, double v, double g) const {
   return ay / (v * YawRateGain(v, g));
+}
+
+SingleTrack::Response SingleTrack::FrequencyResponse(double f, double v, double x_point) const {
+  using C = std::complex<double>;
+  const double W = axle_load[0] + axle_load[1];
+  const double a = wheelbase * axle_load[1] / W, b = wheelbase * axle_load[0] / W;
+  const C s(0.0, 2.0 * 3.14159265358979323846 * f);
+  // unknowns (v_y, r, F_f, F_r) for a road-wheel angle of 1 rad
+  Eigen::Matrix<C, 4, 4> A = Eigen::Matrix<C, 4, 4>::Zero();
+  Eigen::Matrix<C, 4, 1> rhs = Eigen::Matrix<C, 4, 1>::Zero();
+  A(0, 0) = mass * s;
+  A(0, 1) = mass * v;
+  A(0, 2) = -1.0;
+  A(0, 3) = -1.0;
+  A(1, 1) = yaw_inertia * s;
+  A(1, 2) = -(a - trail[0]);
+  A(1, 3) = b + trail[1];
+  A(2, 0) = cornering_stiffness[0] / v;
+  A(2, 1) = cornering_stiffness[0] * a / v;
+  A(2, 2) = relaxation_length[0] / v * s + 1.0;
+  rhs(2) = cornering_stiffness[0];
+  A(3, 0) = cornering_stiffness[1] / v;
+  A(3, 1) = -cornering_stiffness[1] * b / v;
+  A(3, 3) = relaxation_length[1] / v * s + 1.0;
+  const Eigen::Matrix<C, 4, 1> x = A.partialPivLu().solve(rhs);
+  // per steering-wheel angle; a_y at the point: centre of mass plus r' times the lever
+  const C r = x(1) / steering_ratio, vy = x(0) / steering_ratio;
+  return {r, s * vy + v * r + s * r * (x_point + a)};
 }
 
 SingleTrack TruckSingleTrack(const TruckData& d, double g) {
@@ -30,6 +62,38 @@ SingleTrack TruckSingleTrack(const TruckData& d, double g) {
   const double arm = d.wheelbase - s.trail[0] + s.trail[1];
   const double front = weight * (b + s.trail[1]) / arm, rear = weight * (a - s.trail[0]) / arm;
   s.understeer_gradient = front / s.cornering_stiffness[0] - rear / s.cornering_stiffness[1];
+
+  // mass and yaw inertia about the centre of mass at x = -a: every part's
+  // own moment plus m (dx^2 + dy^2)
+  s.mass = weight / g;
+  const double xc = -a;
+  double inertia = 0;
+  auto add = [&](double mass, double x, double y, double own) {
+    inertia += own + mass * ((x - xc) * (x - xc) + y * y);
+  };
+  for (const PartData* p : {&d.frame, &d.cab, &d.powertrain, &d.cargo}) add(p->mass, p->cg.x(), p->cg.y(), p->inertia.z());
+  const double patch_f = d.front_tire.relaxation_length > 0 ? d.front_tire.count * d.front_tire.patch_mass : 0.0;
+  const double patch_r = d.rear_tire.relaxation_length > 0 ? d.rear_tire.count * d.rear_tire.patch_mass : 0.0;
+  add(d.front_axle.mass + (d.front.extra_arm_height > 0 ? kAxleHubMass : 0.0), 0.0, 0.0, d.front_axle.inertia.z());
+  add(d.rear_axle.mass + (d.rear.extra_arm_height > 0 ? kAxleHubMass : 0.0), -d.wheelbase, 0.0, d.rear_axle.inertia.z());
+  for (double side : {1.0, -1.0}) {
+    add(d.front_wheel.mass + patch_f, 0.0, side * 0.5 * d.front_track, d.front_wheel.inertia.z());
+    add(d.knuckle.mass, 0.0, side * (0.5 * d.front_track - 0.5 * d.kingpin_offset), d.knuckle.inertia.z());
+    add(d.rear_wheel.mass + patch_r, -d.wheelbase, side * 0.5 * d.rear_track, d.rear_wheel.inertia.z());
+  }
+  add(d.arm.mass, 0.5 * d.front.arm_length, 0.0, 0.0);
+  add(d.arm.mass, -d.wheelbase + 0.5 * d.rear.arm_length, 0.0, 0.0);
+  if (d.steering_linkage) add(d.pitman_arm_mass, d.drag_link_length, 0.0, 0.0);
+  if (d.steering_linkage && d.steering_column)
+    add(d.column_mass, d.drag_link_length - 0.5 * d.column_length * std::sin(d.column_inclination), 0.0, 0.0);
+  s.yaw_inertia = inertia;
+  // relaxation length at the static load: C(F_z) / k with k = C(F_z0) / sigma_0
+  for (int i = 0; i < 2; ++i) {
+    const TireData& td = i == 0 ? d.front_tire : d.rear_tire;
+    const Tire tire("reference", td, 1.0);
+    s.relaxation_length[i] =
+        td.relaxation_length * tire.CorneringStiffness(0.5 * w[i] / td.count) / tire.CorneringStiffness(td.nominal_load);
+  }
   return s;
 }
 

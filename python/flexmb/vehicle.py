@@ -52,10 +52,11 @@ def lane_change(file, speed_kmh=None, frame=None, dt=None, out_dir=None, stop_on
 def truck_handling(file, test="step-steer", speed_kmh=None, steer_deg=None, frame=None, dt=None, out_dir=None,
                    **options):
     """Runs the handling test `test` (step-steer, constant-steer, braking,
-    brake-in-turn) of the truck of lane-change file `file`; `options` are the
-    other settings of `flexmb truck handling` by their HandlingOptions names
-    (target_ay, radius, rise_time, hold_time, speed_rate_kmh_s, max_ay,
-    max_speed_kmh, brake_torque, decel, brake_rise_time). Returns a
+    brake-in-turn, sine-steer) of the truck of lane-change file `file`;
+    `options` are the other settings of `flexmb truck handling` by their
+    HandlingOptions names (target_ay, radius, rise_time, hold_time,
+    frequency, periods, speed_rate_kmh_s, max_ay, max_speed_kmh,
+    brake_torque, decel, brake_rise_time). Returns a
     LaneChangeResult-like result: .metrics (summary.json), .results (with
     out_dir), .completed."""
     text = _core.truck_handling(os.fspath(file), test, os.fspath(out_dir) if out_dir else "", speed_kmh, steer_deg,

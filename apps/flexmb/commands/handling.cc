@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <chrono>
+#include <complex>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <memory>
 #include <numbers>
+
+#include <Eigen/Dense>
 
 #include "apps/flexmb/commands/analysis_support.h"
 #include "apps/flexmb/commands/lane_change.h"
@@ -118,6 +121,33 @@ StepResponse Respond(const std::vector<Row>& rows, double Row::*x, double t_ref)
   return s;
 }
 
+// phasor c1 + i c2 of the least-squares fit y = c0 + c1 sin(w t) + c2 cos(w t)
+// over the rows with t in [t0, t1] (w t from the input's start t_in), and
+// the fit's rms residual relative to the amplitude
+std::complex<double> SinePhasor(const std::vector<Row>& rows, double Row::*y, double t_in, double f, double t0,
+                                double t1, double* misfit) {
+  const double w = 2.0 * std::numbers::pi * f;
+  Eigen::Matrix3d N = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d b = Eigen::Vector3d::Zero();
+  for (const Row& r : rows) {
+    if (r.t < t0 - 1e-9 || r.t > t1 + 1e-9) continue;
+    const Eigen::Vector3d a(1.0, std::sin(w * (r.t - t_in)), std::cos(w * (r.t - t_in)));
+    N += a * a.transpose();
+    b += a * (r.*y);
+  }
+  const Eigen::Vector3d c = N.ldlt().solve(b);
+  double sq = 0;
+  int n = 0;
+  for (const Row& r : rows) {
+    if (r.t < t0 - 1e-9 || r.t > t1 + 1e-9) continue;
+    const double e = r.*y - (c(0) + c(1) * std::sin(w * (r.t - t_in)) + c(2) * std::cos(w * (r.t - t_in)));
+    sq += e * e, ++n;
+  }
+  const double amp = std::hypot(c(1), c(2));
+  if (misfit) *misfit = n > 0 && amp > 0 ? std::sqrt(sq / n) / amp : std::numeric_limits<double>::quiet_NaN();
+  return {c(1), c(2)};
+}
+
 struct HandlingEnd {};
 
 }  // namespace handling_cc
@@ -140,10 +170,15 @@ std::string HandlingJson(const HandlingResult& r) {
 
 HandlingResult RunHandlingTest(const HandlingOptions& opt) {
   using namespace handling_cc;
-  if (opt.test != "step-steer" && opt.test != "constant-steer" && opt.test != "braking" && opt.test != "brake-in-turn")
-    Fail(opt, "--test", "must be step-steer, constant-steer, braking or brake-in-turn, got '" + opt.test + "'");
+  if (opt.test != "step-steer" && opt.test != "sine-steer" && opt.test != "constant-steer" && opt.test != "braking" &&
+      opt.test != "brake-in-turn")
+    Fail(opt, "--test",
+         "must be step-steer, sine-steer, constant-steer, braking or brake-in-turn, got '" + opt.test + "'");
+  const bool sine = opt.test == "sine-steer";
   const bool step = opt.test == "step-steer", circle = opt.test == "constant-steer";
-  const bool braking = !step && !circle, in_turn = opt.test == "brake-in-turn";
+  const bool braking = !step && !circle && !sine, in_turn = opt.test == "brake-in-turn";
+  if (sine && (!(opt.frequency > 0) || !std::isfinite(opt.frequency) || opt.frequency > 5.0 || opt.periods < 2))
+    Fail(opt, "--frequency/--periods", "need a frequency in (0, 5] Hz and at least 2 periods");
   TruckFileSettings f = LoadTruckFileSettings(opt.file);
   const std::string frame = opt.frame.value_or(f.frame);
   if (frame != "rigid" && frame != "elastic") Fail(opt, "--frame", "must be rigid or elastic, got '" + frame + "'");
@@ -174,6 +209,7 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
     delta_sw = *opt.steer_deg / kDeg;
   } else {
     delta_sw = circle ? ref.steering_ratio * ref.wheelbase / opt.radius : ref.SteeringWheelAngleFor(opt.target_ay, v0, g);
+    // sine steer: the amplitude whose steady-state lateral acceleration is target_ay
   }
   if (!opt.out_dir.empty()) {
     std::error_code ec;
@@ -212,12 +248,20 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
   // braking: from the step time (straight), 4 s after the turn-in (in a turn)
   const double t_speed = opt.step_time + 4.0;
   const double t_brake = in_turn ? opt.step_time + 4.0 : opt.step_time;
-  const double t_end = step     ? opt.step_time + opt.rise_time + opt.hold_time
+  const double t_sine_end = opt.step_time + opt.periods / opt.frequency;
+  const double t_end = sine     ? t_sine_end
+                       : step   ? opt.step_time + opt.rise_time + opt.hold_time
                        : circle ? t_speed + (opt.max_speed_kmh / 3.6 - v0) / (opt.speed_rate_kmh_s / 3.6) + 5.0
                                 : t_brake + 3.0 * v0 / opt.decel + 10.0;
   const double ramp = step ? opt.rise_time : 1.0;
-  auto steering = [&](double t) { return delta_sw * std::clamp((t - opt.step_time) / ramp, 0.0, 1.0); };
-  auto target_speed = [&](double t) { return step ? v0 : v0 + opt.speed_rate_kmh_s / 3.6 * std::max(0.0, t - t_speed); };
+  auto steering = [&](double t) {
+    if (sine)
+      return t < opt.step_time ? 0.0 : delta_sw * std::sin(2.0 * std::numbers::pi * opt.frequency * (t - opt.step_time));
+    return delta_sw * std::clamp((t - opt.step_time) / ramp, 0.0, 1.0);
+  };
+  auto target_speed = [&](double t) {
+    return step || sine ? v0 : v0 + opt.speed_rate_kmh_s / 3.6 * std::max(0.0, t - t_speed);
+  };
 
   HandlingResult r;
   std::vector<Row> rows;
@@ -340,6 +384,39 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
     add("lateral_acceleration_peak_response_time", ay.peak_time);
     add("lateral_acceleration_overshoot", ay.overshoot);
   }
+  if (sine && r.completed) {
+    // the periods after the first (the start's transient) at the input frequency
+    const double t0 = opt.step_time + 1.0 / opt.frequency, t1 = t_sine_end;
+    double misfit_sw = 0, misfit_r = 0, misfit_ay = 0;
+    const std::complex<double> in = SinePhasor(rows, &Row::delta_sw, opt.step_time, opt.frequency, t0, t1, &misfit_sw);
+    const std::complex<double> hr =
+        SinePhasor(rows, &Row::yaw_rate, opt.step_time, opt.frequency, t0, t1, &misfit_r) / in;
+    const std::complex<double> ha = SinePhasor(rows, &Row::ay, opt.step_time, opt.frequency, t0, t1, &misfit_ay) / in;
+    const std::complex<double> hroll = SinePhasor(rows, &Row::roll, opt.step_time, opt.frequency, t0, t1, nullptr) / in;
+    const SingleTrack::Response st = ref.FrequencyResponse(opt.frequency, v0, f.truck.frame.cg.x());
+    // phase lag in (-180, 180] deg, time lag at the input frequency
+    auto lag = [](std::complex<double> h) { return -std::arg(h) * kDeg; };
+    const double period = 1.0 / opt.frequency;
+    add("speed_kmh", v0 * 3.6);
+    add("frequency_hz", opt.frequency);
+    add("fitted_periods", opt.periods - 1.0);
+    add("yaw_rate_gain", std::abs(hr));
+    add("yaw_rate_phase_lag_deg", lag(hr));
+    add("yaw_rate_time_lag", lag(hr) / 360.0 * period);
+    add("lateral_acceleration_gain", std::abs(ha));
+    add("lateral_acceleration_phase_lag_deg", lag(ha));
+    add("lateral_acceleration_time_lag", lag(ha) / 360.0 * period);
+    add("roll_gain", std::abs(hroll));
+    add("roll_phase_lag_deg", lag(hroll));
+    add("single_track_yaw_rate_gain", std::abs(st.yaw_rate));
+    add("single_track_yaw_rate_phase_lag_deg", lag(st.yaw_rate));
+    add("single_track_lateral_acceleration_gain", std::abs(st.lateral_acceleration));
+    add("single_track_lateral_acceleration_phase_lag_deg", lag(st.lateral_acceleration));
+    add("single_track_steady_yaw_rate_gain", ref.YawRateGain(v0, g));
+    add("single_track_yaw_inertia", ref.yaw_inertia);
+    add("yaw_rate_fit_residual", misfit_r);
+    add("lateral_acceleration_fit_residual", misfit_ay);
+  }
   if (braking && !rows.empty()) {
     add("brake_torque", brake_torque);
     add("brake_onset_time", t_brake);
@@ -405,6 +482,14 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
       std::fprintf(opt.info, "; yaw-rate gain %.4f 1/s (single track %.4f), response time %.3f s, overshoot %.1f %%",
                    r.Metric("yaw_rate_gain"), r.Metric("single_track_yaw_rate_gain"),
                    r.Metric("yaw_rate_response_time"), 100 * r.Metric("yaw_rate_overshoot"));
+    if (sine && r.completed)
+      std::fprintf(opt.info, "; %.2f Hz: yaw-rate gain %.4f 1/s, phase lag %.1f deg (single track %.4f, %.1f deg), "
+                             "lateral acceleration gain %.3f m/s^2/rad, phase lag %.1f deg (single track %.3f, %.1f deg)",
+                   opt.frequency, r.Metric("yaw_rate_gain"), r.Metric("yaw_rate_phase_lag_deg"),
+                   r.Metric("single_track_yaw_rate_gain"), r.Metric("single_track_yaw_rate_phase_lag_deg"),
+                   r.Metric("lateral_acceleration_gain"), r.Metric("lateral_acceleration_phase_lag_deg"),
+                   r.Metric("single_track_lateral_acceleration_gain"),
+                   r.Metric("single_track_lateral_acceleration_phase_lag_deg"));
     if (braking && r.completed)
       std::fprintf(opt.info, "; stopping distance %.1f m from %.1f km/h, mean fully developed deceleration %.2f m/s^2",
                    r.Metric("stopping_distance"), r.Metric("brake_onset_speed_kmh"),

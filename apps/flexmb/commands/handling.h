@@ -13,6 +13,11 @@
 ///  - braking (straight-line braking, ECE R13 type-0 measures): a brake
 ///    torque step at speed; stopping distance, mean fully developed
 ///    deceleration, pitch, dynamic axle loads, path and heading deviation;
+///  - sine-steer (ISO 14793 / ISO 7401, sinusoidal input): a continuous
+///    sinusoidal steering-wheel angle at constant speed; gain and phase lag
+///    of yaw rate and lateral acceleration at the input frequency (least
+///    squares fit over the periods after the first), beside the dynamic
+///    single-track model's;
 ///  - brake-in-turn (after ISO 14794): braking from a steady turn at a held
 ///    steering-wheel angle; the yaw-rate and lateral-acceleration ratios and
 ///    the heading deviation 1 s after the brake onset, besides the braking
@@ -32,18 +37,21 @@ namespace flexmb::vehicle {
 struct HandlingOptions {
   std::string file;                   ///< lane-change file (the truck, road_mu, driver gains, solver)
   std::string out_dir;                ///< results.csv and summary.json ("": none)
-  std::string test = "step-steer";    ///< "step-steer", "constant-steer", "braking" or "brake-in-turn"
+  std::string test = "step-steer";    ///< "step-steer", "sine-steer", "constant-steer", "braking" or "brake-in-turn"
   /// Step steer: the speed; constant steer: the start speed [km/h]
   /// (default: the file's entry speed; constant steer: 10).
   std::optional<double> speed_kmh;
   /// Steering-wheel angle [deg] (default: the single-track model's angle
-  /// for `target_ay` at the speed (step steer), for `radius` (constant steer)).
+  /// for `target_ay` at the speed (step steer; sine steer: the amplitude),
+  /// for `radius` (constant steer)).
   std::optional<double> steer_deg;
   double target_ay = 2.0;             ///< step steer: default angle's steady lateral acceleration [m/s^2]
   double radius = 50.0;               ///< constant steer: default angle's kinematic radius L / delta [m]
   double step_time = 2.0;             ///< start of the steering input [s] (after the start settles)
   double rise_time = 0.15;            ///< step steer: ramp of the steering input [s]
   double hold_time = 6.0;             ///< step steer: time after the step [s]
+  double frequency = 0.5;             ///< sine steer: input frequency [Hz]
+  int periods = 4;                    ///< sine steer: periods of the input (the first is not fitted), >= 2
   double speed_rate_kmh_s = 1.0;      ///< constant steer: rise of the speed [km/h per s]
   double max_ay = 3.0;                ///< constant steer: end at this lateral acceleration [m/s^2]
   double max_speed_kmh = 90.0;        ///< constant steer: or at this speed [km/h]
