@@ -23,6 +23,11 @@ for frame in rigid elastic; do
   cat "$out/truck_$frame/summary.json"; echo
 done
 /usr/bin/python3 examples/truck_lane_change/plot.py "$out/truck_rigid" "$out/truck_elastic" --out "$out/truck_plots"
+if command -v pvbatch > /dev/null && command -v xvfb-run > /dev/null; then
+  echo "== the animation in ParaView: the camera follows the truck, the frame seen through the cargo box"
+  xvfb-run -a pvbatch examples/truck_lane_change/view_animation.py "$out/truck_elastic/animation/anim.pvd" \
+    --png "$out/truck_elastic/views" --stride 10 || echo "(ParaView render skipped: no virtual display)"
+fi
 echo "truck demo: $(( ($(date +%s%N) - start) / 1000000 )) ms wall time (two runs, the frame's reduction and plots)"
 echo "== truck handling: step steer at 60 km/h (ISO 14793), constant steering-wheel angle (ISO 14792), braking in a turn"
 for t in step-steer constant-steer brake-in-turn; do
@@ -60,10 +65,10 @@ sed -n 1,3p "$crane/reduce.txt"
 cat "$crane/plots/crane_metrics.json"; echo
 echo "== crane: the hoisting rope two ways, massless and an ANCF rope of changing length, hoisting during the slew"
 /usr/bin/python3 examples/crane/rope_methods.py --flexmb "$bin" --body "$crane/boom.h5" --out "$crane/rope_methods" --animation
-echo "results in $out: truck_step-steer/, truck_constant-steer/, truck_brake-in-turn/ (handling tests: summary.json"
+echo "results in $out: truck_step-steer/, truck_sine-steer/ (frequency_response.png), truck_constant-steer/, truck_brake-in-turn/ (handling tests: summary.json"
 echo "with the single-track model beside the truck, PNGs), own_frame/ (frame.bdf, frame.h5, truck_own_frame.yaml) and"
 echo "truck_own_frame/ (the lane change with that frame), truck_rigid/, truck_elastic/ (results.csv, summary.json; frame.h5, the reduced"
-echo "frame; animation/anim.pvd, the whole truck with the deformed, stress-coloured frame for ParaView), truck_plots/ (PNG: rigid against elastic, frame deflection and stress), and the examples'"
+echo "frame; animation/anim.pvd, the whole truck with the deformed, stress-coloured frame for ParaView; views/, renders following the truck), truck_plots/ (PNG: rigid against elastic, frame deflection and stress), and the examples'"
 echo "folders (results.csv, summary.json, anim.pvd for ParaView); crane/run (results.csv, anim.pvd: boom deformed 20x and stress-coloured, platform, drum, luffing cylinder, load)"
 echo "and crane/plots (crane_metrics.json: phi_2, swing, slewing torque, winch torque, cylinder force, boom deflection and stress; PNGs)"
 echo "and crane/rope_methods (rope_methods.md; ancf/anim.pvd: the rope as a line of changing length, hook, load, boom)"

@@ -31,6 +31,10 @@ PACKAGES=(
   # the distributed reduction (flexmb reduce --backend petsc under mpirun;
   # flexmb/reduction/petsc/): PETSc with MUMPS, SLEPc, Open MPI
   petsc-dev slepc-dev libmumps-dev openmpi-bin libopenmpi-dev
+  # ParaView opens what we write (pvbatch in python/tests/test_paraview.py) and
+  # renders the truck's follow-camera views under a virtual X server
+  # (examples/truck_lane_change/view_animation.py)
+  python3-paraview xvfb xauth
 )
 
 missing=()
