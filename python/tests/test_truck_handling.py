@@ -169,7 +169,10 @@ def test_example_truck_compliance_steer_and_errors(cli, source_dir, tmp_path):
     plot = os.path.join(source_dir, "examples", "truck_lane_change", "plot_handling.py")
     subprocess.run(["/usr/bin/python3", plot, str(tmp_path / "cs")], check=True, capture_output=True)
     assert (tmp_path / "cs" / "understeer.png").stat().st_size > 10000
-    for args, message in ((["--test", "slalom"], "--test must be step-steer, constant-steer, braking or brake-in-turn"),
+    for args, message in ((["--test", "slalom"],
+                           "--test must be step-steer, sine-steer, constant-steer, braking or brake-in-turn"),
+                          (["--test", "sine-steer", "--frequency", "0"], "need a frequency in (0, 5] Hz"),
+                          (["--test", "sine-steer", "--periods", "1"], "at least 2 periods"),
                           (["--test", "braking", "--steer", "10"], "--steer does not apply to straight-line braking"),
                           (["--speed", "0"], "--speed must be at least"),
                           (["--steer", "0"], "--steer must be a nonzero angle")):

@@ -113,11 +113,12 @@ TEST(Statics, FreeBodyIsNamed) {
 // sideways (kept in place by the inertia hold) unless a load pushes it
 // there; with the hold switched off the sideways freedom is a free motion,
 // named.
-void StaticsBlockOnGround(Model& m, double mu) {
+void StaticsBlockOnGround(Model& m, double mu, const Vec3& v_WB = Vec3::Zero()) {
   RigidBodyData d;
   d.mass = 400.0;
   d.inertia_C = Mat3::Identity() * 50.0;
   d.p_WB = Vec3(0.3, -0.2, 0.2499);
+  d.v_WB = v_WB;
   const int b = m.AddBody(std::make_unique<RigidBody>("block", d));
   PlaneContactLaw law;
   law.stiffness = 2e6;
@@ -225,24 +226,7 @@ TEST(Statics, HoldAlwaysReachesTheSameEquilibriumAndNamesACreep) {
 TEST(Statics, SettleKeepsTheVelocitiesWhenAsked) {
   for (const bool keep : {true, false}) {
     Model moving;
-    RigidBodyData d;
-    d.mass = 400.0;
-    d.inertia_C = Mat3::Identity() * 50.0;
-    d.p_WB = Vec3(0.3, -0.2, 0.2499);
-    d.v_WB = Vec3(2.0, 0.0, 0.0);
-    const int b = moving.AddBody(std::make_unique<RigidBody>("block", d));
-    PlaneContactLaw law;
-    law.stiffness = 2e6;
-    law.damping = 1e4;
-    law.friction = 0.5;
-    int n = 0;
-    for (const double x : {-0.5, 0.5})
-      for (const double y : {-0.5, 0.5}) {
-        const std::string name = "c" + std::to_string(n++);
-        moving.AddForce(std::make_unique<PlaneContact>(name, law),
-                        moving.AddMarker(b, name, Vec3(x, y, -0.25), Mat3::Identity()), -1);
-      }
-    moving.Finalize();
+    StaticsBlockOnGround(moving, 0.5, Vec3(2.0, 0.0, 0.0));
     Simulator sim(moving);
     sim.Initialize();
     StaticsSettings held;
