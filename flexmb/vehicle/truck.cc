@@ -64,10 +64,56 @@ int AddPart(Model& m, const std::string& name, const PartData& p, const Vec3& cg
   return m.AddBody(std::make_unique<RigidBody>(name, b));
 }
 
-void ReadPart(const YAML::Node& n, YamlContext& ctx, const char* key, PartData& p, MountData* mounts = nullptr) {
-  const YAML::Node& node = n[key];
+// The map under the one top-level key `kind` of the vehicle data file
+// `path` (a tire, a suspension, a part, ...); errors through `ctx` (made for
+// `path`) name the file and line; `what` names the file's kind in read
+// errors, `entity` the map in the others.
+YAML::Node LoadDataFileMap(const std::string& path, const char* kind, const std::string& what, const std::string& entity,
+                           YamlContext& ctx) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::BadFile&) {
+    throw InputError("cannot open the " + what + " file", {path, 0, ""});
+  } catch (const YAML::Exception& e) {
+    throw InputError("cannot read the " + what + " file: " + e.what(), {path, e.mark.line >= 0 ? e.mark.line + 1 : 0, ""});
+  }
+  ctx.SetEntity(entity);
+  const std::string expected = std::string("expected a top-level '") + kind + "' map";
+  if (!root.IsMap()) ctx.Fail(root, expected);
+  const YAML::Node t = ctx.MapChild(root, kind);
+  if (!t) ctx.Fail(root, expected);
+  ctx.CheckKeys(root, {kind, "note"});
+  return t;
+}
+
+// A subsystem of the truck map `n` under `key`: written inline, or the name
+// of a data file (relative to the truck file's folder `dir`) whose top-level
+// `kind` map holds it, so that several trucks share one cab, suspension or
+// steering file. Returns the map and, in `where`, the context its errors go
+// through (a new one for a file, kept alive by `file_ctx`). An absent key
+// gives an undefined node.
+YAML::Node Subsystem(const YAML::Node& n, YamlContext& ctx, const char* key, const char* kind, const std::string& dir,
+                     YamlContext*& where, std::unique_ptr<YamlContext>& file_ctx) {
+  where = &ctx;
+  const YAML::Node node = n[key];
+  if (!node || !node.IsScalar()) return node;
+  const std::string path = (std::filesystem::path(dir) / node.Scalar()).string();
+  if (!std::filesystem::is_regular_file(path))
+    ctx.Fail(node, std::string("'") + key + "': no " + kind + " file '" + path + "'");
+  file_ctx = std::make_unique<YamlContext>(path);
+  where = file_ctx.get();
+  return LoadDataFileMap(path, kind, kind, std::string(kind) + " '" + key + "'", *file_ctx);
+}
+
+void ReadPart(const YAML::Node& truck, YamlContext& truck_ctx, const char* key, const std::string& dir, PartData& p,
+              MountData* mounts = nullptr) {
+  YamlContext* where = nullptr;
+  std::unique_ptr<YamlContext> file_ctx;
+  const YAML::Node node = Subsystem(truck, truck_ctx, key, "part", dir, where, file_ctx);
+  YamlContext& ctx = *where;
   ctx.SetEntity(std::string("truck part '") + key + "'");
-  if (!node) ctx.Fail(n, std::string("missing part '") + key + "'");
+  if (!node) ctx.Fail(truck, std::string("missing part '") + key + "'");
   if (mounts) {
     ctx.CheckKeys(node, {"mass", "cg", "inertia", "note", "mount_x", "mount_stiffness", "mount_damping"});
     const YAML::Node mx = node["mount_x"];
@@ -87,10 +133,14 @@ void ReadPart(const YAML::Node& n, YamlContext& ctx, const char* key, PartData& 
   if (p.inertia.minCoeff() <= 0) ctx.Fail(node["inertia"], "principal inertias must be positive");
 }
 
-void ReadSuspension(const YAML::Node& n, YamlContext& ctx, const char* key, SuspensionData& s) {
-  const YAML::Node& node = n[key];
+void ReadSuspension(const YAML::Node& truck, YamlContext& truck_ctx, const char* key, const std::string& dir,
+                    SuspensionData& s) {
+  YamlContext* where = nullptr;
+  std::unique_ptr<YamlContext> file_ctx;
+  const YAML::Node node = Subsystem(truck, truck_ctx, key, "suspension", dir, where, file_ctx);
+  YamlContext& ctx = *where;
   ctx.SetEntity(std::string("suspension '") + key + "'");
-  if (!node) ctx.Fail(n, std::string("missing suspension '") + key + "'");
+  if (!node) ctx.Fail(truck, std::string("missing suspension '") + key + "'");
   ctx.CheckKeys(node, {"spring_stiffness", "spring_damping", "spring_half_spacing", "spring_length", "arm_length",
                        "stabilizer_stiffness", "stabilizer_damping", "extra_arm_height"});
   s.spring_stiffness = ctx.Positive(node, "spring_stiffness");
@@ -102,6 +152,54 @@ void ReadSuspension(const YAML::Node& n, YamlContext& ctx, const char* key, Susp
   s.stabilizer_damping = ctx.Double(node, "stabilizer_damping", 0.0);
   s.extra_arm_height = ctx.Double(node, "extra_arm_height", 0.0);
   if (!(s.extra_arm_height >= 0)) ctx.Fail(node, "extra_arm_height must be >= 0");
+}
+
+// the steering of the truck map `n` (inline or a steering file: Subsystem)
+void ReadSteering(const YAML::Node& n, YamlContext& truck_ctx, const std::string& dir, TruckData& d) {
+  YamlContext* where = nullptr;
+  std::unique_ptr<YamlContext> file_ctx;
+  const YAML::Node st = Subsystem(n, truck_ctx, "steering", "steering", dir, where, file_ctx);
+  YamlContext& ctx = *where;
+  ctx.SetEntity("steering");
+  if (!st) ctx.Fail(n, "missing 'steering'");
+  ctx.CheckKeys(st, {"ratio", "stiffness", "damping", "linkage", "pitman_arm_length", "tie_rod_arm_length", "column",
+                     "column_mass", "column_inertia", "column_length", "column_inclination_deg", "pitman_x",
+                     "steering_arm_height"});
+  d.steering_ratio = ctx.Positive(st, "ratio");
+  d.steering_stiffness = ctx.Positive(st, "stiffness");
+  d.steering_damping = ctx.Double(st, "damping", d.steering_damping);
+  d.steering_linkage = ctx.Bool(st, "linkage", d.steering_linkage);
+  d.pitman_arm_length = ctx.Double(st, "pitman_arm_length", d.pitman_arm_length);
+  d.tie_rod_arm_length = ctx.Double(st, "tie_rod_arm_length", d.tie_rod_arm_length);
+  d.steering_column = ctx.Bool(st, "column", d.steering_column);
+  d.column_mass = ctx.Double(st, "column_mass", d.column_mass);
+  d.column_inertia = ctx.Double(st, "column_inertia", d.column_inertia);
+  d.column_length = ctx.Double(st, "column_length", d.column_length);
+  d.column_inclination = ctx.Double(st, "column_inclination_deg", d.column_inclination * 180.0 / M_PI) * M_PI / 180.0;
+  if (!(d.column_mass > 0) || !(d.column_inertia > 0) || !(d.column_length > 0) ||
+      !(std::abs(d.column_inclination) < 0.5 * M_PI))
+    ctx.Fail(st, "column_mass, column_inertia, column_length must be positive, |column_inclination_deg| < 90");
+  d.drag_link_length = ctx.Double(st, "pitman_x", d.drag_link_length);
+  d.steering_arm_height = ctx.Double(st, "steering_arm_height", d.steering_arm_height);
+  if (!(d.pitman_arm_length > 0) || !(d.tie_rod_arm_length > 0))
+    ctx.Fail(st, "pitman_arm_length and tie_rod_arm_length must be positive");
+  if (!(d.drag_link_length > 0) || !std::isfinite(d.steering_arm_height))
+    ctx.Fail(st, "pitman_x must be positive and steering_arm_height finite");
+}
+
+// the brakes of the truck map `n`, optional (inline or a brakes file: Subsystem)
+void ReadBrakes(const YAML::Node& n, YamlContext& truck_ctx, const std::string& dir, TruckData& d) {
+  YamlContext* where = nullptr;
+  std::unique_ptr<YamlContext> file_ctx;
+  if (const YAML::Node br = Subsystem(n, truck_ctx, "brakes", "brakes", dir, where, file_ctx)) {
+    YamlContext& ctx = *where;
+    ctx.SetEntity("brakes");
+    ctx.CheckKeys(br, {"front_share", "smoothing_spin", "note"});
+    d.brake_front_share = ctx.Double(br, "front_share", d.brake_front_share);
+    d.brake_smoothing_spin = ctx.Double(br, "smoothing_spin", d.brake_smoothing_spin);
+    if (!(d.brake_front_share >= 0 && d.brake_front_share <= 1) || !(d.brake_smoothing_spin > 0))
+      ctx.Fail(br, "front_share must lie in [0, 1] and smoothing_spin be positive");
+  }
 }
 
 // static wheel-centre heights front, rear [m] from the tire deflections
@@ -505,17 +603,8 @@ TireData LoadTireFile(const std::string& path) {
     }
     return tir.data;
   }
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw InputError(std::string("cannot read the tire file: ") + e.what(), {path, 0, ""});
-  }
   YamlContext ctx(path);
-  ctx.SetEntity("tire data");
-  if (!root.IsMap()) ctx.Fail(root, "expected a top-level 'tire' map");
-  const YAML::Node t = ctx.MapChild(root, "tire");
-  if (!t) ctx.Fail(root, "expected a top-level 'tire' map");
+  const YAML::Node t = LoadDataFileMap(path, "tire", "tire", "tire data", ctx);
   try {
     return ReadTireData(t, ctx);
   } catch (const YAML::Exception& e) {
@@ -535,51 +624,19 @@ TruckData ParseTruck(const YAML::Node& n, YamlContext& ctx, const std::string& d
   d.rear_track = ctx.Positive(n, "rear_track");
   d.kingpin_offset = ctx.Double(n, "kingpin_offset", d.kingpin_offset);
   d.gauge_width = ctx.Positive(n, "gauge_width");
-  ReadPart(n, ctx, "cab", d.cab, &d.cab_mounts);
-  ReadPart(n, ctx, "powertrain", d.powertrain, &d.powertrain_mounts);
-  ReadPart(n, ctx, "cargo", d.cargo, &d.cargo_mounts);
-  ReadPart(n, ctx, "front_axle", d.front_axle);
-  ReadPart(n, ctx, "rear_axle", d.rear_axle);
-  ReadPart(n, ctx, "knuckle", d.knuckle);
-  ReadPart(n, ctx, "front_wheel", d.front_wheel);
-  ReadPart(n, ctx, "rear_wheel", d.rear_wheel);
-  ReadPart(n, ctx, "arm", d.arm);
-  ReadSuspension(n, ctx, "front_suspension", d.front);
-  ReadSuspension(n, ctx, "rear_suspension", d.rear);
-  ctx.SetEntity("steering");
-  const YAML::Node st = n["steering"];
-  if (!st) ctx.Fail(n, "missing 'steering'");
-  ctx.CheckKeys(st, {"ratio", "stiffness", "damping", "linkage", "pitman_arm_length", "tie_rod_arm_length", "column",
-                     "column_mass", "column_inertia", "column_length", "column_inclination_deg", "pitman_x",
-                     "steering_arm_height"});
-  d.steering_ratio = ctx.Positive(st, "ratio");
-  d.steering_stiffness = ctx.Positive(st, "stiffness");
-  d.steering_damping = ctx.Double(st, "damping", d.steering_damping);
-  d.steering_linkage = ctx.Bool(st, "linkage", d.steering_linkage);
-  d.pitman_arm_length = ctx.Double(st, "pitman_arm_length", d.pitman_arm_length);
-  d.tie_rod_arm_length = ctx.Double(st, "tie_rod_arm_length", d.tie_rod_arm_length);
-  d.steering_column = ctx.Bool(st, "column", d.steering_column);
-  d.column_mass = ctx.Double(st, "column_mass", d.column_mass);
-  d.column_inertia = ctx.Double(st, "column_inertia", d.column_inertia);
-  d.column_length = ctx.Double(st, "column_length", d.column_length);
-  d.column_inclination = ctx.Double(st, "column_inclination_deg", d.column_inclination * 180.0 / M_PI) * M_PI / 180.0;
-  if (!(d.column_mass > 0) || !(d.column_inertia > 0) || !(d.column_length > 0) ||
-      !(std::abs(d.column_inclination) < 0.5 * M_PI))
-    ctx.Fail(st, "column_mass, column_inertia, column_length must be positive, |column_inclination_deg| < 90");
-  d.drag_link_length = ctx.Double(st, "pitman_x", d.drag_link_length);
-  d.steering_arm_height = ctx.Double(st, "steering_arm_height", d.steering_arm_height);
-  if (!(d.pitman_arm_length > 0) || !(d.tie_rod_arm_length > 0))
-    ctx.Fail(st, "pitman_arm_length and tie_rod_arm_length must be positive");
-  if (!(d.drag_link_length > 0) || !std::isfinite(d.steering_arm_height))
-    ctx.Fail(st, "pitman_x must be positive and steering_arm_height finite");
-  if (const YAML::Node br = n["brakes"]) {
-    ctx.SetEntity("brakes");
-    ctx.CheckKeys(br, {"front_share", "smoothing_spin", "note"});
-    d.brake_front_share = ctx.Double(br, "front_share", d.brake_front_share);
-    d.brake_smoothing_spin = ctx.Double(br, "smoothing_spin", d.brake_smoothing_spin);
-    if (!(d.brake_front_share >= 0 && d.brake_front_share <= 1) || !(d.brake_smoothing_spin > 0))
-      ctx.Fail(br, "front_share must lie in [0, 1] and smoothing_spin be positive");
-  }
+  ReadPart(n, ctx, "cab", dir, d.cab, &d.cab_mounts);
+  ReadPart(n, ctx, "powertrain", dir, d.powertrain, &d.powertrain_mounts);
+  ReadPart(n, ctx, "cargo", dir, d.cargo, &d.cargo_mounts);
+  ReadPart(n, ctx, "front_axle", dir, d.front_axle);
+  ReadPart(n, ctx, "rear_axle", dir, d.rear_axle);
+  ReadPart(n, ctx, "knuckle", dir, d.knuckle);
+  ReadPart(n, ctx, "front_wheel", dir, d.front_wheel);
+  ReadPart(n, ctx, "rear_wheel", dir, d.rear_wheel);
+  ReadPart(n, ctx, "arm", dir, d.arm);
+  ReadSuspension(n, ctx, "front_suspension", dir, d.front);
+  ReadSuspension(n, ctx, "rear_suspension", dir, d.rear);
+  ReadSteering(n, ctx, dir, d);
+  ReadBrakes(n, ctx, dir, d);
   ctx.SetEntity("tires");
   const YAML::Node tires = n["tires"];
   if (!tires) ctx.Fail(n, "missing 'tires'");

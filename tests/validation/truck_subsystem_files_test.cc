@@ -1,0 +1,115 @@
+// Vehicle data files per subsystem (issue 18, the data tier): the truck
+// map's cab, rear suspension, steering and brakes moved into files of their
+// own (each under its top-level kind: part, suspension, steering, brakes)
+// and named in the truck file read back to the same truck as the inline
+// file (reference: examples/truck_lane_change/truck.yaml itself); errors in
+// a subsystem file name that file and line; a missing file names the truck
+// file's line.
+#include <gtest/gtest.h>
+
+#include <yaml-cpp/yaml.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "flexmb/common/error.h"
+#include "truck_harness.h"
+
+namespace flexmb::vehicle::testing {
+namespace truck_subsystem_files_test {
+
+namespace fs = std::filesystem;
+
+// the example's lane-change file with the truck's `moved` keys in files of
+// their own; returns the new lane-change file's path
+std::string SplitTruck(const std::string& dir, const std::vector<std::pair<std::string, std::string>>& moved) {
+  fs::create_directories(dir);
+  const std::string example = std::string(FLEXMB_SOURCE_DIR) + "/examples/truck_lane_change/";
+  YAML::Node root = YAML::LoadFile(example + "truck.yaml");
+  for (const char* tire : {"tire_11r22_5.yaml", "tire_11r22_5_twin.yaml"})
+    fs::copy_file(example + tire, dir + "/" + tire, fs::copy_options::overwrite_existing);
+  for (const auto& [key, kind] : moved) {
+    YAML::Node file;
+    file[kind] = root["truck"][key];
+    std::ofstream(dir + "/" + key + ".yaml") << "# " << key << " of the example truck\n" << YAML::Dump(file) << "\n";
+    root["truck"][key] = key + ".yaml";
+  }
+  const std::string path = dir + "/truck_split.yaml";
+  std::ofstream(path) << YAML::Dump(root) << "\n";
+  return path;
+}
+
+std::string ErrorOf(const std::string& path) {
+  try {
+    LoadLaneChangeTruck(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(TruckSubsystemFiles, SplitFileIsTheSameTruck) {
+  const std::string dir = ::testing::TempDir() + "truck_split";
+  const std::string split = SplitTruck(dir, {{"cab", "part"}, {"rear_suspension", "suspension"},
+                                             {"steering", "steering"}, {"brakes", "brakes"}});
+  const TruckData a = LoadLaneChangeTruck(TruckFile()), b = LoadLaneChangeTruck(split);
+  EXPECT_EQ(b.cab.mass, a.cab.mass);
+  EXPECT_EQ(b.cab.cg, a.cab.cg);
+  EXPECT_EQ(b.cab.inertia, a.cab.inertia);
+  EXPECT_EQ(b.cab_mounts.x, a.cab_mounts.x);
+  EXPECT_EQ(b.cab_mounts.stiffness, a.cab_mounts.stiffness);
+  EXPECT_EQ(b.rear.spring_stiffness, a.rear.spring_stiffness);
+  EXPECT_EQ(b.rear.stabilizer_stiffness, a.rear.stabilizer_stiffness);
+  EXPECT_EQ(b.rear.extra_arm_height, a.rear.extra_arm_height);
+  EXPECT_EQ(b.steering_ratio, a.steering_ratio);
+  EXPECT_EQ(b.steering_stiffness, a.steering_stiffness);
+  EXPECT_EQ(b.column_inclination, a.column_inclination);
+  EXPECT_EQ(b.drag_link_length, a.drag_link_length);
+  EXPECT_EQ(b.brake_front_share, a.brake_front_share);
+  EXPECT_EQ(StaticAxleLoads(b, 9.81), StaticAxleLoads(a, 9.81));
+  // and it runs the same: 20 m of the lane change at 45 km/h
+  LaneChangeOptions o;
+  o.file = TruckFile();
+  o.speed_kmh = 45.0;
+  o.frame = "rigid";
+  o.stop_distance = 20.0;
+  const LaneChangeResult ra = RunLaneChange(o);
+  o.file = split;
+  const LaneChangeResult rb = RunLaneChange(o);
+  EXPECT_EQ(ra.max_lateral_acceleration, rb.max_lateral_acceleration);
+  EXPECT_EQ(ra.min_corridor_margin, rb.min_corridor_margin);
+}
+
+TEST(TruckSubsystemFiles, ErrorsNameTheSubsystemFile) {
+  const std::string dir = ::testing::TempDir() + "truck_split_bad";
+  const std::string split = SplitTruck(dir, {{"front_suspension", "suspension"}});
+  // an unknown key in the suspension file: that file and its line
+  std::string text;
+  {
+    std::ifstream in(dir + "/front_suspension.yaml");
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const size_t at = text.find("spring_damping");
+  ASSERT_NE(at, std::string::npos);
+  std::string bad = text;
+  bad.replace(at, std::string("spring_damping").size(), "spring_dampning");
+  std::ofstream(dir + "/front_suspension.yaml") << bad;
+  std::string e = ErrorOf(split);
+  EXPECT_NE(e.find("front_suspension.yaml:"), std::string::npos) << e;
+  EXPECT_NE(e.find("spring_dampning"), std::string::npos) << e;
+  EXPECT_EQ(e.find("truck_split.yaml"), std::string::npos) << e;
+  // the wrong top-level kind
+  std::ofstream(dir + "/front_suspension.yaml") << "steering:\n  ratio: 20\n";
+  e = ErrorOf(split);
+  EXPECT_NE(e.find("front_suspension.yaml:"), std::string::npos) << e;
+  EXPECT_NE(e.find("'suspension'"), std::string::npos) << e;
+  // a file that is not there: the truck file's line
+  fs::remove(dir + "/front_suspension.yaml");
+  e = ErrorOf(split);
+  EXPECT_NE(e.find("truck_split.yaml:"), std::string::npos) << e;
+  EXPECT_NE(e.find("no suspension file"), std::string::npos) << e;
+}
+
+}  // namespace truck_subsystem_files_test
+}  // namespace flexmb::vehicle::testing
