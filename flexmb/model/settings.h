@@ -40,6 +40,15 @@ struct SolverSettings {
   double assembly_tol = 1e-10; ///< position assembly tolerance on ||Phi|| [m]
   double redundancy_tol = 1e-8; ///< relative rank tolerance for redundant constraints
   Analysis analysis = Analysis::kDynamics;  ///< what `flexmb run` does (solver.analysis)
+  /// Static equilibrium (analysis statics / statics_then_dynamics, `flexmb
+  /// statics`, `modes --at statics`): hold the directions without stiffness
+  /// by the damping from the first iteration (solver.statics_hold: always;
+  /// StaticsSettings::hold_always), as a vehicle on its tires needs; false
+  /// (singular, the default): only once the tangent is found singular.
+  bool statics_hold_always = false;
+  /// Force residual of the static equilibrium relative to the largest
+  /// applied force (solver.statics_residual_tol), > 0.
+  double statics_residual_tol = 1e-8;
 };
 
 /// A broken rule of the solver settings: the model-file key it is about and

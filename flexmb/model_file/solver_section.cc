@@ -9,7 +9,8 @@ void ReadSolverSection(const YAML::Node& node, YamlContext& ctx, SolverSettings&
                        std::initializer_list<const char*> extra) {
   std::vector<const char*> keys = {"t_end", "dt", "dt_min", "dt_max", "rho_inf", "adaptive", "rtol", "atol",
                                    "newton_tol", "max_newton", "geometric_stiffness", "assembly_tol",
-                                   "redundancy_tol", "jacobian_reuse", "jacobian_reuse_rate", "analysis"};
+                                   "redundancy_tol", "jacobian_reuse", "jacobian_reuse_rate", "analysis",
+                                   "statics_hold", "statics_residual_tol"};
   keys.insert(keys.end(), extra.begin(), extra.end());
   ctx.CheckKeys(node, keys);
   s.t_end = ctx.Double(node, "t_end", s.t_end);
@@ -27,6 +28,15 @@ void ReadSolverSection(const YAML::Node& node, YamlContext& ctx, SolverSettings&
   s.jacobian_reuse_rate = ctx.Double(node, "jacobian_reuse_rate", s.jacobian_reuse_rate);
   s.assembly_tol = ctx.Double(node, "assembly_tol", s.assembly_tol);
   s.redundancy_tol = ctx.Double(node, "redundancy_tol", s.redundancy_tol);
+  if (node["statics_hold"]) {
+    const std::string h = ctx.String(node, "statics_hold");
+    if (h != "singular" && h != "always")
+      ctx.Fail(node["statics_hold"], "'statics_hold' must be singular (the default) or always, got " + h);
+    s.statics_hold_always = h == "always";
+  }
+  s.statics_residual_tol = ctx.Double(node, "statics_residual_tol", s.statics_residual_tol);
+  if (!(s.statics_residual_tol > 0) || !(s.statics_residual_tol < 1))
+    ctx.Fail(node["statics_residual_tol"], "'statics_residual_tol' must lie in (0, 1)");
   if (node["analysis"]) {
     const std::string a = ctx.String(node, "analysis");
     if (a == "dynamics") s.analysis = Analysis::kDynamics;

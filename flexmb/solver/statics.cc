@@ -178,8 +178,8 @@ class StaticsSolver {
   // Newton iterations at load factor mu from the current iterate
   StaticsNewton Newton(double mu, int& used) {
     SparseLu& lu = lu_;
-    double last_step = INFINITY, last_residual = INFINITY;
-    bool inertia_held = false;
+    double last_step = INFINITY;
+    bool inertia_held = false, small_before = false;
     for (int it = 0;; ++it) {
       const double norm = Residual(mu, true);
       if (!std::isfinite(norm)) return StaticsNewton::kFailed;
@@ -190,12 +190,16 @@ class StaticsSolver {
       // eps |K| |q| (a stiff ANCF boom under a small load: 2e-6 N of 2e-2 N)
       const double floor = 100.0 * std::numeric_limits<double>::epsilon() * kscale_ *
                            std::max(1.0, s_.q.lpNorm<Eigen::Infinity>());
-      // held throughout (hold_always): a residual no displacement removes
-      // (a creep) stops the iteration once small and no longer decreasing
-      const bool stalled = set_.hold_always && res_.residual > 0.9 * last_residual;
-      last_residual = res_.residual;
-      if ((last_step <= set_.tolerance || stalled) && res_.residual <= std::max(set_.residual_tol * fscale_, floor) &&
-          phi_norm <= m_.solver.assembly_tol) {
+      // held throughout (hold_always): the held directions move by
+      // residual / damping per iteration, slowly and for ever where a
+      // residual no displacement removes (a creep), so the residual decides:
+      // converged at the second iteration in a row below the tolerance (the
+      // one Newton step between polishes the stiff directions)
+      const bool small =
+          res_.residual <= std::max(set_.residual_tol * fscale_, floor) && phi_norm <= m_.solver.assembly_tol;
+      const bool settled = set_.hold_always && small && small_before;
+      small_before = small;
+      if ((last_step <= set_.tolerance || settled) && small) {
         if (last_step > set_.tolerance) {
           Eigen::Index k = 0;
           r_.head(nv_).cwiseAbs().maxCoeff(&k);
@@ -325,6 +329,13 @@ void CheckJointLimits(const Model& m, const Workspace& ws, double t, bool static
                   statics ? "at the static equilibrium (t = " : "at t = ", t, statics ? ")" : "");
     throw NumericalError(buf, {"", 0, "joint '" + j.name() + "'"});
   }
+}
+
+StaticsSettings StaticsSettingsOf(const SolverSettings& solver) {
+  StaticsSettings s;
+  s.hold_always = solver.statics_hold_always;
+  s.residual_tol = solver.statics_residual_tol;
+  return s;
 }
 
 StaticsResult SolveStatics(const Model& m, State& s, Workspace& ws, const StaticsSettings& set) {

@@ -53,8 +53,8 @@ struct StaticsResult {
   int increments = 0;         ///< converged load increments
   int cuts = 0;               ///< failed increments (each halved the increment)
   /// With StaticsSettings::hold_always: the coordinate of the largest
-  /// residual when the iteration stopped on a stalled residual below the
-  /// tolerance (a creep: a force that no displacement removes, e.g. a
+  /// residual when the iteration stopped on the residual before its steps
+  /// converged (a creep: a force that no displacement removes, e.g. a
   /// contact patch's weight along its slide spinning a free wheel, which a
   /// body at rest moves under at force / damping); empty when the steps
   /// converged.
@@ -80,9 +80,11 @@ struct StaticsSettings {
   /// elastic frame whose stiff static modes set the pivots' scale). The
   /// residual stays the true one, so the fixed point is the same
   /// equilibrium, reached at a linear rate where the damping terms matter;
-  /// stiff directions converge as by Newton. The iteration also stops when
-  /// the residual is below residual_tol and no longer decreasing
-  /// (StaticsResult::creep names where it stands).
+  /// stiff directions converge as by Newton. The steps of the held
+  /// directions (residual / damping) need not vanish, so the residual
+  /// decides: converged when it is below residual_tol at two iterations in a
+  /// row (StaticsResult::creep names where the largest one stands when the
+  /// steps had not converged).
   bool hold_always = false;
   /// Called after every converged load increment with the load factor
   /// reached (in (0, 1]), the Newton iterations of that increment and the
@@ -91,6 +93,10 @@ struct StaticsSettings {
   /// constraints and forces are evaluated at it. Empty: not called.
   std::function<void(double load_factor, int iterations, const StaticsResult&)> on_increment;
 };
+
+/// The settings of a model's static equilibrium from its solver settings
+/// (statics_hold_always, statics_residual_tol); the rest default.
+StaticsSettings StaticsSettingsOf(const SolverSettings& solver);
 
 /// Moves `s` (velocities set to zero, time fixed) to static equilibrium.
 /// The workspace must be initialized (e.g. by MakeConsistent). Throws

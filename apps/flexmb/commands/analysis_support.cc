@@ -66,7 +66,7 @@ void AnalysisLinearizationState(const std::string& path, const std::string& text
     return;
   }
   try {
-    SolveStatics(*am.model, am.state, am.ws);
+    SolveStatics(*am.model, am.state, am.ws, StaticsSettingsOf(am.model->solver));
   } catch (const NumericalError& e) {
     throw NumericalError("--at statics: no static equilibrium to linearize about: " + e.message(), e.context());
   }

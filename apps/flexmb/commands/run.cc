@@ -116,7 +116,7 @@ void Simulate(const RunOptions& opt, RunSummary& s, std::unique_ptr<Model>& mode
   }
   if (model->solver.analysis == Analysis::kStaticsThenDynamics) {
     // start from the static equilibrium at t0 (drivers at their t0 values)
-    const StaticsResult st = sim->SettleStatics();
+    const StaticsResult st = sim->SettleStatics(StaticsSettingsOf(model->solver));
     if (opt.info)
       std::fprintf(opt.info, "static equilibrium at t = %g s: %d load increments, %d Newton iterations\n",
                    sim->state().t, st.increments, st.iterations);

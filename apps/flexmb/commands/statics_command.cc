@@ -106,7 +106,7 @@ StaticsOutcome StaticsAnalysis(const StaticsCommandOptions& opt) {
     if (files && (opt.animation || am.model->output.animation))
       anim = std::make_unique<VtkAnimationWriter>(dir.string(), *am.model);
     am.ws.vdot.setZero();
-    StaticsSettings set;
+    StaticsSettings set = StaticsSettingsOf(am.model->solver);
     State frame;
     set.on_increment = [&](double mu, int iterations, const StaticsResult& r) {
       load_factor = mu;
