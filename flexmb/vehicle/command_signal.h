@@ -27,4 +27,19 @@ class CommandSignal final : public ScalarFunction {
   double gain_;
 };
 
+/// f(t) = gain * g(t) for a truck input g given as a function of time
+/// (model-file vehicles: TruckInputs), its derivatives scaled alike.
+class ScaledSignal final : public ScalarFunction {
+ public:
+  /// `f` must not be null.
+  ScaledSignal(std::shared_ptr<const ScalarFunction> f, double gain) : f_(std::move(f)), gain_(gain) {}
+  double Value(double t) const override { return gain_ * f_->Value(t); }
+  double Derivative(double t) const override { return gain_ * f_->Derivative(t); }
+  double SecondDerivative(double t) const override { return gain_ * f_->SecondDerivative(t); }
+
+ private:
+  std::shared_ptr<const ScalarFunction> f_;
+  double gain_;
+};
+
 }  // namespace flexmb::vehicle

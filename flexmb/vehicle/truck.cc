@@ -301,6 +301,19 @@ std::array<double, 2> StaticAxleLoads(const TruckData& d, double g) {
 TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared_ptr<const double> steering_wheel,
                         std::shared_ptr<const double> drive_torque, Model& m,
                         std::shared_ptr<const double> brake_torque) {
+  TruckInputs in;
+  in.steering_wheel = std::make_shared<CommandSignal>(std::move(steering_wheel), 1.0);
+  in.drive_torque = std::make_shared<CommandSignal>(std::move(drive_torque), 1.0);
+  if (brake_torque) in.brake_torque = std::make_shared<CommandSignal>(std::move(brake_torque), 1.0);
+  return BuildTruck(d, speed, mu, in, m);
+}
+
+TruckHandles BuildTruck(const TruckData& d, double speed, double mu, const TruckInputs& inputs, Model& m) {
+  if (!inputs.steering_wheel || !inputs.drive_torque)
+    throw InputError("the truck needs a steering-wheel angle and a drive torque", {"", 0, "truck"});
+  const auto& steering_wheel = inputs.steering_wheel;
+  const auto& drive_torque = inputs.drive_torque;
+  const auto& brake_torque = inputs.brake_torque;
   if (!(d.brake_front_share >= 0 && d.brake_front_share <= 1) || !(d.brake_smoothing_spin > 0))
     throw InputError("brake front_share must lie in [0, 1] and smoothing_spin be positive", {"", 0, "truck brakes"});
   const double g = -m.gravity_W.z();
@@ -427,7 +440,7 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
                               m.AddMarker(carrier, name + "_bearing", c, AxisY()), m.AddMarker(wb, "bearing", c, AxisY()));
     if (brake_torque) {
       const double share = 0.5 * (k < 2 ? d.brake_front_share : 1.0 - d.brake_front_share);
-      m.AddForce(std::make_unique<WheelBrake>(name + "_brake", std::make_shared<CommandSignal>(brake_torque, share),
+      m.AddForce(std::make_unique<WheelBrake>(name + "_brake", std::make_shared<ScaledSignal>(brake_torque, share),
                                               d.brake_smoothing_spin),
                  m.joints[jm]->marker_i, m.joints[jm]->marker_j);
     }
@@ -470,7 +483,7 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
     wheel(k == 0 ? "wheel_fl" : "wheel_fr", knuckle[k], d.front_wheel, d.front_tire, wc, k);
   }
   auto servo = [&](const std::string& name, int joint, double gain) {
-    auto target = std::make_shared<CommandSignal>(steering_wheel, gain);
+    auto target = std::make_shared<ScaledSignal>(steering_wheel, gain);
     m.AddForce(std::make_unique<JointMotor>(name, m.joints[joint].get(), 0, nullptr,
                                             JointMotorPd{target, d.steering_stiffness, d.steering_damping}),
                m.joints[joint]->marker_i, m.joints[joint]->marker_j);
@@ -538,13 +551,13 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared
       const double r2 = d.steering_ratio * d.steering_ratio;
       m.AddForce(std::make_unique<JointMotor>(
                      "steering_servo", m.joints[cj].get(), 0, nullptr,
-                     JointMotorPd{std::make_shared<CommandSignal>(steering_wheel, 1.0), d.steering_stiffness / r2,
+                     JointMotorPd{std::make_shared<ScaledSignal>(steering_wheel, 1.0), d.steering_stiffness / r2,
                                   d.steering_damping / r2}),
                  m.joints[cj]->marker_i, m.joints[cj]->marker_j);
     }
   }
   // rear wheels with the drive torque, half to each side
-  auto drive = std::make_shared<CommandSignal>(drive_torque, 0.5);
+  auto drive = std::make_shared<ScaledSignal>(drive_torque, 0.5);
   for (int k = 0; k < 2; ++k) {
     const double sgn = k == 0 ? 1.0 : -1.0;
     const std::string name = k == 0 ? "wheel_rl" : "wheel_rr";

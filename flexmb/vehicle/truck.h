@@ -18,6 +18,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "flexmb/math/scalar_function.h"
 #include "flexmb/model/model.h"
 #include "flexmb/reduction/reduced_body.h"
 #include "flexmb/vehicle/ladder_frame.h"
@@ -178,6 +179,22 @@ struct TruckHandles {
   std::array<double, 2> wheel_centre_z{};  ///< static wheel-centre heights front, rear [m]
   std::array<int, 2> kingpin_joint{};  ///< kingpin revolutes: left, right
 };
+
+/// The truck's inputs as functions of time: the steering-wheel angle [rad],
+/// the drive torque on the rear axle [N m] and, when not null, the total
+/// brake torque on all wheels [N m] (WheelBrake on each wheel bearing,
+/// shared by brake_front_share).
+struct TruckInputs {
+  std::shared_ptr<const ScalarFunction> steering_wheel;
+  std::shared_ptr<const ScalarFunction> drive_torque;
+  std::shared_ptr<const ScalarFunction> brake_torque;
+};
+
+/// Builds the truck into `model` (not finalized) moving forward at `speed`
+/// [m/s] on a road with friction `mu`, its inputs the functions of
+/// `inputs` (steering_wheel and drive_torque not null). Throws InputError
+/// for bad data.
+TruckHandles BuildTruck(const TruckData& d, double speed, double mu, const TruckInputs& inputs, Model& model);
 
 /// Builds the truck into `model` (not finalized) moving forward at `speed`
 /// [m/s] on a road with friction `mu`. The steering-wheel angle [rad], the
