@@ -51,3 +51,13 @@ def build_crane_boom(cli, work):
     subprocess.run([cli, "reduce", str(work / "boom.bdf"), "--fix", "1", "--interface", "1,2,3", "--modes", "20",
                     "--deformation-stiffening", "-o", str(work / "boom.h5")], check=True, capture_output=True)
     return crane
+
+
+@pytest.fixture
+def truck_copy(tmp_path):
+    """A folder with a copy of the example truck's lane-change file and its
+    tire files, for tests that edit them."""
+    example = os.path.join(SOURCE_DIR, "examples", "truck_lane_change")
+    for name in ("truck.yaml", "tire_11r22_5.yaml", "tire_11r22_5_twin.yaml"):
+        shutil.copy(os.path.join(example, name), tmp_path)
+    return tmp_path

@@ -6,8 +6,6 @@ on the file, and on a copy of the file whose driver section sets the value
 run. docs/validation.md, "Driver sensitivity"."""
 
 import json
-import os
-import shutil
 import subprocess
 
 import pytest
@@ -16,11 +14,8 @@ RANGE = ["--low", "40", "--high", "50", "--tol", "2"]
 
 
 @pytest.fixture
-def work(source_dir, tmp_path):
-    example = os.path.join(source_dir, "examples", "truck_lane_change")
-    for name in ("truck.yaml", "tire_11r22_5.yaml", "tire_11r22_5_twin.yaml"):
-        shutil.copy(os.path.join(example, name), tmp_path)
-    return tmp_path
+def work(truck_copy):
+    return truck_copy
 
 
 def max_speed(cli, path):

@@ -8,8 +8,6 @@ loads, the side the truck leans to. docs/validation.md, "A truck in a model
 file"."""
 
 import csv
-import os
-import shutil
 import subprocess
 
 import pytest
@@ -54,11 +52,8 @@ drivers:
 
 
 @pytest.fixture
-def work(source_dir, tmp_path):
-    example = os.path.join(source_dir, "examples", "truck_lane_change")
-    for name in ("truck.yaml", "tire_11r22_5.yaml", "tire_11r22_5_twin.yaml"):
-        shutil.copy(os.path.join(example, name), tmp_path)
-    return tmp_path
+def work(truck_copy):
+    return truck_copy
 
 
 def run(cli, work, name, mast=True, analysis="statics", extra=()):
