@@ -87,31 +87,38 @@ YAML::Node LoadDataFileMap(const std::string& path, const char* kind, const std:
   return t;
 }
 
-// A subsystem of the truck map `n` under `key`: written inline, or the name
-// of a data file (relative to the truck file's folder `dir`) whose top-level
-// `kind` map holds it, so that several trucks share one cab, suspension or
-// steering file. Returns the map and, in `where`, the context its errors go
-// through (a new one for a file, kept alive by `file_ctx`). An absent key
-// gives an undefined node.
-YAML::Node Subsystem(const YAML::Node& n, YamlContext& ctx, const char* key, const char* kind, const std::string& dir,
-                     YamlContext*& where, std::unique_ptr<YamlContext>& file_ctx) {
-  where = &ctx;
-  const YAML::Node node = n[key];
-  if (!node || !node.IsScalar()) return node;
-  const std::string path = (std::filesystem::path(dir) / node.Scalar()).string();
+// A subsystem of the truck map: its map and the context its errors go
+// through (the truck file's, or that of the data file it was read from).
+struct SubsystemMap {
+  YAML::Node node;                         ///< undefined when the key is absent
+  YamlContext* ctx = nullptr;              ///< the truck file's or file_ctx
+  std::unique_ptr<YamlContext> file_ctx;   ///< the data file's, when read from one
+};
+
+// The subsystem of the truck map `n` under `key`: written inline, or the
+// name of a data file (relative to the truck file's folder `dir`) whose
+// top-level `kind` map holds it, so that several trucks share one cab,
+// suspension or steering file.
+SubsystemMap Subsystem(const YAML::Node& n, YamlContext& ctx, const char* key, const char* kind,
+                       const std::string& dir) {
+  SubsystemMap m;
+  m.ctx = &ctx;
+  m.node = n[key];
+  if (!m.node || !m.node.IsScalar()) return m;
+  const std::string path = (std::filesystem::path(dir) / m.node.Scalar()).string();
   if (!std::filesystem::is_regular_file(path))
-    ctx.Fail(node, std::string("'") + key + "': no " + kind + " file '" + path + "'");
-  file_ctx = std::make_unique<YamlContext>(path);
-  where = file_ctx.get();
-  return LoadDataFileMap(path, kind, kind, std::string(kind) + " '" + key + "'", *file_ctx);
+    ctx.Fail(m.node, std::string("'") + key + "': no " + kind + " file '" + path + "'");
+  m.file_ctx = std::make_unique<YamlContext>(path);
+  m.ctx = m.file_ctx.get();
+  m.node = LoadDataFileMap(path, kind, kind, std::string(kind) + " '" + key + "'", *m.file_ctx);
+  return m;
 }
 
 void ReadPart(const YAML::Node& truck, YamlContext& truck_ctx, const char* key, const std::string& dir, PartData& p,
               MountData* mounts = nullptr) {
-  YamlContext* where = nullptr;
-  std::unique_ptr<YamlContext> file_ctx;
-  const YAML::Node node = Subsystem(truck, truck_ctx, key, "part", dir, where, file_ctx);
-  YamlContext& ctx = *where;
+  const SubsystemMap sub = Subsystem(truck, truck_ctx, key, "part", dir);
+  const YAML::Node& node = sub.node;
+  YamlContext& ctx = *sub.ctx;
   ctx.SetEntity(std::string("truck part '") + key + "'");
   if (!node) ctx.Fail(truck, std::string("missing part '") + key + "'");
   if (mounts) {
@@ -135,10 +142,9 @@ void ReadPart(const YAML::Node& truck, YamlContext& truck_ctx, const char* key, 
 
 void ReadSuspension(const YAML::Node& truck, YamlContext& truck_ctx, const char* key, const std::string& dir,
                     SuspensionData& s) {
-  YamlContext* where = nullptr;
-  std::unique_ptr<YamlContext> file_ctx;
-  const YAML::Node node = Subsystem(truck, truck_ctx, key, "suspension", dir, where, file_ctx);
-  YamlContext& ctx = *where;
+  const SubsystemMap sub = Subsystem(truck, truck_ctx, key, "suspension", dir);
+  const YAML::Node& node = sub.node;
+  YamlContext& ctx = *sub.ctx;
   ctx.SetEntity(std::string("suspension '") + key + "'");
   if (!node) ctx.Fail(truck, std::string("missing suspension '") + key + "'");
   ctx.CheckKeys(node, {"spring_stiffness", "spring_damping", "spring_half_spacing", "spring_length", "arm_length",
@@ -156,10 +162,9 @@ void ReadSuspension(const YAML::Node& truck, YamlContext& truck_ctx, const char*
 
 // the steering of the truck map `n` (inline or a steering file: Subsystem)
 void ReadSteering(const YAML::Node& n, YamlContext& truck_ctx, const std::string& dir, TruckData& d) {
-  YamlContext* where = nullptr;
-  std::unique_ptr<YamlContext> file_ctx;
-  const YAML::Node st = Subsystem(n, truck_ctx, "steering", "steering", dir, where, file_ctx);
-  YamlContext& ctx = *where;
+  const SubsystemMap sub = Subsystem(n, truck_ctx, "steering", "steering", dir);
+  const YAML::Node& st = sub.node;
+  YamlContext& ctx = *sub.ctx;
   ctx.SetEntity("steering");
   if (!st) ctx.Fail(n, "missing 'steering'");
   ctx.CheckKeys(st, {"ratio", "stiffness", "damping", "linkage", "pitman_arm_length", "tie_rod_arm_length", "column",
@@ -189,10 +194,9 @@ void ReadSteering(const YAML::Node& n, YamlContext& truck_ctx, const std::string
 
 // the brakes of the truck map `n`, optional (inline or a brakes file: Subsystem)
 void ReadBrakes(const YAML::Node& n, YamlContext& truck_ctx, const std::string& dir, TruckData& d) {
-  YamlContext* where = nullptr;
-  std::unique_ptr<YamlContext> file_ctx;
-  if (const YAML::Node br = Subsystem(n, truck_ctx, "brakes", "brakes", dir, where, file_ctx)) {
-    YamlContext& ctx = *where;
+  const SubsystemMap sub = Subsystem(n, truck_ctx, "brakes", "brakes", dir);
+  if (const YAML::Node& br = sub.node) {
+    YamlContext& ctx = *sub.ctx;
     ctx.SetEntity("brakes");
     ctx.CheckKeys(br, {"front_share", "smoothing_spin", "note"});
     d.brake_front_share = ctx.Double(br, "front_share", d.brake_front_share);
