@@ -13,6 +13,7 @@
 #include <type_traits>
 
 #include "flexmb/common/error.h"
+#include "flexmb/crane/crane_template.h"
 #include "flexmb/model/model.h"
 #include "flexmb/model_file/body_entry.h"
 #include "flexmb/model_file/element_registry.h"
@@ -178,6 +179,8 @@ std::string ApplyManoeuvre(YAML::Node& root, const std::string& requested, Parse
 
 void BuildModel(YAML::Node& root, ParseContext& ctx, const SolverOverrides& overrides) {
   if (!root || root.IsNull()) ctx.Fail(root, "the model file is empty");
+  // a crane file: the crane template's entries first (docs/crane-file.md)
+  crane::ExpandCraneFile(root, overrides.manoeuvre, ctx);
   ctx.CheckKeys(root, {"name", "gravity", "ground", "bodies", "joints", "drivers", "forces", "sensors",
                        "solver", "output", "manoeuvres", "manoeuvre"});
   Model& model = ctx.model();
