@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <csignal>
 #include <cstdio>
+#include <fstream>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -28,6 +29,7 @@
 #include "apps/flexmb/commands/reduce_commands.h"
 #include "apps/flexmb/commands/run.h"
 #include "apps/flexmb/commands/lane_change.h"
+#include "flexmb/crane/crane_template.h"
 #include "apps/flexmb/commands/straight_run.h"
 #include "apps/flexmb/commands/post_command.h"
 #include "apps/flexmb/commands/study_command.h"
@@ -290,6 +292,15 @@ int main(int argc, char** argv) {
   bool handling_quiet = false;
   handling->add_flag("--quiet,-q", handling_quiet, "no summary line");
 
+  CLI::App* crane = app.add_subcommand("crane", "crane files (docs/crane-file.md)");
+  crane->require_subcommand(1);
+  CLI::App* crane_expand =
+      crane->add_subcommand("expand", "write the model file that the crane template makes of a crane file");
+  std::string crane_file, crane_manoeuvre, crane_out;
+  crane_expand->add_option("file", crane_file, "crane file (YAML)")->required();
+  crane_expand->add_option("--manoeuvre", crane_manoeuvre, "for this entry of its manoeuvres (default: the file's)");
+  crane_expand->add_option("-o,--out", crane_out, "output file (default: standard output)");
+
   CLI::App* check = app.add_subcommand("check", "validate a model file and report its constraints");
   check->add_option("model", model, "model file or lane-change file (YAML)")->required();
   std::optional<std::string> check_frame;
@@ -507,6 +518,18 @@ int main(int argc, char** argv) {
   }
   if (modes->parsed()) return Guarded([&] { return flexmb::io::FeModes(modes_opt, std::cout); });
   if (fe_static->parsed()) return Guarded([&] { return flexmb::io::FeStatic(static_opt, std::cout); });
+  if (crane_expand->parsed())
+    return Guarded([&] {
+      const std::string text = flexmb::crane::ExpandedCraneFile(crane_file, crane_manoeuvre);
+      if (crane_out.empty()) {
+        std::fputs(text.c_str(), stdout);
+        return 0;
+      }
+      std::ofstream f(crane_out);
+      f << text;
+      if (!f) throw flexmb::InputError("cannot write the model file", {crane_out, 0, ""});
+      return 0;
+    });
   if (info->parsed()) return Guarded([&] { return flexmb::io::FeInfo(info_opt, std::cout); });
   if (fe_export->parsed()) return Guarded([&] { return flexmb::io::FeExport(export_opt, std::cout); });
   if (reduce->parsed() && reduce_backend == "petsc") return ReduceWithPetsc(reduce_opt, &argc, &argv);
