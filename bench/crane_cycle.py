@@ -38,7 +38,7 @@ def main():
     a = ap.parse_args()
     work = tempfile.mkdtemp(prefix="crane_bench_")
     try:
-        text = open(os.path.join(ROOT, "examples", "crane", "crane.yaml")).read()
+        text = open(os.path.join(ROOT, "examples", "crane", "crane_model.yaml")).read()
         if text.count("jacobian_reuse: true") != 1:
             sys.exit("crane.yaml no longer sets 'jacobian_reuse: true' once: update this bench")
         models = {"kept": text, "full": text.replace("jacobian_reuse: true", "jacobian_reuse: false")}

@@ -34,7 +34,7 @@ def main():
                   for name in ("four_bar_2", "bricard", "andrews_squeezer")]
         crane = os.path.join(work, "crane")
         os.makedirs(crane)
-        text = open(os.path.join(ROOT, "examples", "crane", "crane.yaml")).read()
+        text = open(os.path.join(ROOT, "examples", "crane", "crane_model.yaml")).read()
         with open(os.path.join(crane, "crane.yaml"), "w") as f:
             f.write(text.replace("jacobian_reuse: true", "jacobian_reuse: false"))
         run([sys.executable, os.path.join(ROOT, "examples", "crane", "make_boom.py"), "--out",

@@ -124,7 +124,7 @@ def write_study(path):
     rows = [row(a) for a in ANGLES]
     lines = ["# written by load_chart.py: the crane's load chart check (statics at each luffing angle)",
              "study: crane_load_chart",
-             "model: crane.yaml",
+             "model: crane_model.yaml",
              "options: {manoeuvre: load_chart}",
              "files: [boom.h5]",
              "parameters:"]

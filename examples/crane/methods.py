@@ -269,7 +269,7 @@ def clamp_model(method, a, info, static, scale=1.0, pinned=False):
 
 
 def crane_model(method, a, info, beta):
-    with open(os.path.join(HERE, "crane.yaml")) as f:
+    with open(os.path.join(HERE, "crane_model.yaml")) as f:
         crane = yaml.safe_load(f)
     i = next(k for k, b in enumerate(crane["bodies"]) if b["name"] == "boom")
     old = crane["bodies"][i]

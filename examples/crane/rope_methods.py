@@ -47,7 +47,7 @@ HOIST = "(t < 6 ? 0 : (t < 6.5 ? 0.3*(t-6)^2 : (t < 9.5 ? 0.075 + 0.3*(t-6.5) : 
 
 
 def base_model(body):
-    with open(os.path.join(HERE, "crane.yaml")) as f:
+    with open(os.path.join(HERE, "crane_model.yaml")) as f:
         m = yaml.safe_load(f)
     m.pop("manoeuvres", None)
     m.pop("manoeuvre", None)

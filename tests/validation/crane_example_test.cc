@@ -91,7 +91,7 @@ class CraneExample : public flexmb::testing::CliTest {
   // (with `fixed_base`, the crane on a fixed base: CraneOnAFixedBase)
   void PrepareCrane(bool fixed_base = false) {
     const std::string src = FLEXMB_SOURCE_DIR;
-    std::filesystem::copy_file(src + "/examples/crane/crane.yaml", dir_ / "crane.yaml");
+    std::filesystem::copy_file(src + "/examples/crane/crane_model.yaml", dir_ / "crane.yaml");
     if (fixed_base) {
       const std::string text = CraneOnAFixedBase(flexmb::testing::ReadFile(dir_ / "crane.yaml"));
       std::ofstream(dir_ / "crane.yaml") << text;
