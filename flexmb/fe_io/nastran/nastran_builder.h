@@ -183,6 +183,8 @@ class Builder {
   void AddRbe3(const Entry& e);
   void AddToSet(const std::string& name, int node);
   void AddSpc(const Entry& e);
+  /// MPC: one linear constraint row (all SIDs merged); components in the grids' CD systems.
+  void AddMpc(const Entry& e);
   void AddBoundarySet(const Entry& e);
   void AddSet1(const Entry& e);
 };

@@ -98,3 +98,67 @@ void Builder::AddSet1(const Entry& e) {
 }
 
 }  // namespace flexmb::io::nastran
+
+namespace flexmb::io::nastran {
+
+// MPC SID G1 C1 A1 G2 C2 A2, continuations (field 2 blank) G C A G C A:
+// sum_j A_j u_j = 0 with u_1 dependent, u_1 = -sum_j>1 (A_j / A_1) u_j. The
+// components are in each grid's displacement system (CD); an independent
+// term in a CD system is written on the basic components of its grid.
+void Builder::AddMpc(const Entry& e) {
+  // all MPC sets are merged, whatever their SID (no case control), as SPCs
+  e.Int(1, "SID");
+  struct Term {
+    int node, component, field;
+    double a;
+  };
+  std::vector<Term> terms;
+  auto read = [&](int f) {
+    if (e.Blank(f) && e.Blank(f + 1) && e.Blank(f + 2)) return;
+    const int node = NodeIndex(e, f, "G");
+    const int c = e.Int(f + 1, "C");
+    if (c < 1 || c > 6)
+      e.Fail(f + 1, "component C must be one of 1 to 6 (" + std::to_string(c) + "; scalar points are not supported)");
+    terms.push_back({node, c - 1, f, e.Real(f + 2, "A")});
+  };
+  read(2);
+  read(5);
+  for (int base = 9; base <= e.Size(); base += 8) {
+    if (!e.Blank(base)) e.Fail(base, "field 2 of an MPC continuation must be blank");
+    read(base + 1);
+    read(base + 4);
+  }
+  if (terms.size() < 2) e.Fail(2, "an MPC needs at least two terms (G1 C1 A1 and one more)");
+  const Term& dep = terms.front();
+  if (dep.a == 0.0) e.Fail(dep.field + 2, "A1, the coefficient of the dependent DOF, must not be 0");
+  if (node_cd_[dep.node] != 0)
+    e.Fail(dep.field, "the dependent grid " + std::to_string(mesh_.nodes[dep.node].id) +
+                          " has a displacement coordinate system (CD); make it the independent one or use CD 0");
+  fe::LinearConstraint row;
+  row.id = e.Int(1, "SID");
+  row.card = "MPC";
+  row.node = dep.node;
+  row.component = dep.component;
+  row.origin = OriginOf(e);
+  for (size_t k = 1; k < terms.size(); ++k) {
+    const Term& t = terms[k];
+    if (t.node == dep.node && t.component == dep.component)
+      e.Fail(t.field, "the dependent DOF (G1, C1) appears again");
+    if (t.a == 0.0) continue;
+    const double g = -t.a / dep.a;
+    if (node_cd_[t.node] == 0) {
+      row.terms.push_back(fe::MpcTerm{t.node, t.component, g});
+      continue;
+    }
+    // u_CD,c = axis_c . u_basic of its block
+    const fe::Mat3 basis = CdBasis(t.node);
+    const int block = t.component < 3 ? 0 : 3;
+    for (int b = 0; b < 3; ++b) {
+      const double w = basis(b, t.component - block);
+      if (std::abs(w) > 1e-15) row.terms.push_back(fe::MpcTerm{t.node, block + b, g * w});
+    }
+  }
+  mesh_.linear_constraints.push_back(std::move(row));
+}
+
+}  // namespace flexmb::io::nastran

@@ -35,7 +35,7 @@ const std::map<std::string, Phase>& Phases() {
                                  "PBUSH", "PMASS"}},
         {Phase::kLinks, {"RBE2", "RBAR", "RBAR1", "RBE3", "CONM2", "CONM1", "CELAS1", "CELAS2", "CBUSH",
                            "CMASS1", "CMASS2"}},
-        {Phase::kSets, {"SPC1", "SPC", "ASET", "ASET1", "BSET", "BSET1", "SET1"}}};
+        {Phase::kSets, {"SPC1", "SPC", "MPC", "ASET", "ASET1", "BSET", "BSET1", "SET1"}}};
     std::map<std::string, Phase> m;
     for (const auto& [phase, names] : groups)
       for (const char* n : names) m.emplace(n, phase);
@@ -48,7 +48,7 @@ const std::map<std::string, Phase>& Phases() {
 }
 
 // skipped without a word: they do not describe the part's K and M
-const std::set<std::string> kSilent = {"PARAM", "EIGRL", "EIGR", "SPCADD"};
+const std::set<std::string> kSilent = {"PARAM", "EIGRL", "EIGR", "SPCADD", "MPCADD"};
 
 // cards that would change stiffness or mass: reading on without them would
 // give a wrong model (the element cards of fe/element_traits.h come first)
@@ -58,7 +58,7 @@ const std::set<std::string> kUnsupported = {
     "CPENTA", "CPYRAM", "CSHEAR",  "CBEND",   "CBEAM3",  "CWELD",   "CFAST",  "CSEAM",
     "CTRIAX", "CTRIAX6", "CQUADX", "CMASS3",  "CMASS4",
     "GENEL",  "CRAC2D", "CRAC3D",  "RBE1",    "RROD",
-    "RTRPLT", "RTRPLT1", "RSPLINE", "RJOINT", "RSSCON",  "MPC",
+    "RTRPLT", "RTRPLT1", "RSPLINE", "RJOINT", "RSSCON",
     "PBUSH1D", "PBUSH2D", "PGAP",    "PCOMP",   "PCOMPG", "PCOMPLS",
     "PSHEAR", "PBCOMP", "PBEND",   "PBEAM3",  "PWELD",   "PFAST",  "PSEAM",
     "PLPLANE", "PLSOLID", "PSHLN1", "PSHLN2", "PSLDN1",  "PBRSECT", "PBMSECT", "PCONEAX"};
@@ -156,6 +156,7 @@ void Builder::Dispatch(const Entry& e) {
   if (n == "CMASS1" || n == "CMASS2") return AddCmass(e);
   if (n == "CBUSH") return AddCbush(e);
   if (n == "SPC1" || n == "SPC") return AddSpc(e);
+  if (n == "MPC") return AddMpc(e);
   if (n == "ASET" || n == "ASET1" || n == "BSET" || n == "BSET1") return AddBoundarySet(e);
   if (n == "SET1") return AddSet1(e);
 }
