@@ -16,7 +16,9 @@
 
 #include "flexmb/common/error.h"
 #include "flexmb/common/text.h"
+#include "flexmb/common/log.h"
 #include "flexmb/fe/element_traits.h"
+#include "flexmb/fe/mesh_checks.h"
 #include "flexmb/fe_io/exchange_set.h"
 #include "flexmb/fe_io/format_registry.h"
 #include "flexmb/fe_io/imported_matrices.h"
@@ -529,11 +531,21 @@ fe::FeModel LoadFeModelFile(const std::string& path) {
 
 }  // namespace
 
+namespace {
+
+// the model's connected parts and unused nodes, as warnings (fe/mesh_checks.h)
+fe::FeModel Checked(fe::FeModel model, const std::string& path) {
+  for (const std::string& w : fe::MeshCheckWarnings(model.mesh, fe::CheckMesh(model.mesh), path)) LogWarning(w);
+  return model;
+}
+
+}  // namespace
+
 fe::FeModel LoadFeModel(const std::string& path) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) return ReadExchangeSet(path);
   const std::string ext = LowerExtension(path);
-  if (ext == ".yaml" || ext == ".yml") return LoadFeModelFile(path);
+  if (ext == ".yaml" || ext == ".yml") return Checked(LoadFeModelFile(path), path);
   fe::FeModel model;
   if (!ReadMeshFile(path, model.mesh))
     throw InputError("unknown FE model file type " + Quoted(ext.empty() ? fs::path(path).filename().string() : ext) +
@@ -543,7 +555,7 @@ fe::FeModel LoadFeModel(const std::string& path) {
     throw InputError("the file defines no nodes (no GRID or *NODE): an empty or truncated deck, or the nodes are "
                      "in a file it does not include",
                      {path, 0, ""});
-  return model;
+  return Checked(std::move(model), path);
 }
 
 std::vector<int> ResolveNodeList(const fe::Mesh& mesh, const std::string& ids_or_set) {

@@ -16,6 +16,7 @@
 #include "flexmb/fe/fe_model.h"
 #include "flexmb/fe/modal.h"
 #include "apps/flexmb/commands/command_support.h"
+#include "flexmb/fe/mesh_checks.h"
 #include "flexmb/fe_io/exchange_set.h"
 #include "flexmb/fe_io/fe_model_file.h"
 #include "flexmb/common/json_text.h"
@@ -137,6 +138,7 @@ int FeInfo(const FeInfoOptions& opt, std::ostream& out) {
   const std::string& path = opt.model_path;
   const fe::FeModel model = InFile(path, [&] { return LoadFeModel(path); });
   const fe::Mesh& mesh = model.mesh;
+  const fe::MeshCheck check = fe::CheckMesh(mesh);
 
   std::map<fe::ElementType, int> by_type;
   for (const fe::Element& e : mesh.elements) ++by_type[e.type];
@@ -192,6 +194,8 @@ int FeInfo(const FeInfoOptions& opt, std::ostream& out) {
     s << "  \"point_masses\": " << mesh.point_masses.size() << ",\n";
     s << "  \"springs\": " << mesh.springs.size() << ",\n";
     s << "  \"constraints\": " << mesh.constraints.size() << ",\n";
+    s << "  \"parts\": " << check.parts.size() << ",\n";
+    s << "  \"unused_nodes\": " << check.unused_nodes.size() << ",\n";
     if (mesh.nodes.empty())
       s << "  \"bounding_box_m\": null,\n";
     else
@@ -230,6 +234,9 @@ int FeInfo(const FeInfoOptions& opt, std::ostream& out) {
     s << "point masses: " << mesh.point_masses.size() << "\n";
     s << "scalar springs: " << mesh.springs.size() << "\n";
     s << "constraints: " << mesh.constraints.size() << " (on " << Count(constrained_nodes.size(), "node") << ")\n";
+    if (!mesh.elements.empty())
+      s << "connected parts: " << check.parts.size() << (check.parts.size() > 1 ? " (see the warning)" : "")
+        << "; unused nodes: " << check.unused_nodes.size() << "\n";
     if (model.imported) {
       const fe::AssembledModel& m = *model.imported;
       s << "matrices: imported, " << m.dofs.n_free << " x " << m.dofs.n_free << ", K " << m.K.nonZeros() << " and M "
