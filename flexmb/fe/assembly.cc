@@ -636,22 +636,11 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
   return out;
 }
 
-MassProperties ComputeMassProperties(const Mesh& mesh, const AssembledModel& model) {
+Eigen::Matrix<double, 6, 6> RigidBodyMass(const Mesh& mesh, const AssembledModel& model, Vec3& x0) {
   const DofMap& dm = model.dofs;
   const int nn = static_cast<int>(mesh.nodes.size());
-  if (static_cast<int>(dm.free.size()) != nn || model.M.rows() != dm.n_free) {
-    throw InputError("mass properties: the assembled model does not belong to this mesh");
-  }
-  // a constrained DOF has an empty row of T: its mass would be missing
-  Eigen::VectorXi row_count = Eigen::VectorXi::Zero(dm.n_full);
-  for (int k = 0; k < model.T.outerSize(); ++k) {
-    for (SparseMat::InnerIterator it(model.T, k); it; ++it) row_count[it.row()] += 1;
-  }
-  if (dm.n_full > 0 && row_count.minCoeff() == 0) {
-    throw InputError("mass properties need the model assembled without constraints or fixed nodes");
-  }
   // rigid-body vectors about a reference point near the model, free DOF
-  Vec3 x0 = Vec3::Zero();
+  x0 = Vec3::Zero();
   for (const Node& node : mesh.nodes) x0 += node.x;
   if (nn > 0) x0 /= nn;
   Eigen::MatrixXd R = Eigen::MatrixXd::Zero(dm.n_free, 6);
@@ -671,7 +660,26 @@ MassProperties ComputeMassProperties(const Mesh& mesh, const AssembledModel& mod
       }
     }
   }
-  const Eigen::Matrix<double, 6, 6> mrr = R.transpose() * (model.M * R);
+  return R.transpose() * (model.M * R);
+}
+
+MassProperties ComputeMassProperties(const Mesh& mesh, const AssembledModel& model) {
+  const DofMap& dm = model.dofs;
+  const int nn = static_cast<int>(mesh.nodes.size());
+  if (static_cast<int>(dm.free.size()) != nn || model.M.rows() != dm.n_free) {
+    throw InputError("mass properties: the assembled model does not belong to this mesh");
+  }
+  // a constrained DOF has an empty row of T: its mass would be missing
+  Eigen::VectorXi row_count = Eigen::VectorXi::Zero(dm.n_full);
+  for (int k = 0; k < model.T.outerSize(); ++k) {
+    for (SparseMat::InnerIterator it(model.T, k); it; ++it) row_count[it.row()] += 1;
+  }
+  if (dm.n_full > 0 && row_count.minCoeff() == 0) {
+    throw InputError("mass properties need the model assembled without constraints or fixed nodes");
+  }
+  Vec3 x0;
+  const Eigen::Matrix<double, 6, 6> mrr = RigidBodyMass(mesh, model, x0);
+
   MassProperties p;
   p.mass = mrr.topLeftCorner<3, 3>().trace() / 3.0;
   if (!(p.mass > 0.0)) {

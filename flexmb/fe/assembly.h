@@ -78,4 +78,10 @@ struct MassProperties {
 };
 MassProperties ComputeMassProperties(const Mesh& mesh, const AssembledModel& model);
 
+/// R^T M R for the six rigid-body motions R of the free DOF about x0 (the
+/// mean of the node positions, returned): translations first, rotations
+/// about x0. For a constrained model it is the rigid-body mass of what the
+/// free DOF carry (the constrained DOF's mass left out).
+Eigen::Matrix<double, 6, 6> RigidBodyMass(const Mesh& mesh, const AssembledModel& model, Vec3& x0);
+
 }  // namespace flexmb::fe

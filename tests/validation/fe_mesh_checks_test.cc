@@ -85,3 +85,33 @@ TEST_F(FeMeshChecks, UnusedNodesAreNamed) {
 }
 
 }  // namespace fe_mesh_checks_test
+
+namespace fe_mesh_checks_test {
+
+// `fe export` of a model with a support: the exchange set holds the free DOF
+// only. Massless bars (rho 0) with a 10 kg CONM2 on the clamped grid 1
+// (x = 0) and 5 kg on grid 3 (x = 1 m): M_CCS.hb carries 5 of the 15 kg,
+// and about the nodes' mean x0 = 0.5 m a rotational inertia trace of
+// 2 x 5 x 0.25 = 2.5 of 2 x 15 x 0.25 = 7.5 kg m^2: 66.67 % of both missing.
+TEST_F(FeMeshChecks, ExportSaysWhichMassTheExchangeSetLacks) {
+  std::ofstream(dir_ / "spc.bdf") << "BEGIN BULK\nMAT1,1,2.1+11,,0.3,0.\nPBAR,1,1,1.-3,8.-7,2.-7,5.-7\n"
+                                     "GRID,1,,0.,0.,0.\nGRID,2,,0.5,0.,0.\nGRID,3,,1.0,0.,0.\n"
+                                     "CBAR,1,1,1,2,0.,0.,1.\nCBAR,2,1,2,3,0.,0.,1.\n"
+                                     "CONM2,9,1,,10.0\nCONM2,10,3,,5.0\nSPC1,1,123456,1\nENDDATA\n";
+  auto r = RunCli(dir_, "fe export spc.bdf --hb ex");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("M_CCS.hb: 5 kg of the model's 15 kg (66.6667 % missing; of the rotational inertia 66.6667 %)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("no stress modes"), std::string::npos) << r.err;
+  // the same model without the support: nothing is missing, only the note on stresses
+  std::string text = flexmb::testing::ReadFile(dir_ / "spc.bdf");
+  text.erase(text.find("SPC1"), std::string("SPC1,1,123456,1\n").size());
+  std::ofstream(dir_ / "free.bdf") << text;
+  r = RunCli(dir_, "fe export free.bdf --hb ex2");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.find("missing"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no stress modes"), std::string::npos) << r.err;
+}
+
+}  // namespace fe_mesh_checks_test

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "flexmb/common/error.h"
+#include "flexmb/common/log.h"
 #include "flexmb/fe/assembly.h"
 #include "flexmb/fe/fe_model.h"
 #include "flexmb/fe/modal.h"
@@ -256,6 +257,42 @@ int FeInfo(const FeInfoOptions& opt, std::ostream& out) {
   return 0;
 }
 
+namespace {
+
+// The exchange set holds the free DOF only: the mass on constrained DOF
+// (SPCs, --fix) is not in it, nor are element data (stress modes). Says so,
+// with the mass and inertia that a body reduced from it would lack.
+void WarnOfMissingMass(const fe::Mesh& mesh, fe::AssembledModel& a, const std::string& path, const std::string& dir) {
+  std::string note = dir + ": an exchange set carries matrices, not elements: a body reduced from it has no stress "
+                           "modes (reduce " + path + " itself for stresses)";
+  fe::MassProperties full;
+  try {
+    full = UnconstrainedMassProperties(mesh, a);
+  } catch (const Error&) {
+    LogWarning(note);
+    return;
+  }
+  fe::Vec3 x0;
+  const Eigen::Matrix<double, 6, 6> mrr = fe::RigidBodyMass(mesh, a, x0);
+  const double mass = mrr.topLeftCorner<3, 3>().trace() / 3.0;
+  if (full.mass > 0.0 && mass < (1.0 - 1e-9) * full.mass) {
+    // the inertia about x0 of the whole model, against what the free DOF carry
+    const fe::Vec3 c = full.center - x0;
+    const double j_full = full.inertia.trace() + 2.0 * full.mass * c.squaredNorm();
+    const double j_kept = mrr.bottomRightCorner<3, 3>().trace();
+    std::ostringstream s;
+    s << dir << ": the exchange set holds the free DOF only: the mass on the constrained DOF (SPCs, --fix) is not in "
+      << "M_CCS.hb: " << Short(mass) << " kg of the model's " << Short(full.mass) << " kg ("
+      << Short(100.0 * (1.0 - mass / full.mass)) << " % missing; of the rotational inertia "
+      << Short(100.0 * (1.0 - j_kept / j_full)) << " %). A body reduced from it lacks that mass; reduce " << path
+      << " itself (flexmb reduce keeps the whole mass)";
+    LogWarning(s.str());
+  }
+  LogWarning(note);
+}
+
+}  // namespace
+
 int FeExport(const FeExportOptions& opt, std::ostream& out) {
   const std::string& path = opt.model_path;
   if (opt.hb_dir.empty()) throw InputError("--hb needs the directory to write the exchange set to");
@@ -265,11 +302,12 @@ int FeExport(const FeExportOptions& opt, std::ostream& out) {
   ao.extra_fixed_nodes = command::NodeListOption(model.mesh, opt.fix, path);
   // an RBE3 reference node as interface node keeps its own DOF (as in reduce)
   if (!opt.interface.empty()) ao.independent_nodes = command::NodeListOption(mesh, opt.interface, path);
-  const fe::AssembledModel a = InFile(path, [&] { return fe::BuildMatrices(model, ao); });
+  fe::AssembledModel a = InFile(path, [&] { return fe::BuildMatrices(model, ao); });
   if (a.dofs.n_free == 0)
     throw InputError("the model has no free DOF (all constrained or fixed): nothing to export", {path, 0, ""});
   // the writer's errors name the directory
   InFile(opt.hb_dir, [&] { WriteExchangeSet(mesh, a, opt.hb_dir); });
+  WarnOfMissingMass(mesh, a, path, opt.hb_dir);
   int static_modes = -1, normal_modes = 0;
   if (!opt.interface.empty()) {
     if (opt.modes < 0) throw InputError("--modes must be 0 or more, got " + std::to_string(opt.modes));
