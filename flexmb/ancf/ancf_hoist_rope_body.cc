@@ -41,7 +41,7 @@ void AddVariableStiffnessForce(double k, double dk, double beta, double s, const
   if (beta > 0.0) Q.noalias() -= (beta * k * d1.dot(ydot)) * d1;
 }
 
-// The bending term of AddVariableStiffnessTerm for the three strains
+// The bending term of AddVariableStiffnessTerm (K, C null: the force only) for the three strains
 // kappa = (a x b) / g, g = a . a, of a = A q_e, b = B q_e (A, B: the slope
 // and curvature shape matrices, [s_i I] and [t_i I]), by the chain rule
 // through (a, b): with J = d kappa / d(a, b) (3 x 6) and H_j = d2 kappa_j /
@@ -49,14 +49,22 @@ void AddVariableStiffnessForce(double k, double dk, double beta, double s, const
 // block by block from the shape values instead of as products of 3 x 12
 // matrices (the three strains' 13 x 13 terms cost 4 times as much).
 template <class Shape, class V, class M>
-void BendingTangents(double k, double dk, double ddk, double beta, const Shape& A, const Shape& B, const Vec3& a,
-                     const Vec3& b, double g, const V& ydot, V& Q, M& K, M& C) {
+void BendingTerm(double k, double dk, double ddk, double beta, const Shape& A, const Shape& B, const Vec3& a,
+                 const Vec3& b, double g, const V& ydot, V& Q, M* Kp, M* Cp) {
   const Vec3 c = a.cross(b), kappa = c / g;
   const Mat3 Ja = -Skew(b) / g - (2.0 / (g * g)) * c * a.transpose(), Jb = Skew(a) / g;
   const Vec3 ad = A * ydot.template head<12>(), bd = B * ydot.template head<12>();
   const Vec3 kd = Ja * ad + Jb * bd;  // strain rates
   // the weights of the H_j: stiffness and damping
   const Vec3 w = k * kappa + (beta * k) * kd;
+  if (!Kp) {
+    const Vec3 fa = Ja.transpose() * w, fb = Jb.transpose() * w;
+    for (int i = 0; i < 4; ++i) Q.template segment<3>(3 * i) -= A(0, 3 * i) * fa + B(0, 3 * i) * fb;
+    Q(12) -= 0.5 * kappa.squaredNorm() * dk;
+    return;
+  }
+  M& K = *Kp;
+  M& C = *Cp;
   const double wc = w.dot(c);
   const Vec3 bw = b.cross(w), aw = a.cross(w);
   Mat3 Haa = -(2.0 / (g * g)) * (a * bw.transpose() + bw * a.transpose()) +
@@ -150,6 +158,14 @@ AncfHoistRopeBody::AncfHoistRopeBody(std::string name, const HoistRopeData& data
     Dc_.noalias() += (w * x * x) * B.transpose() * B;
   }
   for (VecX* t : {&t1_, &t2_, &t3_, &t4_, &t5_, &t6_}) t->setZero(nL_);
+  // every integrand above is (s t^T) (x) I3: keep its 4 x 4 factor
+  const auto factor = [](const Mat12& X) {
+    Eigen::Matrix4d f;
+    for (int i = 0; i < 4; ++i)
+      for (int k = 0; k < 4; ++k) f(i, k) = X(3 * i, 3 * k);
+    return f;
+  };
+  m0_ = factor(M0_), ca_ = factor(Ca_), cb_ = factor(Cb_), da_ = factor(Da_), db_ = factor(Db_), dc_ = factor(Dc_);
 }
 
 void AncfHoistRopeBody::InitialCoordinates(double* q, double* v) const {
@@ -238,17 +254,22 @@ void AncfHoistRopeBody::Forces(const double* q, const double* v, const Vec3& g_W
   const Eigen::Map<const VecX> qq(q, nL_), vq(v, nL_);
   for (VecX* t : {&t1_, &t2_, &t3_, &t4_, &t5_, &t6_}) t->setZero();
   const Vec3 gq[4] = {0.5 * g_W, g_W / 12.0, 0.5 * g_W, -g_W / 12.0};  // int S dxi, times g
+  // (X (x) I3) x = vec(x_3x4 X^T): the element's 12 coordinates as 3 x 4
+  using Mat34 = Eigen::Matrix<double, 3, 4>;
+  const auto kron = [](const Eigen::Matrix4d& X, const double* x, double* y) {
+    Eigen::Map<Mat34>(y) += Eigen::Map<const Mat34>(x) * X.transpose();
+  };
+  const Eigen::Matrix4d mb = m0_ / N;
   for (int e = 0; e < n_el_; ++e) {
-    const Mat12 Mb = M0_ / N;
-    const Mat12 Cb = ((N - e) * Ca_ - Cb_) / N;
-    const Mat12 Db = ((N - e) * (N - e) * Da_ - 2.0 * (N - e) * Db_ + Dc_) / N;
+    const Eigen::Matrix4d cb = ((N - e) * ca_ - cb_) / N;
+    const Eigen::Matrix4d db = ((N - e) * (N - e) * da_ - 2.0 * (N - e) * db_ + dc_) / N;
     const auto qe = qq.segment<12>(6 * e);
     const auto ve = vq.segment<12>(6 * e);
-    t1_.segment<12>(6 * e).noalias() += Mb * ve;
-    t2_.segment<12>(6 * e).noalias() += Cb * ve;
-    t3_.segment<12>(6 * e).noalias() += Cb.transpose() * ve;
-    t4_.segment<12>(6 * e).noalias() += Db * qe;
-    t5_.segment<12>(6 * e).noalias() += Db * ve;
+    kron(mb, v + 6 * e, t1_.data() + 6 * e);
+    kron(cb, v + 6 * e, t2_.data() + 6 * e);
+    kron(cb.transpose(), v + 6 * e, t3_.data() + 6 * e);
+    kron(db, q + 6 * e, t4_.data() + 6 * e);
+    kron(db, v + 6 * e, t5_.data() + 6 * e);
     for (int a = 0; a < 4; ++a) t6_.segment<3>(6 * e + 3 * a) += (rhoA_ / N) * gq[a];
     // strain energy and damping of the element, extended coordinates (q_e, L)
     Vec13 y, yd, Qe = Vec13::Zero();
@@ -262,8 +283,13 @@ void AncfHoistRopeBody::Forces(const double* q, const double* v, const Vec3& g_W
     if (!tangents) continue;
     Eigen::Ref<MatX>& dQdq = *dQdq_p;
     Eigen::Ref<MatX>& dQdv = *dQdv_p;
-    dQdv.block<12, 12>(6 * e, 6 * e) -= Ld * (Mb + Cb - Cb.transpose());
-    dQdq.block<12, 12>(6 * e, 6 * e) += (Ld * Ld / L) * Db;
+    const Eigen::Matrix4d dv = -Ld * (mb + cb - cb.transpose()), dq = (Ld * Ld / L) * db;
+    for (int i = 0; i < 4; ++i)
+      for (int m = 0; m < 4; ++m)
+        for (int c = 0; c < 3; ++c) {
+          dQdv(6 * e + 3 * i + c, 6 * e + 3 * m + c) += dv(i, m);
+          dQdq(6 * e + 3 * i + c, 6 * e + 3 * m + c) += dq(i, m);
+        }
     dQdq.block<12, 12>(6 * e, 6 * e) += K.topLeftCorner<12, 12>();
     dQdv.block<12, 12>(6 * e, 6 * e) += C.topLeftCorner<12, 12>();
     dQdq.block<12, 1>(6 * e, nL_) += K.topRightCorner<12, 1>();
@@ -364,17 +390,7 @@ double AncfHoistRopeBody::ElementStrain(int e, const Vec13& y, const Vec13& yd, 
     const double k = s.E * s.I * ws[g] * N / L, dk = -k / L, ddk = 2.0 * k / (L * L);
     W += 0.5 * k * c.squaredNorm() / (gg * gg);
     if (!Q) continue;
-    const Eigen::Matrix<double, 3, 12> dc = Skew(a) * B - Skew(b) * A;
-    const Vec12 dg = 2.0 * A.transpose() * a;
-    if (!K) {
-      for (int j = 0; j < 3; ++j) {
-        Vec13 d1 = Vec13::Zero();
-        d1.head<12>() = dc.row(j).transpose() / gg - c(j) * dg / (gg * gg);
-        AddVariableStiffnessForce(k, dk, beta, c(j) / gg, d1, yd, *Q);
-      }
-      continue;
-    }
-    BendingTangents(k, dk, ddk, beta, A, B, a, b, gg, yd, *Q, *K, *C);
+    BendingTerm(k, dk, ddk, beta, A, B, a, b, gg, yd, *Q, K, C);
   }
   return W;
 }

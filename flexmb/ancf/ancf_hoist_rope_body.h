@@ -184,6 +184,8 @@ class AncfHoistRopeBody final : public Body {
   // Ca = int S^T S', Cb = int xi S^T S', Da = int S'^T S', Db = int xi S'^T S',
   // Dc = int xi^2 S'^T S'
   Mat12 M0_, Ca_, Cb_, Da_, Db_, Dc_;
+  // the same as 4 x 4 factors X of X (x) I3 (the shape matrices are [s_i I3])
+  Eigen::Matrix4d m0_, ca_, cb_, da_, db_, dc_;
   // the line element of length 1, for its shape functions only (its section
   // is a placeholder)
   LineElement<3> unit_{1.0, [] {
