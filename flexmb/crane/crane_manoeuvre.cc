@@ -36,45 +36,47 @@ std::vector<YAML::Node> Moves(const YAML::Node& m, const char* key, YamlContext&
   return std::vector<YAML::Node>(v.begin(), v.end());
 }
 
-TrapezoidMove CheckedMove(const YAML::Node& n, TrapezoidMove mv, YamlContext& ctx) {
-  const std::string why = CheckMove(mv);
-  if (!why.empty()) ctx.Fail(n, why);
-  return mv;
+// the moves at m[key], each read by `fill` (after its keys `keys` are
+// checked and its start, speed and until read) and checked
+template <class Fill>
+std::vector<TrapezoidMove> ReadMoves(const YAML::Node& m, const char* key, std::initializer_list<const char*> keys,
+                                     YamlContext& ctx, Fill&& fill) {
+  std::vector<TrapezoidMove> out;
+  for (const YAML::Node& n : Moves(m, key, ctx)) {
+    ctx.CheckKeys(n, keys);
+    TrapezoidMove mv;
+    mv.start = ctx.Double(n, "start");
+    mv.speed = ctx.Double(n, "speed");
+    mv.until = ctx.Double(n, "until", -1.0);
+    fill(n, mv);
+    const std::string why = CheckMove(mv);
+    if (!why.empty()) ctx.Fail(n, why);
+    out.push_back(mv);
+  }
+  return out;
 }
 
+// hoist: {start, speed [m/s of rope, + hauls in], ramp, stop_ramp, distance | until}
 std::vector<TrapezoidMove> HoistMoves(const YAML::Node& m, YamlContext& ctx) {
-  std::vector<TrapezoidMove> out;
-  for (const YAML::Node& n : Moves(m, "hoist", ctx)) {
-    ctx.CheckKeys(n, {"start", "speed", "ramp", "stop_ramp", "distance", "until"});
-    TrapezoidMove mv;
-    mv.start = ctx.Double(n, "start");
-    mv.speed = ctx.Double(n, "speed");
-    mv.ramp = ctx.Double(n, "ramp", 0.5);
-    mv.stop_ramp = ctx.Double(n, "stop_ramp", mv.ramp);
-    mv.distance = ctx.Double(n, "distance", -1.0);
-    mv.until = ctx.Double(n, "until", -1.0);
-    out.push_back(CheckedMove(n, mv, ctx));
-  }
-  return out;
+  return ReadMoves(m, "hoist", {"start", "speed", "ramp", "stop_ramp", "distance", "until"}, ctx,
+                   [&](const YAML::Node& n, TrapezoidMove& mv) {
+                     mv.ramp = ctx.Double(n, "ramp", 0.5);
+                     mv.stop_ramp = ctx.Double(n, "stop_ramp", mv.ramp);
+                     mv.distance = ctx.Double(n, "distance", -1.0);
+                   });
 }
 
+// slew: {start, speed [rad/s], acceleration, deceleration [rad/s^2], angle_deg | until}
 std::vector<TrapezoidMove> SlewMoves(const YAML::Node& m, YamlContext& ctx) {
-  std::vector<TrapezoidMove> out;
-  for (const YAML::Node& n : Moves(m, "slew", ctx)) {
-    ctx.CheckKeys(n, {"start", "speed", "acceleration", "deceleration", "angle_deg", "until"});
-    TrapezoidMove mv;
-    mv.start = ctx.Double(n, "start");
-    mv.speed = ctx.Double(n, "speed");
-    const double acc = ctx.Positive(n, "acceleration");
-    const double dec = ctx.Double(n, "deceleration", acc);
-    if (!(dec > 0)) ctx.Fail(n["deceleration"], "'deceleration' must be positive [rad/s^2]");
-    mv.ramp = std::abs(mv.speed) / acc;
-    mv.stop_ramp = std::abs(mv.speed) / dec;
-    if (n["angle_deg"]) mv.distance = ctx.Positive(n, "angle_deg") * kRadPerDeg;
-    mv.until = ctx.Double(n, "until", -1.0);
-    out.push_back(CheckedMove(n, mv, ctx));
-  }
-  return out;
+  return ReadMoves(m, "slew", {"start", "speed", "acceleration", "deceleration", "angle_deg", "until"}, ctx,
+                   [&](const YAML::Node& n, TrapezoidMove& mv) {
+                     const double acc = ctx.Positive(n, "acceleration");
+                     const double dec = ctx.Double(n, "deceleration", acc);
+                     if (!(dec > 0)) ctx.Fail(n["deceleration"], "'deceleration' must be positive [rad/s^2]");
+                     mv.ramp = std::abs(mv.speed) / acc;
+                     mv.stop_ramp = std::abs(mv.speed) / dec;
+                     if (n["angle_deg"]) mv.distance = ctx.Positive(n, "angle_deg") * kRadPerDeg;
+                   });
 }
 
 // the hoist's extremes: hauled in (> 0) and paid out (> 0) at any time
@@ -189,11 +191,11 @@ CraneSetup SelectCraneManoeuvre(YAML::Node& root, const std::string& requested, 
       ctx.SetEntity("manoeuvre '" + mname + "'");
       if (m["crane"] && !m["crane"].IsMap())
         ctx.Fail(m["crane"], "expected 'crane' as a map of the crane's keys to replace");
-      for (const char* k : {"drivers"})
-        if (m[k] && m[k].IsMap())
-          for (const char* d : {"luffing", "hoist_drive", "slew_drive"})
-            if (m[k][d]) ctx.Fail(m[k][d], std::string("the crane's driver '") + d +
-                                               "' is set by the manoeuvre's hoist, slew and luff moves");
+      if (m["drivers"] && m["drivers"].IsMap())
+        for (const char* d : {"luffing", "hoist_drive", "slew_drive"})
+          if (m["drivers"][d])
+            ctx.Fail(m["drivers"][d],
+                     std::string("the crane's driver '") + d + "' is set by the manoeuvre's hoist, slew and luff moves");
       CraneSetup s = reader.Read(m["crane"] ? Merge(root["crane"], m["crane"]) : root["crane"], ctx);
       ctx.SetEntity("manoeuvre '" + mname + "'");
       Translate(m, s, reader.boom, ctx);
