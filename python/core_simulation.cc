@@ -14,6 +14,7 @@
 #include "python/core_bindings.h"
 #include "flexmb/model_file/model_file.h"
 #include "flexmb/sensors/joint_sensors.h"
+#include "flexmb/solver/statics.h"
 
 namespace flexmb::python {
 namespace py = pybind11;
@@ -116,6 +117,18 @@ void PySimulation::Initialize() {
   initialized = true;
 }
 
+void PySimulation::StartDynamics() {
+  Initialize();
+  if (started) return;
+  started = true;
+  if (model->solver.analysis != Analysis::kStaticsThenDynamics) return;
+  try {
+    sim->SettleStatics(StaticsSettingsOf(model->solver));
+  } catch (const Error& e) {
+    RethrowWithModel(e);
+  }
+}
+
 void PySimulation::SensorValues(double* out) {
   const State& st = sim->state();
   for (size_t i = 0; i < model->sensors.size(); ++i) {
@@ -144,7 +157,7 @@ void PySimulation::Record(const State& st, const Workspace& ws) {
 
 void PySimulation::Run(double t_end, py::object callback, py::object argument, double callback_interval,
                        const std::string& out_dir) {
-  Initialize();
+  StartDynamics();
   if (!(std::isfinite(t_end))) throw InputError("t_end must be a finite number of seconds");
   const OutputSettings& out = model->output;
   const bool has_callback = !callback.is_none();
@@ -195,7 +208,7 @@ void PySimulation::Run(double t_end, py::object callback, py::object argument, d
 }
 
 void PySimulation::Step(double dt, int n) {
-  Initialize();
+  StartDynamics();
   if (!(dt > 0) || !std::isfinite(dt)) throw InputError("step: dt must be a positive number of seconds");
   const double eps = 1e-9 * std::max(1.0, std::abs(model->solver.t_end));
   const auto start = std::chrono::steady_clock::now();

@@ -42,6 +42,10 @@ class PySimulation {
 
   /// Consistent initial state (once); rethrows errors naming the model.
   void Initialize();
+  /// Initialize, then (once, before the first step) the static equilibrium
+  /// of a model with `solver: analysis: statics_then_dynamics`, as
+  /// `flexmb run` starts it.
+  void StartDynamics();
   /// Integrates to t_end [s]; rows every output.interval; `callback` (may be
   /// None) is called as callback(argument) with the GIL at every
   /// `callback_interval` [s] (0: every step); `out_dir` non-empty:
@@ -59,6 +63,7 @@ class PySimulation {
   std::unique_ptr<Simulator> sim;        ///< its simulator
   std::vector<std::string> warnings;     ///< warnings of the initialization
   bool initialized = false;
+  bool started = false;                  ///< StartDynamics done
   std::vector<std::string> columns;      ///< "time" and sensor.component
   std::vector<std::vector<double>> data; ///< per column: recorded values
   double seconds_integrating = 0.0;      ///< wall time inside the integrator [s]
