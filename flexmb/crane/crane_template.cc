@@ -307,6 +307,15 @@ std::string ExpandedCraneFile(const std::string& path, const std::string& manoeu
   // only the selected manoeuvre: the entries were made for it
   std::string name = manoeuvre;
   if (name.empty() && root["manoeuvre"]) name = root["manoeuvre"].as<std::string>();
+  if (!name.empty() && !(root["manoeuvres"] && root["manoeuvres"].IsMap() && root["manoeuvres"][name])) {
+    std::string names;
+    if (root["manoeuvres"] && root["manoeuvres"].IsMap())
+      for (const auto& kv : root["manoeuvres"]) names += (names.empty() ? "" : ", ") + kv.first.Scalar();
+    throw InputError((manoeuvre.empty() ? "manoeuvre " : "--manoeuvre ") + name + ": no manoeuvre named '" + name +
+                         "' in the file (" + (names.empty() ? std::string("it defines none") : "defined: " + names) +
+                         ")",
+                     {path, 0, "manoeuvres"});
+  }
   if (root["manoeuvres"]) {
     YAML::Node kept(YAML::NodeType::Map);
     if (!name.empty() && root["manoeuvres"][name]) kept[name] = root["manoeuvres"][name];

@@ -127,6 +127,10 @@ TEST_F(CraneFile, ExpandedFileIsTheSameModelAndLuffsToTheBoomsGeometry) {
   r = RunCli(dir_, "run crane.yaml --manoeuvre luffing --out c --t-end 13 --quiet");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(ReadFile(dir_ / "e" / "results.csv"), ReadFile(dir_ / "c" / "results.csv"));
+  // a manoeuvre the file does not define is an error, as for `run`
+  r = RunCli(dir_, "crane expand crane.yaml --manoeuvre nope -o x.yaml");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("no manoeuvre named 'nope' in the file (defined: lift_and_slew, "), std::string::npos) << r.err;
 
   // luffed up to 50 degrees (6 s to 12 s): the cylinder between the platform's
   // pin (1.6, 0, 2.3) and the eye node of the boom turned 50 degrees about
