@@ -113,9 +113,11 @@ std::vector<std::string> MeshCheckWarnings(const Mesh& mesh, const MeshCheck& ch
       if (part.supported) s << ", supported";
     }
     if (shown < check.parts.size()) s << "; and " << check.parts.size() - shown << " more";
-    s << ". A part held by no support moves as a rigid body: the free-free model has up to " << 6 * free_parts
-      << " rigid-body (zero-frequency) modes instead of 6; join the parts (shared nodes, RBE2, a spring, "
-         "*TIE) if they are one piece";
+    // one connected model has 6 rigid-body modes free-free, none once supported
+    const bool any_support = free_parts < static_cast<int>(check.parts.size());
+    s << ". A part held by no support moves as a rigid body: the model " << (any_support ? "with its supports" : "free-free")
+      << " has up to " << 6 * free_parts << " rigid-body (zero-frequency) modes instead of " << (any_support ? 0 : 6)
+      << "; join the parts (shared nodes, RBE2, a spring, *TIE) if they are one piece";
     out.push_back(s.str());
   }
   if (!check.unused_nodes.empty()) {
