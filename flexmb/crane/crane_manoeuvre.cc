@@ -134,18 +134,17 @@ struct Reader {
     const auto key = path + "|" + std::to_string(s.data.foot_node) + "," + std::to_string(s.data.head_node) + "," +
                      std::to_string(s.data.eye_node);
     if (path.empty() || !booms.count(key)) booms[key] = ReadBoomPoints(s.data, path, ctx);
-    s.geometry = PlaceCrane(s.data, booms[key], g, ctx);
+    s.boom = booms[key];
+    s.geometry = PlaceCrane(s.data, s.boom, g, ctx);
     s.luffing = Num(s.geometry.cylinder_length);
     s.hoist = "0";
     s.slew = "0";
-    boom = booms[key];
     return s;
   }
-  BoomPoints boom;
 };
 
 // applies the crane keys of manoeuvre m to s and removes them from m
-void Translate(YAML::Node m, CraneSetup& s, const BoomPoints& b, YamlContext& ctx) {
+void Translate(YAML::Node m, CraneSetup& s, YamlContext& ctx) {
   const std::vector<TrapezoidMove> hoist = HoistMoves(m, ctx);
   const auto [hauled, paid] = HoistExtremes(hoist);
   const CraneData& d = s.data;
@@ -159,7 +158,7 @@ void Translate(YAML::Node m, CraneSetup& s, const BoomPoints& b, YamlContext& ct
                                      paid, Num(d.rope_on_drum)));
   s.hoist = SumExpression(hoist, -1.0 / d.drum_radius);
   s.slew = SumExpression(SlewMoves(m, ctx), 1.0);
-  s.luffing = LuffExpression(m, d, b, s.geometry.cylinder_length, ctx);
+  s.luffing = LuffExpression(m, d, s.boom, s.geometry.cylinder_length, ctx);
   if (m["release_time"]) {
     const double t = ctx.Double(m, "release_time");
     if (!(d.release_mass > 0))
@@ -177,7 +176,7 @@ void Translate(YAML::Node m, CraneSetup& s, const BoomPoints& b, YamlContext& ct
 
 CraneSetup SelectCraneManoeuvre(YAML::Node& root, const std::string& requested, const std::string& folder, double g,
                                 YamlContext& ctx) {
-  Reader reader{folder, g, {}, {}};
+  Reader reader{folder, g, {}};
   std::string name = requested;
   if (name.empty() && root["manoeuvre"] && root["manoeuvre"].IsScalar()) name = root["manoeuvre"].Scalar();
   YAML::Node all = root["manoeuvres"];
@@ -198,7 +197,7 @@ CraneSetup SelectCraneManoeuvre(YAML::Node& root, const std::string& requested, 
                      std::string("the crane's driver '") + d + "' is set by the manoeuvre's hoist, slew and luff moves");
       CraneSetup s = reader.Read(m["crane"] ? Merge(root["crane"], m["crane"]) : root["crane"], ctx);
       ctx.SetEntity("manoeuvre '" + mname + "'");
-      Translate(m, s, reader.boom, ctx);
+      Translate(m, s, ctx);
       if (mname == name) {
         selected = std::move(s);
         found = true;

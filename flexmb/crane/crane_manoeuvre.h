@@ -18,6 +18,7 @@ namespace flexmb::crane {
 /// [m], the drum angle [rad], the slew angle [rad].
 struct CraneSetup {
   CraneData data;
+  BoomPoints boom;  ///< the boom's foot, head and eye in its axes
   CraneGeometry geometry;
   std::string luffing, hoist, slew;
 };
