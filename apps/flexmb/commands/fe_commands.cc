@@ -231,7 +231,7 @@ int FeInfo(const FeInfoOptions& opt, std::ostream& out) {
       s << "  " << name << ": " << Count(members.size(), "element") << "\n";
     s << "rigid links: " << mesh.rigid_links.size() << " (" << Count(dependent, "dependent node") << ")\n";
     if (!mesh.linear_constraints.empty())
-      s << "linear constraints (RBE3, *EQUATION, skew supports, chains): " << Count(mesh.linear_constraints.size(), "dependent DOF") << "\n";
+      s << "linear constraints (RBE3, MPC, *EQUATION, *TIE, skew supports, chains): " << Count(mesh.linear_constraints.size(), "dependent DOF") << "\n";
     s << "point masses: " << mesh.point_masses.size() << "\n";
     s << "scalar springs: " << mesh.springs.size() << "\n";
     s << "constraints: " << mesh.constraints.size() << " (on " << Count(constrained_nodes.size(), "node") << ")\n";

@@ -5,7 +5,8 @@
 /// members are defined by topic: abaqus_reader.cc (card order, final
 /// checks), abaqus_mesh.cc (nodes, elements), abaqus_sets.cc (sets,
 /// surfaces), abaqus_sections.cc (materials, sections, masses) and
-/// abaqus_constraints.cc (boundary conditions, rigid bodies, couplings).
+/// abaqus_constraints.cc (boundary conditions, rigid bodies, couplings,
+/// equations) and abaqus_tie.cc (tied surfaces).
 
 #include <map>
 #include <string>
@@ -51,6 +52,13 @@ struct MassElement {
   std::string type;                           ///< "MASS" or "ROTARYI"
 };
 
+/// One face of an element-based surface: its element and its nodes (node
+/// indices in Abaqus face order: corners, then mid-side nodes).
+struct SurfaceFace {
+  int element_id = 0;
+  std::vector<int> nodes;
+};
+
 /// Builds the mesh of one deck; see ReadAbaqus for what it accepts.
 class Builder {
  public:
@@ -72,6 +80,8 @@ class Builder {
   std::map<std::string, NamedSet> nsets_, elsets_;  // upper-case name -> set
   std::map<std::string, std::vector<int>> surfaces_;
   std::map<std::string, std::vector<double>> surface_weights_;  // per surface node: area share (faces) or weight
+  std::map<std::string, std::vector<SurfaceFace>> surface_faces_;  // element-based surfaces: their faces
+  std::map<std::string, fe::Origin> ties_;          // upper-case *TIE name -> its card
   std::map<std::string, int> materials_;            // upper-case name -> index
   std::map<std::string, bool> warned_;
   std::vector<fe::Origin> section_origin_;          // per mesh element: where its section was assigned
@@ -128,6 +138,9 @@ class Builder {
   void RigidBody(const Card& c);
   void Coupling(const std::vector<Card>& cards, const std::vector<int>& order, int i);
   void Equation(const Card& c);
+
+  // abaqus_tie.cc
+  void Tie(const Card& c);
 };
 
 }  // namespace flexmb::io::abaqus

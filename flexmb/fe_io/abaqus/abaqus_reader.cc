@@ -44,6 +44,9 @@ fe::Mesh Builder::Build(std::vector<Card>& cards) {
     if (c.key == "BEAMSECTION" || c.key == "BEAMGENERALSECTION") BeamSection(cards, order, i);
     if (c.key == "MASS" || c.key == "ROTARYINERTIA") MassCard(c);
   }
+  // ties first: they move (adjust) slave nodes onto the master surface
+  for (int i : order)
+    if (cards[i].key == "TIE") Tie(cards[i]);
   for (int i : order) {
     const Card& c = cards[i];
     if (c.key == "BOUNDARY") Boundary(c);
@@ -64,7 +67,7 @@ std::vector<int> Builder::Filter(std::vector<Card>& cards) {
   static const std::set<std::string> kModel = {
       "NODE", "ELEMENT", "NSET", "ELSET", "SURFACE", "MATERIAL", "SOLIDSECTION", "SHELLSECTION",
       "BEAMSECTION", "BEAMGENERALSECTION", "MASS", "ROTARYINERTIA", "BOUNDARY", "RIGIDBODY",
-      "COUPLING", "SYSTEM", "EQUATION"};
+      "COUPLING", "SYSTEM", "EQUATION", "TIE"};
   static const std::set<std::string> kMaterialSub = {
       "ELASTIC", "DENSITY", "EXPANSION", "CONDUCTIVITY", "SPECIFICHEAT", "PLASTIC", "DAMPING", "CREEP"};
   static const std::set<std::string> kSilent = {
@@ -75,7 +78,7 @@ std::vector<int> Builder::Filter(std::vector<Card>& cards) {
   // keywords that would change the stiffness or mass: reading on without
   // them would give a different model (docs/formats.md)
   static const std::set<std::string> kUnsupported = {
-      "TIE", "MPC", "SPRING", "DASHPOT", "KINEMATICCOUPLING", "DISTRIBUTINGCOUPLING",
+      "MPC", "SPRING", "DASHPOT", "KINEMATICCOUPLING", "DISTRIBUTINGCOUPLING",
       "SHELLGENERALSECTION", "MEMBRANESECTION", "CONNECTORSECTION", "CONNECTORBEHAVIOR", "CONNECTORELASTICITY",
       "GAP", "TRANSFORM", "NONSTRUCTURALMASS", "EMBEDDEDELEMENT", "MATRIXINPUT", "MATRIXASSEMBLE",
       "SUBSTRUCTUREPROPERTY", "GASKETSECTION", "COHESIVESECTION", "FRAMESECTION", "USERELEMENT", "UELPROPERTY",

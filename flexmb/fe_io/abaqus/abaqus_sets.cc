@@ -147,6 +147,7 @@ void Builder::Surface(const Card& c) {
   // equally by its nodes (linear faces), or the node-based entry's weight
   std::map<int, double> weight;
   bool weights_ok = true;
+  std::vector<SurfaceFace> faces;
   for (const DataLine& d : c.data) {
     if (d.fields.empty() || d.fields[0].empty()) Fail(d.origin, entity, "empty entry");
     const std::string& f = d.fields[0];
@@ -182,6 +183,9 @@ void Builder::Surface(const Card& c) {
         if (nf == 3) area = 0.5 * (corner(1) - corner(0)).cross(corner(2) - corner(0)).norm();
         if (nf == 4) area = 0.5 * (corner(2) - corner(0)).cross(corner(3) - corner(1)).norm();
         weights_ok = weights_ok && (nf == 3 || nf == 4);
+        SurfaceFace sf{eid, {}};
+        for (int k = 0; k < nf; ++k) sf.nodes.push_back(e.nodes[nodes_of_face->nodes[k] - 1]);
+        faces.push_back(std::move(sf));
         for (int k = 0; k < nf; ++k) {
           nodes.Add(e.nodes[nodes_of_face->nodes[k] - 1]);
           weight[e.nodes[nodes_of_face->nodes[k] - 1]] += area / nf;
@@ -192,6 +196,7 @@ void Builder::Surface(const Card& c) {
     }
   }
   surfaces_[Upper(p->value)] = nodes.items;
+  surface_faces_[Upper(p->value)] = std::move(faces);
   std::vector<double>& w = surface_weights_[Upper(p->value)];
   w.clear();
   if (weights_ok)
