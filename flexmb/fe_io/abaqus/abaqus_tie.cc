@@ -16,6 +16,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "flexmb/common/log.h"
@@ -95,8 +96,13 @@ class TieFaceGrid {
 }  // namespace
 
 void Builder::Tie(const Card& c) {
-  for (const char* p : {"CYCLICSYMMETRY", "MULTISTAGE", "FLUIDCOUPLING", "THERMAL", "CONSTRAINTRATIO"})
-    if (c.Find(p)) Fail(c.origin, c.name, std::string(p) + " is not supported (flexmb reads tied contact)");
+  static const std::pair<const char*, const char*> kUnsupported[] = {{"CYCLICSYMMETRY", "CYCLIC SYMMETRY"},
+                                                                     {"MULTISTAGE", "MULTISTAGE"},
+                                                                     {"FLUIDCOUPLING", "FLUID COUPLING"},
+                                                                     {"THERMAL", "THERMAL"},
+                                                                     {"CONSTRAINTRATIO", "CONSTRAINT RATIO"}};
+  for (const auto& [key, spelled] : kUnsupported)
+    if (c.Find(key)) Fail(c.origin, c.name, std::string(spelled) + " is not supported (flexmb reads tied contact)");
   const Param* np = c.Find("NAME");
   if (np == nullptr || np->value.empty()) Fail(c.origin, c.name, "needs NAME=");
   const std::string entity = c.name + " " + Printable(np->value);

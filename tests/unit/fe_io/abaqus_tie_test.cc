@@ -114,7 +114,7 @@ TEST(AbaqusTie, MalformedCardsNameTheProblem) {
   const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
       {"*TIE\nSLAVE, MASTER\n", {"*TIE", "needs NAME="}},
       {"*TIE, NAME=A\nSLAVE, MASTER\n*TIE, NAME=a\nSLAVE, MASTER\n", {"*TIE a", "already defined at", ".inp:"}},
-      {"*TIE, NAME=A, CYCLIC SYMMETRY\nSLAVE, MASTER\n", {"CYCLICSYMMETRY is not supported"}},
+      {"*TIE, NAME=A, CYCLIC SYMMETRY\nSLAVE, MASTER\n", {"CYCLIC SYMMETRY is not supported"}},
       {"*TIE, NAME=A\nSLAVE, NOPE\n", {"unknown master surface 'NOPE'"}},
       {"*TIE, NAME=A\nNOPE, MASTER\n", {"unknown slave surface 'NOPE'"}},
       {"*TIE, NAME=A\nMASTER, SLAVE\n", {"'SLAVE' has no element faces"}},
