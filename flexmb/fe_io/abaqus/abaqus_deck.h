@@ -95,6 +95,12 @@ double Positive(const DataLine& d, size_t i, const std::string& entity, const ch
 /// Throws if `d` has more than `n` fields.
 void MaxFields(const DataLine& d, size_t n, const std::string& entity);
 
+/// Throws if `c`, a keyword or sub-option that flexmb reads, has a
+/// parameter that flexmb does not know for it (a misspelling, or one that
+/// could change the model), naming the parameter and listing the known
+/// ones. Other keywords are not checked. Defined in abaqus_params.cc.
+void CheckParams(const Card& c);
+
 /// True for the shell element types (family shell in fe/element_traits.h).
 inline bool IsShell(fe::ElementType t) { return fe::Traits(t).family == fe::ElementFamily::kShell; }
 

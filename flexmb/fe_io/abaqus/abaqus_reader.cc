@@ -93,6 +93,7 @@ std::vector<int> Builder::Filter(std::vector<Card>& cards) {
       if (parent < 0) Fail(c.origin, c.name, missing);
       c.parent = parent;
       CheckData(c);
+      CheckParams(c);
       out.push_back(static_cast<int>(i));
     };
     if (c.key == "STEP") {
@@ -139,6 +140,7 @@ std::vector<int> Builder::Filter(std::vector<Card>& cards) {
     }
     if (kModel.count(c.key)) {
       CheckData(c);
+      CheckParams(c);
       out.push_back(static_cast<int>(i));
       continue;
     }

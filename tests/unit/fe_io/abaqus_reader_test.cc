@@ -121,6 +121,34 @@ TEST(AbaqusReader, UnsupportedKeywordsAreListedInOneError) {
   EXPECT_EQ(w.messages.size(), 1u);
 }
 
+// a parameter flexmb does not know on a keyword it reads is an error
+// naming it (a misspelling, or an option that would change the model, such
+// as a coupling in a local orientation); on other keywords (loads, output)
+// parameters are not checked
+TEST(AbaqusReader, UnknownParametersAreErrors) {
+  const std::string base =
+      "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,0.5,0.5,1\n"
+      "*ELEMENT, TYPE=S4, ELSET=P\n1,1,2,3,4\n*MATERIAL, NAME=M\n*ELASTIC\n2.1e11, 0.3\n*DENSITY\n7850\n";
+  const std::string good = WriteScratch(
+      "params_good.inp", base + "*Shell Section, elset=P, material=M, section integration=SIMPSON\n0.01\n"
+                                "*CLOAD, OP=NEW, WHATEVER=1\n3,3,100.\n");
+  EXPECT_EQ(ReadAbaqus(good).elements.size(), 1u);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"*SHELL SECTION, ELSET=P, MATERIAL=M, OFSET=0.5\n0.01\n", "*SHELL SECTION: unknown parameter OFSET=0.5"},
+      {"*SHELL SECTION, ELSET=P, MATERIAL=M\n0.01\n*SURFACE, NAME=S, TYPE=ELEMENT\n1, SPOS\n"
+       "*COUPLING, REF NODE=5, SURFACE=S, CONSTRAINT NAME=C, ORIENTATION=OR1\n*KINEMATIC\n",
+       "*COUPLING: unknown parameter ORIENTATION=OR1 (flexmb knows REFNODE, SURFACE, CONSTRAINTNAME)"},
+      {"*SHELL SECTION, ELSET=P, MATERIAL=M\n0.01\n*NSET, NSET=A, FREQUENCY=100\n1\n",
+       "*NSET: unknown parameter FREQUENCY=100"},
+      {"*SHELL SECTION, ELSET=P, MATERIAL=M\n0.01\n*SYSTEM, R\n", "*SYSTEM: unknown parameter R (this keyword takes none)"},
+  };
+  int k = 0;
+  for (const auto& [cards, message] : cases) {
+    const std::string path = WriteScratch("params_bad" + std::to_string(k++) + ".inp", base + cards);
+    testing::ExpectContains(InputErrorOf([&] { ReadAbaqus(path); }), {path + ":", message}, cards);
+  }
+}
+
 TEST(AbaqusReader, SectionsByMassProperties) {
   const Mesh m = ReadAbaqus(FeData("abaqus/sections.inp"));
   ASSERT_EQ(m.elements.size(), 12u);
