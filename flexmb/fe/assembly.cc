@@ -106,6 +106,7 @@ Resolved ResolveElement(const Mesh& mesh, const Element& e) {
       material = section(mesh.solid_sections, "solid")->material;
       break;
   }
+  if (r.shell != nullptr && r.shell->laminate && material < 0) return r;  // the plies carry the material
   if (material < 0 || material >= static_cast<int>(mesh.materials.size())) {
     Fail(e.origin, name, "its section has no material");
   }

@@ -24,8 +24,9 @@ void ElementMatrices(const ElementInput& in, MatX& K, MatX& M) {
                 std::to_string(NodeCount(e.type)));
   }
   if (in.x == nullptr) Fail(e, "no node coordinates given");
-  if (in.material == nullptr) Fail(e, "no material");
   const ElementTraits& t = Traits(e.type);
+  const bool laminate = t.family == ElementFamily::kShell && in.shell != nullptr && in.shell->laminate;
+  if (in.material == nullptr && !laminate) Fail(e, "no material");
   if (t.family == ElementFamily::kShell && in.shell == nullptr) Fail(e, "no shell section");
   if (t.family == ElementFamily::kBeam && in.beam == nullptr) Fail(e, "no beam section");
   t.matrices(in, K, M);

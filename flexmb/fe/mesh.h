@@ -11,8 +11,11 @@
 #include <Eigen/Core>
 #include <array>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
+
+#include "flexmb/fe/laminate.h"
 
 namespace flexmb::fe {
 
@@ -76,6 +79,10 @@ struct ShellSection {
   int material = -1;          ///< index into Mesh::materials
   double thickness = 0.0;     ///< [m]
   double nsm = 0.0;           ///< non-structural mass per area [kg/m^2]
+  /// A laminated section (PCOMP, PCOMPG): its plies' equivalent section in
+  /// the laminate's material axes, used instead of `material` (then -1)
+  /// and `thickness` (the total); null for a homogeneous shell.
+  std::shared_ptr<const ShellLaminate> laminate;
   Origin origin;
 };
 
@@ -117,6 +124,7 @@ struct Element {
   Vec3 offset_a = Vec3::Zero();       ///< beams: offset of end A from its node, basic frame [m]
   Vec3 offset_b = Vec3::Zero();       ///< beams: offset of end B
   double shell_offset = 0.0;          ///< shells: offset of the mid-surface along the normal [m]
+  double shell_theta = 0.0;           ///< shells: the material x axis from the G1-G2 edge [rad] (laminates)
   Origin origin;
 };
 

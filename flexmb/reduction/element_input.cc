@@ -41,6 +41,7 @@ fe::ElementInput ResolveElementInput(const fe::Mesh& mesh, const fe::Element& e,
       break;
     case fe::ElementFamily::kSolid: material = section(mesh.solid_sections, "solid")->material; break;
   }
+  if (in.shell != nullptr && in.shell->laminate && material < 0) return in;  // the plies carry the material
   if (material < 0 || material >= static_cast<int>(mesh.materials.size()))
     throw InputError("its section has no material", ctx);
   in.material = &mesh.materials[material];

@@ -10,20 +10,28 @@ ShellData CheckShellInput(const ElementInput& in, int n_nodes) {
   const Element& e = CheckElementNodes(in, n_nodes, "shell");
   const ErrorContext ctx = ElementContext(e);
   if (in.shell == nullptr) throw InputError("missing shell section (property)", ctx);
-  if (in.material == nullptr) throw InputError("missing material of the shell section", ctx);
   const ShellSection& sec = *in.shell;
-  const Material& mat = *in.material;
   ShellData s;
-  s.E = mat.E;
-  s.nu = mat.nu;
-  s.G = mat.G > 0.0 ? mat.G : mat.E / (2.0 * (1.0 + mat.nu));
-  s.rho = mat.rho;
-  s.t = sec.thickness;
   s.nsm = sec.nsm;
   s.offset = e.shell_offset;
+  if (sec.laminate) {
+    if (!std::isfinite(e.shell_theta)) throw InputError("non-finite material angle", ctx);
+    s.laminate = InElementAxes(*sec.laminate, e.shell_theta);
+    const ShellLaminate& l = *s.laminate;
+    s.t = l.thickness;
+    s.G = l.A(2, 2) / l.thickness;  // the in-plane shear modulus the drilling terms scale with
+  } else {
+    if (in.material == nullptr) throw InputError("missing material of the shell section", ctx);
+    const Material& mat = *in.material;
+    s.E = mat.E;
+    s.nu = mat.nu;
+    s.G = mat.G > 0.0 ? mat.G : mat.E / (2.0 * (1.0 + mat.nu));
+    s.rho = mat.rho;
+    s.t = sec.thickness;
+    CheckElasticConstants(mat, ctx);
+  }
   if (!(s.t > 0.0) || !std::isfinite(s.t))
     throw InputError("non-positive shell thickness " + std::to_string(s.t), ctx);
-  CheckElasticConstants(mat, ctx);
   if (!(s.rho >= 0.0) || !(s.nsm >= 0.0) || !std::isfinite(s.rho) || !std::isfinite(s.nsm))
     throw InputError("negative or non-finite density or non-structural mass", ctx);
   if (!std::isfinite(s.offset)) throw InputError("non-finite shell offset", ctx);
@@ -34,11 +42,17 @@ SectionConstants Constants(const ShellData& s) {
   SectionConstants c;
   c.membrane = MembraneMatrix(s);
   c.bending = BendingMatrix(s);
-  c.shear = kShearFactor * s.G * s.t;
+  c.shear = kShearFactor * s.G * s.t * Eigen::Matrix2d::Identity();
   c.drilling_tie = kDrillingFactor * s.G * s.t;
   c.drilling_stabilization = kDrillingStabilization * s.G * s.t;
   c.m0 = s.rho * s.t + s.nsm;
   c.m2 = s.rho * s.t * s.t * s.t / 12.0;
+  if (s.laminate) {
+    c.coupling = s.laminate->B;
+    c.shear = s.laminate->S;
+    c.m0 = s.laminate->mass + s.nsm;
+    c.m2 = s.laminate->rotary;
+  }
   return c;
 }
 
@@ -62,12 +76,14 @@ Eigen::Matrix3d FrameAxes(const Vec3& e1, const Vec3& e3) {
 }
 
 Eigen::Matrix3d MembraneMatrix(const ShellData& s) {
+  if (s.laminate) return s.laminate->A;
   Eigen::Matrix3d c;
   c << 1.0, s.nu, 0.0, s.nu, 1.0, 0.0, 0.0, 0.0, 0.5 * (1.0 - s.nu);
   return c * (s.E * s.t / (1.0 - s.nu * s.nu));
 }
 
 Eigen::Matrix3d BendingMatrix(const ShellData& s) {
+  if (s.laminate) return s.laminate->D;
   return MembraneMatrix(s) * (s.t * s.t / 12.0);
 }
 
@@ -101,19 +117,29 @@ void ToBasic(const LocalFrame<N>& frame, const Eigen::Matrix<double, 6 * N, 6 * 
 template <int N>
 Eigen::Matrix<double, 6, 6 * N> SurfaceStress(const LocalFrame<N>& frame, const ShellData& s,
                                               const Eigen::Matrix<double, 2, N>& dx) {
-  const Eigen::Matrix3d c = PlaneStressMatrix(s);
-  const Eigen::Matrix<double, 3, 2 * N> sm = c * MembraneStrain<N>(dx);
-  const Eigen::Matrix<double, 3, 3 * N> sb = c * BendingStrain<N>(dx) * (0.5 * s.t);
+  // bottom and top: the stiffness of the outer material and its z
+  Eigen::Matrix3d c[2];
+  double z[2];
+  if (s.laminate) {
+    c[0] = s.laminate->q_bottom;
+    c[1] = s.laminate->q_top;
+    z[0] = s.laminate->z_bottom;
+    z[1] = s.laminate->z_top;
+  } else {
+    c[0] = c[1] = PlaneStressMatrix(s);
+    z[0] = -0.5 * s.t;
+    z[1] = 0.5 * s.t;
+  }
+  const Eigen::Matrix<double, 3, 2 * N> em = MembraneStrain<N>(dx);
+  const Eigen::Matrix<double, 3, 3 * N> eb = BendingStrain<N>(dx);
   // local: rows bottom then top, columns node by node u v w rx ry rz
   Eigen::Matrix<double, 6, 6 * N> local = Eigen::Matrix<double, 6, 6 * N>::Zero();
-  for (int i = 0; i < N; ++i) {
-    for (int a = 0; a < 2; ++a) {
-      local.template block<3, 1>(0, 6 * i + kMembraneDofs[a]) = sm.col(2 * i + a);
-      local.template block<3, 1>(3, 6 * i + kMembraneDofs[a]) = sm.col(2 * i + a);
-    }
-    for (int a = 0; a < 3; ++a) {
-      local.template block<3, 1>(0, 6 * i + kPlateDofs[a]) = -sb.col(3 * i + a);
-      local.template block<3, 1>(3, 6 * i + kPlateDofs[a]) = sb.col(3 * i + a);
+  for (int side = 0; side < 2; ++side) {
+    const Eigen::Matrix<double, 3, 2 * N> sm = c[side] * em;
+    const Eigen::Matrix<double, 3, 3 * N> sb = c[side] * eb * z[side];
+    for (int i = 0; i < N; ++i) {
+      for (int a = 0; a < 2; ++a) local.template block<3, 1>(3 * side, 6 * i + kMembraneDofs[a]) = sm.col(2 * i + a);
+      for (int a = 0; a < 3; ++a) local.template block<3, 1>(3 * side, 6 * i + kPlateDofs[a]) = sb.col(3 * i + a);
     }
   }
   return local * LocalTransform<N>(frame);

@@ -11,6 +11,7 @@
 /// Formulation notes: docs/design.md, "FE: shell elements".
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 
 #include "flexmb/common/error.h"
@@ -52,6 +53,9 @@ struct ShellData {
   double t = 0.0;                     ///< thickness [m]
   double nsm = 0.0;                   ///< non-structural mass [kg/m^2]
   double offset = 0.0;                ///< mid-surface offset along the normal [m]
+  /// A laminated section in the element's local axes (e1 along the G1-G2
+  /// edge): its A, D, S and mass replace those of E, nu, G, rho, t.
+  std::optional<ShellLaminate> laminate;
 };
 
 /// Checks element, section and material of a shell with `n_nodes` nodes and
@@ -62,11 +66,12 @@ ShellData CheckShellInput(const ElementInput& in, int n_nodes);
 struct SectionConstants {
   Eigen::Matrix3d membrane;       ///< MembraneMatrix [N/m]
   Eigen::Matrix3d bending;        ///< BendingMatrix [N m]
-  double shear = 0.0;             ///< kShearFactor G t [N/m]
-  double drilling_tie = 0.0;      ///< kDrillingFactor G t [N/m]
-  double drilling_stabilization = 0.0;  ///< kDrillingStabilization G t [N/m]
+  Eigen::Matrix3d coupling = Eigen::Matrix3d::Zero();  ///< membrane-bending B of a laminate [N]
+  Eigen::Matrix2d shear;          ///< kShearFactor G t I, or a laminate's S [N/m]
+  double drilling_tie = 0.0;      ///< kDrillingFactor G t (a laminate: A66) [N/m]
+  double drilling_stabilization = 0.0;  ///< kDrillingStabilization G t (a laminate: A66) [N/m]
   double m0 = 0.0;                ///< translational mass rho t + nsm [kg/m^2]
-  double m2 = 0.0;                ///< rotary inertia rho t^3 / 12 [kg]
+  double m2 = 0.0;                ///< rotary inertia rho t^3 / 12 (a laminate: sum rho z^2 dz) [kg]
 };
 
 /// The constants of a checked section.
@@ -93,9 +98,11 @@ struct LocalFrame {
   Eigen::Matrix<double, 3, N> d;
 };
 
-/// Plane-stress membrane stiffness A = E t / (1 - nu^2) [...] [N/m].
+/// Plane-stress membrane stiffness A = E t / (1 - nu^2) [...] [N/m]
+/// (a laminate: its A).
 Eigen::Matrix3d MembraneMatrix(const ShellData& s);
-/// Plate bending stiffness D = E t^3 / (12 (1 - nu^2)) [...] [N m].
+/// Plate bending stiffness D = E t^3 / (12 (1 - nu^2)) [...] [N m] (a
+/// laminate: its D).
 Eigen::Matrix3d BendingMatrix(const ShellData& s);
 
 /// Membrane strains (eps_xx, eps_yy, gamma_xy) over (u_i, v_i), node by
@@ -172,6 +179,21 @@ void AddNodal(const Eigen::Matrix<double, C * N, C * N>& sub, const int (&comps)
           out(6 * i + comps[a], 6 * j + comps[b]) += scale * sub(C * i + a, C * j + b);
 }
 
+/// Adds `sub` (C1 N x C2 N, node by node over the local components `rows`
+/// and `cols`) and its transpose to the 6N x 6N local element matrix `out`:
+/// a symmetric coupling block (membrane-bending of a laminate).
+template <int N, int C1, int C2>
+void AddCoupling(const Eigen::Matrix<double, C1 * N, C2 * N>& sub, const int (&rows)[C1], const int (&cols)[C2],
+                 Eigen::Matrix<double, 6 * N, 6 * N>& out) {
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j)
+      for (int a = 0; a < C1; ++a)
+        for (int b = 0; b < C2; ++b) {
+          out(6 * i + rows[a], 6 * j + cols[b]) += sub(C1 * i + a, C2 * j + b);
+          out(6 * j + cols[b], 6 * i + rows[a]) += sub(C1 * i + a, C2 * j + b);
+        }
+}
+
 /// Adds the consistent translational (m0 = rho t + nsm [kg/m^2]) and
 /// bending-rotation (m2 = rho t^3 / 12 [kg]) mass from `nn` = int N N^T dA.
 template <int N>
@@ -217,18 +239,23 @@ void ToBasic(const LocalFrame<N>& frame, const Eigen::Matrix<double, 6 * N, 6 * 
 /// Membrane stress resultants (Nxx, Nyy, Nxy) [N/m] in the local frame at a
 /// point with shape function derivatives `dx` (rows d/dx, d/dy, local) for
 /// the element's nodal DOF `u` (6N, basic frame, as K): MembraneMatrix times
-/// the membrane strains of the mid-surface displacements (LocalTransform).
+/// the membrane strains of the mid-surface displacements (LocalTransform),
+/// plus a laminate's B times the curvatures.
 template <int N>
 Eigen::Vector3d MembraneResultants(const LocalFrame<N>& frame, const ShellData& s,
                                    const Eigen::Matrix<double, 2, N>& dx,
                                    const Eigen::Matrix<double, 6 * N, 1>& u) {
   const Eigen::Matrix<double, 6 * N, 1> ul = LocalTransform<N>(frame) * u;
   Eigen::Matrix<double, 2 * N, 1> um;
+  Eigen::Matrix<double, 3 * N, 1> ub;
   for (int i = 0; i < N; ++i) {
     um(2 * i) = ul(6 * i);
     um(2 * i + 1) = ul(6 * i + 1);
+    for (int a = 0; a < 3; ++a) ub(3 * i + a) = ul(6 * i + kPlateDofs[a]);
   }
-  return MembraneMatrix(s) * (MembraneStrain<N>(dx) * um);
+  Eigen::Vector3d n = MembraneMatrix(s) * (MembraneStrain<N>(dx) * um);
+  if (s.laminate) n += s.laminate->B * (BendingStrain<N>(dx) * ub);  // N = A eps0 + B kappa
+  return n;
 }
 
 /// Adds the membrane initial-stress (geometric) stiffness of one
@@ -262,7 +289,8 @@ Eigen::Matrix3d PlaneStressMatrix(const ShellData& s);
 /// with the membrane strains eps0 (MembraneStrain) and the curvatures kappa
 /// (BendingStrain) of the stiffness, C = PlaneStressMatrix. The membrane
 /// stress is the mean of the two surfaces, the bending stress half their
-/// difference.
+/// difference. A laminate: the stresses of its bottom and top plies at its
+/// outer surfaces (z_bottom, z_top), in the element's local axes.
 template <int N>
 Eigen::Matrix<double, 6, 6 * N> SurfaceStress(const LocalFrame<N>& frame, const ShellData& s,
                                               const Eigen::Matrix<double, 2, N>& dx);

@@ -70,7 +70,8 @@ void ShellQuad4Matrices(const ElementInput& in, MatX& K, MatX& M) {
   const shell::SectionConstants sc = shell::Constants(s);
   const Eigen::Matrix3d& cm = sc.membrane;
   const Eigen::Matrix3d& cb = sc.bending;
-  const double ks = sc.shear, kd = sc.drilling_stabilization, m0 = sc.m0, m2 = sc.m2;
+  const Eigen::Matrix2d& ks = sc.shear;
+  const double kd = sc.drilling_stabilization, m0 = sc.m0, m2 = sc.m2;
   const Eigen::Matrix<double, 4, 2> xy = f.xy;
 
   Eigen::Vector4d n;
@@ -92,6 +93,12 @@ void ShellQuad4Matrices(const ElementInput& in, MatX& K, MatX& M) {
   Eigen::Matrix<double, 8, 8> kcc = Eigen::Matrix<double, 8, 8>::Zero();
   Eigen::Matrix<double, 8, 4> kci = Eigen::Matrix<double, 8, 4>::Zero();
   Eigen::Matrix4d kii = Eigen::Matrix4d::Zero();
+  // a laminate's membrane-bending coupling: compatible and incompatible
+  // membrane strains against the curvatures
+  const Eigen::Matrix3d& cmb = sc.coupling;
+  const bool coupled = !cmb.isZero(0.0);
+  Eigen::Matrix<double, 8, 12> kmb = Eigen::Matrix<double, 8, 12>::Zero();
+  Eigen::Matrix<double, 4, 12> kib = Eigen::Matrix<double, 4, 12>::Zero();
   Eigen::Matrix<double, 12, 12> dd_sum = Eigen::Matrix<double, 12, 12>::Zero();
   Eigen::Matrix4d nn_sum = Eigen::Matrix4d::Zero();
   Mat24 kl = Mat24::Zero();
@@ -121,13 +128,17 @@ void ShellQuad4Matrices(const ElementInput& in, MatX& K, MatX& M) {
 
     // bending over (w, rx, ry) per node
     const Eigen::Matrix<double, 3, 12> bb = shell::BendingStrain<4>(dx);
+    if (coupled) {
+      kmb += bm.transpose() * cmb * bb * det;
+      kib += bi.transpose() * cmb * bb * det;
+    }
     // assumed covariant shear, then cartesian: gamma = J^-1 e
     Eigen::Matrix<double, 2, 12> bn;
     bn.row(0) = 0.5 * (1.0 + eta) * tie.row(0) + 0.5 * (1.0 - eta) * tie.row(1);
     bn.row(1) = 0.5 * (1.0 - xi) * tie.row(2) + 0.5 * (1.0 + xi) * tie.row(3);
     const Eigen::Matrix<double, 2, 12> bs = j_inv * bn;
     const Eigen::Matrix<double, 12, 12> kp =
-        (bb.transpose() * cb * bb + ks * bs.transpose() * bs) * det;
+        (bb.transpose() * cb * bb + bs.transpose() * ks * bs) * det;
 
     // drilling: theta_z - omega over (u, v, rz) per node
     const Eigen::Matrix<double, 1, 12> bd = shell::DrillingStrain<4>(dx, n);
@@ -143,6 +154,13 @@ void ShellQuad4Matrices(const ElementInput& in, MatX& K, MatX& M) {
   // condense the incompatible modes
   const Eigen::Matrix<double, 8, 8> km = kcc - kci * kii.ldlt().solve(kci.transpose());
   shell::AddNodal<4, 2>(km, shell::kMembraneDofs, 1.0, kl);
+  if (coupled) {  // the condensation of the modes reaches the plate through B
+    const Eigen::Matrix<double, 4, 12> kii_kib = kii.ldlt().solve(kib);
+    const Eigen::Matrix<double, 8, 12> kmb_c = kmb - kci * kii_kib;
+    const Eigen::Matrix<double, 12, 12> kbb_c = -kib.transpose() * kii_kib;
+    shell::AddCoupling<4, 2, 3>(kmb_c, shell::kMembraneDofs, shell::kPlateDofs, kl);
+    shell::AddNodal<4, 3>(kbb_c, shell::kPlateDofs, 1.0, kl);
+  }
 
   const bool lumped = in.mass_form == MassForm::kLumped;
   Eigen::Vector4d share = Eigen::Vector4d::Zero();

@@ -49,7 +49,8 @@ void ShellTria3Matrices(const ElementInput& in, MatX& K, MatX& M) {
   const shell::SectionConstants sc = shell::Constants(s);
   const Eigen::Matrix3d& cm = sc.membrane;
   const Eigen::Matrix3d& cb = sc.bending;
-  const double ks = sc.shear, kd = sc.drilling_stabilization, m0 = sc.m0, m2 = sc.m2;
+  const Eigen::Matrix2d& ks = sc.shear;
+  const double kd = sc.drilling_stabilization, m0 = sc.m0, m2 = sc.m2;
 
   // natural coordinates r, s: N = (1 - r - s, r, s); J rows d/dr, d/ds
   Eigen::Matrix<double, 2, 3> dn;
@@ -87,7 +88,7 @@ void ShellTria3Matrices(const ElementInput& in, MatX& K, MatX& M) {
     bn.row(0) = er1 + c * p[1];
     bn.row(1) = es2 - c * p[0];
     const Eigen::Matrix<double, 2, 9> bs = j_inv * bn;
-    kp += ks * bs.transpose() * bs * (area / 3.0);
+    kp += bs.transpose() * ks * bs * (area / 3.0);
     const Eigen::Vector3d n(1.0 - p[0] - p[1], p[0], p[1]);
     // drilling: theta_z - omega over (u, v, rz) per node
     const Eigen::Matrix<double, 1, 9> bd = shell::DrillingStrain<3>(dx, n);
@@ -102,6 +103,11 @@ void ShellTria3Matrices(const ElementInput& in, MatX& K, MatX& M) {
 
   shell::AddNodal<3, 3>(kp, shell::kPlateDofs, 1.0, kl);
   shell::AddNodal<3, 2>(km, shell::kMembraneDofs, 1.0, kl);
+  // a laminate's membrane-bending coupling: eps0^T B kappa, both constant
+  if (!sc.coupling.isZero(0.0)) {
+    const Eigen::Matrix<double, 6, 9> kmb = bm.transpose() * sc.coupling * bb * area;
+    shell::AddCoupling<3, 2, 3>(kmb, shell::kMembraneDofs, shell::kPlateDofs, kl);
+  }
   shell::AddTranslationalAndRotaryMass<3>(nn, m0, m2, ml);
   const bool lumped = in.mass_form == MassForm::kLumped;
   const Eigen::Vector3d share = Eigen::Vector3d::Constant(area / 3.0);

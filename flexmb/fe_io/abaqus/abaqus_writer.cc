@@ -82,6 +82,9 @@ std::vector<std::string> CheckWritable(const fe::Mesh& mesh) {
       if (e.property < 0 || e.property >= static_cast<int>(mesh.shell_sections.size()))
         throw InputError("has no shell section", {e.origin.file, e.origin.line, element_entity(e)});
       const fe::ShellSection& s = mesh.shell_sections[e.property];
+      if (s.laminate)
+        throw InputError("a laminated section (" + s.laminate->card + ") cannot be written to an Abaqus deck",
+                         {s.origin.file, s.origin.line, "shell section " + std::to_string(s.id)});
       if (s.nsm != 0.0)
         throw InputError("non-structural mass cannot be written to an Abaqus deck", {s.origin.file, s.origin.line, "shell section " + std::to_string(s.id)});
       material = s.material;

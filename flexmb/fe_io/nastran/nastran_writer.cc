@@ -106,6 +106,10 @@ void WriteNastranBulk(const fe::Mesh& mesh, const std::string& path, const Nastr
   const std::vector<int> pid = WrittenIds(mesh.shell_sections);
   for (size_t k = 0; k < mesh.shell_sections.size(); ++k) {
     const fe::ShellSection& s = mesh.shell_sections[k];
+    if (s.laminate)
+      throw InputError("shell section " + Int(s.id) + " is laminated (" + s.laminate->card +
+                           "): the Nastran writer writes PSHELL only",
+                       {s.origin.file, s.origin.line, "shell section " + Int(s.id)});
     if (s.material < 0 || s.material >= static_cast<int>(mesh.materials.size()))
       throw InputError("shell section " + Int(s.id) + " has no material", {mesh.source, 0, "FE model"});
     const std::string m = Int(mid[static_cast<size_t>(s.material)]);
