@@ -95,6 +95,7 @@ class Builder {
   std::vector<int> node_cd_;                    // displacement system per node
   std::map<int, int> materials_;                // MAT1 id -> index
   std::map<int, std::string> other_materials_;  // unsupported material id -> card
+  std::map<int, fe::LaminatePly> ply_materials_;  // MAT8 id -> its ply (t, theta unset)
   std::map<int, fe::Origin> material_origin_;
   std::map<int, PropertyRef> properties_;
   std::map<int, fe::Origin> property_origin_;
@@ -143,6 +144,12 @@ class Builder {
   // nastran_properties.cc
   void AddProperty(const Entry& e);
   int AddPshell(const Entry& e, int pid);
+
+  // nastran_laminates.cc
+  void AddMat8(const Entry& e, int id);
+  fe::LaminatePly PlyMaterial(const Entry& e, int i, int mid);
+  int AddPcomp(const Entry& e, int pid);
+  void ReadShellMaterialAngle(const Entry& e, int i, fe::Element& el);
   void ReadPbar(const Entry& e, fe::BeamSection& s);
   void ReadBeamLibrary(const Entry& e, fe::BeamSection& s);
   void ReadPbeam(const Entry& e, fe::BeamSection& s);

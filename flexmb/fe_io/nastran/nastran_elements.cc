@@ -52,13 +52,10 @@ void Builder::AddShell(const Entry& e) {
   fe::Element el = NewElement(e, row.type);
   const int nn = row.nodes;
   const int pid = e.Int(2, "PID", el.id);
-  el.property = PropertyIndex(e, 2, pid, {"PSHELL"});
+  el.property = PropertyIndex(e, 2, pid, {"PSHELL", "PCOMP", "PCOMPG"});
   ReadNodes(e, el, 3, nn);
-  // THETA or MCID: material orientation, irrelevant for isotropic MAT1
-  if (!e.Blank(3 + nn) && nastran::LooksReal(e.Text(3 + nn)))
-    e.Real(3 + nn, "THETA");
-  else
-    e.Int(3 + nn, "MCID", 0);
+  // THETA or MCID: the material axis, for laminates (isotropic MAT1: no effect)
+  ReadShellMaterialAngle(e, 3 + nn, el);
   el.shell_offset = e.Real(4 + nn, "ZOFFS", 0.0);
   const int tflag = e.Int(10, "TFLAG", 0);
   if (tflag != 0 && tflag != 1) e.Fail(10, "TFLAG must be 0 or 1");

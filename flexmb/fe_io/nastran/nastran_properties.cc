@@ -35,6 +35,8 @@ void Builder::AddProperty(const Entry& e) {
   int index = -1;
   if (n == "PSHELL") {
     index = AddPshell(e, pid);
+  } else if (n == "PCOMP" || n == "PCOMPG") {
+    index = AddPcomp(e, pid);
   } else if (n == "PSOLID") {
     fe::SolidSection s;
     s.id = pid;

@@ -568,7 +568,7 @@ TEST(NastranReader, BadInputNamesFileLineAndEntity) {
            ":6: RBE3 9: components 3 of node 2 refer to its displacement system CD = 1", {"unsupported"}},
           {"wrong_property_kind.bdf", kBase + "PBAR,3,1,1.-4,1.-8,1.-8,2.-8\nCQUAD4,7,3,1,2,3,4\n",
            ":8: CQUAD4 7: property 3 is a PBAR; CQUAD4 needs a PSHELL", {}},
-          {"unsupported_material.bdf", "MAT8,2,1.+11,1.+10,.3\nPSHELL,1,2,.01,2\n",
+          {"unsupported_material.bdf", "MAT8,2,1.+11,1.+10,.3,5.+9\nPSHELL,1,2,.01,2\n",
            ":2: PSHELL 1: material 2 is a MAT8", {}},
           {"space_separated_fixed_format.bdf", "GRID 1 0 1. 2. 3.\n", ":1: malformed card name 'GRID 1 0'", {}},
           {"too_many_free_fields.bdf", "GRID,1,,0.,0.,0.,,,,,7\n", ":1: free-field line has 11 fields", {}},
