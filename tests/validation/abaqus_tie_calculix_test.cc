@@ -41,11 +41,9 @@ namespace flexmb::fe {
 namespace abaqus_tie_calculix_test {
 
 using flexmb::testing::CcxScratchDir;
-using flexmb::testing::FlexmbFrequencies;
 using flexmb::testing::HaveCcx;
-using flexmb::testing::MaxRelDiff;
-using flexmb::testing::ParseCcxFrequencies;
-using flexmb::testing::PrintFrequencies;
+using flexmb::testing::MaxRelDiffByNode;
+using flexmb::testing::ParseCcxDisplacements;
 using flexmb::testing::RunCcx;
 
 // the deck's nodes and elements, written as text
@@ -165,30 +163,6 @@ Mesh NearestNodeTie(Mesh m) {
   return m;
 }
 
-// tip displacements [m] by node id, from "displacements (vx,vy,vz) for set TIP"
-std::map<int, Vec3> ParseTipDisplacements(const std::filesystem::path& dat) {
-  std::istringstream in(flexmb::testing::CcxReadText(dat));
-  std::string line;
-  std::map<int, Vec3> u;
-  bool inside = false;
-  while (std::getline(in, line)) {
-    if (line.find("displacements (vx,vy,vz) for set TIP") != std::string::npos) {
-      inside = true;
-      continue;
-    }
-    if (!inside) continue;
-    std::istringstream row(line);
-    int id = 0;
-    Vec3 v;
-    if (row >> id >> v.x() >> v.y() >> v.z()) {
-      u[id] = v;
-    } else if (!u.empty()) {
-      break;
-    }
-  }
-  return u;
-}
-
 // flexmb's static displacements of the TIP nodes under the deck's loads
 // (300 N in -y and 100 N in z on every tip node)
 std::map<int, Vec3> TipDisplacements(const Mesh& m) {
@@ -204,16 +178,6 @@ std::map<int, Vec3> TipDisplacements(const Mesh& m) {
   std::map<int, Vec3> out;
   for (int n : tip) out[m.nodes[n].id] = Vec3(u[a.dofs.full[n][0]], u[a.dofs.full[n][1]], u[a.dofs.full[n][2]]);
   return out;
-}
-
-// max |a - b| over the tip nodes, relative to the largest |b|
-double TipDiff(const std::map<int, Vec3>& a, const std::map<int, Vec3>& b) {
-  double d = 0.0, scale = 0.0;
-  for (const auto& [id, v] : b) {
-    scale = std::max(scale, v.cwiseAbs().maxCoeff());
-    d = std::max(d, (a.at(id) - v).cwiseAbs().maxCoeff());
-  }
-  return d / scale;
 }
 
 struct Case {
@@ -232,16 +196,16 @@ TEST_P(TieCalculix, TipDeflectionOfTheTiedCantileverEqualsCcx) {
   CcxScratchDir dir(std::string("tie_") + c.master);
   const std::string deck = CantileverDeck(c.master, c.slave, "*TIE, NAME=GLUE\nSLAVE, MASTER\n");
   ASSERT_TRUE(RunCcx(dir.path, "job", deck));
-  const std::map<int, Vec3> ccx = ParseTipDisplacements(dir.path / "job.dat");
+  const std::map<int, Vec3> ccx = ParseCcxDisplacements(dir.path / "job.dat", "TIP");
   const Mesh mesh = io::ReadAbaqus((dir.path / "job.inp").string());
   ASSERT_EQ(ccx.size(), mesh.node_sets.at("TIP").size());
   const std::map<int, Vec3> ours = TipDisplacements(mesh), nearest = TipDisplacements(NearestNodeTie(mesh));
   const int probe = ccx.begin()->first;
   std::printf("  %s\n  tip node %d uy: ccx %.7e, flexmb %.7e, nearest master node %.7e\n", c.what, probe,
               ccx.at(probe).y(), ours.at(probe).y(), nearest.at(probe).y());
-  std::printf("  max rel diff over the tip: *TIE %.2e, nearest node %.2e\n", TipDiff(ours, ccx), TipDiff(nearest, ccx));
-  EXPECT_LT(TipDiff(ours, ccx), 2e-6);  // ccx prints 7 significant digits
-  EXPECT_GT(TipDiff(nearest, ccx), 1e-4);
+  std::printf("  max rel diff over the tip: *TIE %.2e, nearest node %.2e\n", MaxRelDiffByNode(ours, ccx), MaxRelDiffByNode(nearest, ccx));
+  EXPECT_LT(MaxRelDiffByNode(ours, ccx), 2e-6);  // ccx prints 7 significant digits
+  EXPECT_GT(MaxRelDiffByNode(nearest, ccx), 1e-4);
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -124,6 +124,43 @@ inline double MatrixRelDiff(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) 
   return (a - b).cwiseAbs().maxCoeff() / b.cwiseAbs().maxCoeff();
 }
 
+/// Displacements [m] by node id from the table ccx writes to job.dat for
+/// "*NODE PRINT, NSET=set" + "U": after the line "displacements
+/// (vx,vy,vz) for set SET", one "id ux uy uz" row per node.
+inline std::map<int, fe::Vec3> ParseCcxDisplacements(const std::filesystem::path& dat, const std::string& set) {
+  std::istringstream in(CcxReadText(dat));
+  std::string line;
+  std::map<int, fe::Vec3> u;
+  bool inside = false;
+  while (std::getline(in, line)) {
+    if (line.find("displacements (vx,vy,vz) for set " + set) != std::string::npos) {
+      inside = true;
+      continue;
+    }
+    if (!inside) continue;
+    std::istringstream row(line);
+    int id = 0;
+    fe::Vec3 v;
+    if (row >> id >> v.x() >> v.y() >> v.z()) {
+      u[id] = v;
+    } else if (!u.empty()) {
+      break;
+    }
+  }
+  return u;
+}
+
+/// max |a - b| over the nodes of `b` (each must be in `a`), relative to
+/// the largest displacement component of `b`.
+inline double MaxRelDiffByNode(const std::map<int, fe::Vec3>& a, const std::map<int, fe::Vec3>& b) {
+  double d = 0.0, scale = 0.0;
+  for (const auto& [id, v] : b) {
+    scale = std::max(scale, v.cwiseAbs().maxCoeff());
+    d = std::max(d, (a.at(id) - v).cwiseAbs().maxCoeff());
+  }
+  return d / scale;
+}
+
 /// Prints a row of frequencies for the test log.
 inline void PrintFrequencies(const char* what, const std::vector<double>& f) {
   std::printf("  %-36s", what);

@@ -30,7 +30,6 @@
 namespace flexmb::fe {
 namespace nastran_cd_calculix_test {
 
-using flexmb::testing::CcxReadText;
 using flexmb::testing::CcxScratchDir;
 using flexmb::testing::HaveCcx;
 using flexmb::testing::RunCcx;
@@ -44,30 +43,6 @@ Vec3 CdNodeX(int i, int j, int k) { return Vec3(1.0 * i / kCdNx, 0.2 * j / kCdNy
 // tip face (i = kCdNx) and the outer ring of the mid section (i = kCdNx / 2, not the centre)
 bool CdOnTip(int i) { return i == kCdNx; }
 bool CdOnRing(int i, int j, int k) { return i == kCdNx / 2 && !(j == 1 && k == 1); }
-
-// displacements by node id from "displacements (vx,vy,vz) for set NALL"
-std::map<int, Vec3> CdParseDisplacements(const std::filesystem::path& dat) {
-  std::istringstream in(CcxReadText(dat));
-  std::string line;
-  std::map<int, Vec3> u;
-  bool inside = false;
-  while (std::getline(in, line)) {
-    if (line.find("displacements (vx,vy,vz) for set NALL") != std::string::npos) {
-      inside = true;
-      continue;
-    }
-    if (!inside) continue;
-    std::istringstream row(line);
-    int id = 0;
-    Vec3 v;
-    if (row >> id >> v.x() >> v.y() >> v.z()) {
-      u[id] = v;
-    } else if (!u.empty()) {
-      break;
-    }
-  }
-  return u;
-}
 
 TEST(NastranCdCalculix, SkewAndRadialRollersMatchTransform) {
   if (!HaveCcx()) GTEST_SKIP() << "ccx (CalculiX) is not installed";
@@ -146,7 +121,7 @@ TEST(NastranCdCalculix, SkewAndRadialRollersMatchTransform) {
        << load_id << ", 1, " << force.x() << "\n" << load_id << ", 2, " << force.y() << "\n" << load_id << ", 3, "
        << force.z() << "\n*NODE PRINT, NSET=NALL, GLOBAL=YES\nU\n*END STEP\n";
   ASSERT_TRUE(RunCcx(dir.path, "job", deck.str()));
-  const std::map<int, Vec3> ccx = CdParseDisplacements(dir.path / "job.dat");
+  const std::map<int, Vec3> ccx = flexmb::testing::ParseCcxDisplacements(dir.path / "job.dat", "NALL");
   ASSERT_EQ(ccx.size(), static_cast<size_t>((kCdNx + 1) * (kCdNy + 1) * (kCdNz + 1)));
   // flexmb: the deck read, u = T K^-1 T^T f
   const Mesh mesh = io::ReadNastran(bdf_path);

@@ -32,6 +32,8 @@ using flexmb::testing::CcxReadText;
 using flexmb::testing::CcxScratchDir;
 using flexmb::testing::CcxSteelMesh;
 using flexmb::testing::HaveCcx;
+using flexmb::testing::MaxRelDiffByNode;
+using flexmb::testing::ParseCcxDisplacements;
 using flexmb::testing::RunCcx;
 
 constexpr int kNx = 8, kNy = 2, kNz = 2;
@@ -70,30 +72,6 @@ Mesh Block() {
   m.nodes.push_back(ref);
   m.IndexNodes();
   return m;
-}
-
-// tip displacements [m] by node id, from "displacements (vx,vy,vz) for set TIP"
-std::map<int, Vec3> ParseTipDisplacements(const std::filesystem::path& dat) {
-  std::istringstream in(CcxReadText(dat));
-  std::string line;
-  std::map<int, Vec3> u;
-  bool inside = false;
-  while (std::getline(in, line)) {
-    if (line.find("displacements (vx,vy,vz) for set TIP") != std::string::npos) {
-      inside = true;
-      continue;
-    }
-    if (!inside) continue;
-    std::istringstream row(line);
-    int id = 0;
-    Vec3 v;
-    if (row >> id >> v.x() >> v.y() >> v.z()) {
-      u[id] = v;
-    } else if (!u.empty()) {
-      break;
-    }
-  }
-  return u;
 }
 
 // flexmb's tip displacements under the force f at the reference node, with
@@ -142,16 +120,6 @@ std::map<int, Vec3> FlexmbTip(const Mesh& block, const Vec3& f, bool area_weight
   return tip;
 }
 
-// max |a - b| over the tip nodes, relative to the largest |b|
-double TipDiff(const std::map<int, Vec3>& a, const std::map<int, Vec3>& b) {
-  double d = 0.0, scale = 0.0;
-  for (const auto& entry : b) {
-    scale = std::max(scale, entry.second.cwiseAbs().maxCoeff());
-    d = std::max(d, (a.at(entry.first) - entry.second).cwiseAbs().maxCoeff());
-  }
-  return d / scale;
-}
-
 TEST(Rbe3Calculix, TipDeflectionMatchesDistributingCoupling) {
   if (!HaveCcx()) GTEST_SKIP() << "ccx (CalculiX) is not installed";
   const Mesh block = Block();
@@ -184,16 +152,16 @@ TEST(Rbe3Calculix, TipDeflectionMatchesDistributingCoupling) {
        << ref_id << ", 1, " << force.x() << "\n" << ref_id << ", 2, " << force.y() << "\n" << ref_id << ", 3, "
        << force.z() << "\n*NODE PRINT, NSET=TIP\nU\n*END STEP\n";
   ASSERT_TRUE(RunCcx(dir.path, "job", deck.str()));
-  const std::map<int, Vec3> ccx = ParseTipDisplacements(dir.path / "job.dat");
+  const std::map<int, Vec3> ccx = ParseCcxDisplacements(dir.path / "job.dat", "TIP");
   ASSERT_EQ(ccx.size(), 9u);
   const std::map<int, Vec3> area = FlexmbTip(block, force, true);
   const std::map<int, Vec3> equal = FlexmbTip(block, force, false);
   std::printf("  tip node %d uz: ccx %.7e, RBE3 area weights %.7e, equal weights %.7e\n", ccx.begin()->first,
               ccx.begin()->second.z(), area.at(ccx.begin()->first).z(), equal.at(ccx.begin()->first).z());
-  std::printf("  max rel diff: area weights %.2e, equal weights %.2e\n", TipDiff(area, ccx), TipDiff(equal, ccx));
+  std::printf("  max rel diff: area weights %.2e, equal weights %.2e\n", MaxRelDiffByNode(area, ccx), MaxRelDiffByNode(equal, ccx));
   // ccx prints 7 significant digits
-  EXPECT_LT(TipDiff(area, ccx), 2e-6);
-  EXPECT_GT(TipDiff(equal, ccx), 1e-4);
+  EXPECT_LT(MaxRelDiffByNode(area, ccx), 2e-6);
+  EXPECT_GT(MaxRelDiffByNode(equal, ccx), 1e-4);
 }
 
 }  // namespace rbe3_calculix_test
