@@ -185,16 +185,29 @@ TEST(LaminatedPlate, CrossPlyConvergesToTheNavierSolution) {
   }
 }
 
+// the distinct values of the sorted `f` (a pair within 1e-6 counted once),
+// the first `count`: the [0/90] plate's modes (1, 2) and (2, 1) have the
+// same frequency, and a single-vector Lanczos run may return that pair
+// once (docs/validation.md, "Laminated shells")
+std::vector<double> Distinct(const std::vector<double>& f, size_t count) {
+  std::vector<double> out;
+  for (double v : f)
+    if (out.empty() || std::abs(v / out.back() - 1) > 1e-6) out.push_back(v);
+  EXPECT_GE(out.size(), count);
+  out.resize(count);
+  return out;
+}
+
 TEST(LaminatedPlate, UnsymmetricCrossPlyConvergesToTheNavierSolution) {
   // [0/90]: B != 0, the membrane and the bending are coupled
   const std::string pcomp = "PCOMP,1\n,10,0.005,0.,,10,0.005,90.\n";
-  const std::vector<double> exact = AntisymmetricNavierFrequencies(4);
+  const std::vector<double> exact = Distinct(AntisymmetricNavierFrequencies(6), 3);
   std::vector<std::vector<double>> meshes;
-  for (int n : {10, 20, 40}) meshes.push_back(DeckFrequencies(PlateDeck(n, "", pcomp, true), "u", 4));
+  for (int n : {10, 20, 40}) meshes.push_back(Distinct(DeckFrequencies(PlateDeck(n, "", pcomp, true), "u", 6), 3));
   std::printf("  Navier [0/90] [Hz]");
   for (double f : exact) std::printf(" %10.5f", f);
   std::printf("\n");
-  for (size_t m = 0; m < 4; ++m) {
+  for (size_t m = 0; m < 3; ++m) {
     const double e20 = meshes[1][m] / exact[m] - 1, e40 = meshes[2][m] / exact[m] - 1;
     const double extrapolated = (4 * meshes[2][m] - meshes[1][m]) / 3;
     std::printf("  mode %zu: 10/20/40 / exact %.6f %.6f %.6f, Richardson - 1 = %.2e\n", m + 1,
