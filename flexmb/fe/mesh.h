@@ -79,9 +79,10 @@ struct ShellSection {
   int material = -1;          ///< index into Mesh::materials
   double thickness = 0.0;     ///< [m]
   double nsm = 0.0;           ///< non-structural mass per area [kg/m^2]
-  /// A laminated section (PCOMP, PCOMPG): its plies' equivalent section in
-  /// the laminate's material axes, used instead of `material` (then -1)
-  /// and `thickness` (the total); null for a homogeneous shell.
+  /// A laminated or generalized section (PCOMP, PCOMPG; a PSHELL with a
+  /// bending ratio or its own shear stiffness): the equivalent single layer
+  /// in the section's material axes, used instead of `material` (-1 for
+  /// plies) and `thickness` (the total); null for a plain shell.
   std::shared_ptr<const ShellLaminate> laminate;
   Origin origin;
 };

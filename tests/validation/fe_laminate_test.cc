@@ -38,12 +38,11 @@ namespace fe_laminate_test {
 
 constexpr double kA = 1.0, kT = 0.01, kE1 = 138e9, kE2 = 9e9, kNu12 = 0.3, kG = 7.1e9, kRho = 1600.0;
 
-// the Mindlin Navier frequencies [Hz] of the [0/90]s plate, lowest `count`
-std::vector<double> NavierFrequencies(int count) {
-  const Eigen::Matrix3d q = OrthotropicPlaneStress(kE1, kE2, kNu12, kG);
-  const double t3 = kT * kT * kT;
-  const double d11 = t3 * (7 * q(0, 0) + q(1, 1)) / 96, d22 = t3 * (q(0, 0) + 7 * q(1, 1)) / 96;
-  const double d12 = t3 * q(0, 1) / 12, d66 = t3 * q(2, 2) / 12, s = 5.0 / 6.0 * kG * kT;
+// the Mindlin Navier frequencies [Hz] of a simply supported (hard) square
+// plate of bending stiffness d11, d22, d12, d66 [N m], shear stiffness s
+// [N/m], mass m0 [kg/m^2] and rotary inertia m2 [kg], lowest `count`
+std::vector<double> NavierFrequencies(double d11, double d22, double d12, double d66, double s, double m0, double m2,
+                                      int count) {
   std::vector<double> f;
   for (int m = 1; m <= 5; ++m)
     for (int n = 1; n <= 5; ++n) {
@@ -52,7 +51,7 @@ std::vector<double> NavierFrequencies(int count) {
       k << s * (a * a + b * b), s * a, s * b,  //
           s * a, d11 * a * a + d66 * b * b + s, (d12 + d66) * a * b,  //
           s * b, (d12 + d66) * a * b, d66 * a * a + d22 * b * b + s;
-      const Eigen::Vector3d mass(kRho * kT, kRho * t3 / 12, kRho * t3 / 12);
+      const Eigen::Vector3d mass(m0, m2, m2);
       const Eigen::Matrix3d kk = mass.cwiseSqrt().cwiseInverse().asDiagonal() * k *
                                  mass.cwiseSqrt().cwiseInverse().asDiagonal();
       const double w2 = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(kk).eigenvalues()(0);
@@ -61,6 +60,14 @@ std::vector<double> NavierFrequencies(int count) {
   std::sort(f.begin(), f.end());
   f.resize(static_cast<size_t>(count));
   return f;
+}
+
+// the same for the [0/90]s plate (the closed-form D of a cross-ply)
+std::vector<double> NavierFrequencies(int count) {
+  const Eigen::Matrix3d q = OrthotropicPlaneStress(kE1, kE2, kNu12, kG);
+  const double t3 = kT * kT * kT;
+  return NavierFrequencies(t3 * (7 * q(0, 0) + q(1, 1)) / 96, t3 * (q(0, 0) + 7 * q(1, 1)) / 96, t3 * q(0, 1) / 12,
+                           t3 * q(2, 2) / 12, 5.0 / 6.0 * kG * kT, kRho * kT, kRho * t3 / 12, count);
 }
 
 // the Mindlin Navier frequencies [Hz] of the antisymmetric [0/90] plate
@@ -230,6 +237,27 @@ TEST(LaminatedPlate, UnsymmetricCrossPlyConvergesToTheNavierSolution) {
   const std::vector<double> sym = DeckFrequencies(PlateDeck(20, "", kPcomp, true), "s", 4);
   std::printf("  [0/90]s under S2, 20 x 20: f1 %.5f Hz, %.4f times the [0/90]'s\n", sym[0], sym[0] / meshes[1][0]);
   EXPECT_GT(sym[0] / meshes[1][0], 1.1);
+}
+
+TEST(LaminatedPlate, PshellBendingRatioAndShearThicknessFollowTheirNavierSolution) {
+  // steel, t = 10 mm, 12I/T^3 = 2 (D doubled), MID3 = MID1 with TS/T = 1
+  // (S = G t instead of 5/6 G t): Nastran's generalized PSHELL
+  const double e = 2.1e11, nu = 0.3, g = e / (2 * (1 + nu)), rho = 7850, d = 2 * e * kT * kT * kT / (12 * (1 - nu * nu));
+  const std::vector<double> exact =
+      NavierFrequencies(d, d, nu * d, (1 - nu) / 2 * d, g * kT, rho * kT, rho * kT * kT * kT / 12, 4);
+  const std::string pshell = "PSHELL,1,20,0.01,20,2.,20,1.\nMAT1,20,2.1e11,,0.3,7850.\n";
+  std::vector<std::vector<double>> meshes;
+  for (int n : {20, 40}) meshes.push_back(Distinct(DeckFrequencies(PlateDeck(n, "", pshell), "p", 6), 3));
+  const std::vector<double> ex = Distinct(exact, 3);
+  for (size_t m = 0; m < 3; ++m) {
+    const double extrapolated = (4 * meshes[1][m] - meshes[0][m]) / 3;
+    std::printf("  PSHELL 12I/T^3 = 2, TS/T = 1, mode %zu: Navier %.5f Hz, 20/40 / exact %.6f %.6f, Richardson - 1 "
+                "= %.2e\n", m + 1, ex[m], meshes[0][m] / ex[m], meshes[1][m] / ex[m], extrapolated / ex[m] - 1);
+    EXPECT_LT(std::abs(extrapolated / ex[m] - 1), 3e-4) << "mode " << m;
+  }
+  // a plain PSHELL of the same plate: the ratio matters (about sqrt 2)
+  const std::vector<double> plain = DeckFrequencies(PlateDeck(20, "", "PSHELL,1,20,0.01,20\nMAT1,20,2.1e11,,0.3,7850.\n"), "q", 4);
+  EXPECT_GT(meshes[0][0] / plain[0], 1.35);
 }
 
 TEST(LaminatedPlate, MaterialAxisByThetaMcidOrPlyAnglesSwapsXAndY) {

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -75,16 +76,33 @@ int Builder::AddPshell(const Entry& e, int pid) {
   if (mid2 != mid1)
     e.Fail(4, "MID2 = " + std::to_string(mid2) + " differs from MID1 = " + std::to_string(mid1) +
                   ": unsupported (flexmb's shells use one isotropic material)");
-  const double ratio = e.Real(5, "12I/T**3", 1.0);
-  if (std::abs(ratio - 1.0) > 1e-6)
-    e.Fail(5, "12I/T**3 = " + Str(ratio) + ": bending stiffness ratios other than 1 are not supported");
+  const double ratio = Positive(e, 5, "12I/T**3", e.Real(5, "12I/T**3", 1.0));
   // blank MID3: Nastran neglects transverse shear flexibility; flexmb's
-  // shells keep it (Mindlin), which makes no difference for thin shells
-  if (!e.Blank(6) && e.Int(6, "MID3") != mid1)
-    e.Fail(6, "MID3 = " + e.Text(6) + " differs from MID1 = " + std::to_string(mid1) + ": unsupported");
-  const double ts = e.Real(7, "TS/T", 5.0 / 6.0);
-  if (std::abs(ts - 5.0 / 6.0) > 1e-4)
-    e.Fail(7, "TS/T = " + Str(ts) + ": flexmb's shells use the shear factor 5/6 (unsupported)");
+  // shells keep it (Mindlin, 5/6 G t of MID1), which makes no difference
+  // for thin shells; a MID3 gives G3 TS (TS/T times T)
+  const int mid3 = e.Blank(6) ? -1 : e.Id(6, "MID3");
+  const double ts = Positive(e, 7, "TS/T", e.Real(7, "TS/T", 5.0 / 6.0));
+  const bool plain = std::abs(ratio - 1.0) <= 1e-6 && (mid3 < 0 || (mid3 == mid1 && std::abs(ts - 5.0 / 6.0) <= 1e-4));
+  if (!plain) {
+    // a bending ratio or another shear stiffness: the section as an
+    // equivalent single layer (fe/laminate.h) of MID1's plane stress,
+    // A = q T, D = q 12I/T^3 T^3 / 12, S = G3 TS (no coupling)
+    const fe::Material& m1 = mesh_.materials[static_cast<size_t>(s.material)];
+    const double t = s.thickness, g3 = mid3 < 0 ? m1.G : mesh_.materials[static_cast<size_t>(MaterialIndex(e, 6, mid3))].G;
+    auto l = std::make_shared<fe::ShellLaminate>();
+    const Eigen::Matrix3d q = fe::IsotropicPlaneStress(m1.E, m1.nu);
+    l->A = q * t;
+    l->D = q * (ratio * t * t * t / 12.0);
+    l->S = Eigen::Matrix2d::Identity() * (g3 * (mid3 < 0 ? 5.0 / 6.0 : ts) * t);
+    l->mass = m1.rho * t;
+    l->rotary = m1.rho * t * t * t / 12.0;
+    l->thickness = t;
+    l->z_bottom = -0.5 * t;
+    l->z_top = 0.5 * t;
+    l->q_bottom = l->q_top = q;
+    l->card = "PSHELL " + std::to_string(pid);
+    s.laminate = std::move(l);
+  }
   s.nsm = NonNegative(e, 8, "NSM", e.Real(8, "NSM", 0.0));
   e.Real(9, "Z1", 0.0);
   e.Real(10, "Z2", 0.0);
