@@ -89,17 +89,14 @@ int Builder::AddPshell(const Entry& e, int pid) {
     // A = q T, D = q 12I/T^3 T^3 / 12, S = G3 TS (no coupling)
     const fe::Material& m1 = mesh_.materials[static_cast<size_t>(s.material)];
     const double t = s.thickness, g3 = mid3 < 0 ? m1.G : mesh_.materials[static_cast<size_t>(MaterialIndex(e, 6, mid3))].G;
-    auto l = std::make_shared<fe::ShellLaminate>();
-    const Eigen::Matrix3d q = fe::IsotropicPlaneStress(m1.E, m1.nu);
-    l->A = q * t;
-    l->D = q * (ratio * t * t * t / 12.0);
+    fe::LaminatePly ply;  // one ply of MID1 through the thickness, then the ratio and the shear
+    ply.q = fe::IsotropicPlaneStress(m1.E, m1.nu);
+    ply.g13 = ply.g23 = m1.G;
+    ply.rho = m1.rho;
+    ply.t = t;
+    auto l = std::make_shared<fe::ShellLaminate>(fe::StackPlies({ply}, -0.5 * t));
+    l->D *= ratio;
     l->S = Eigen::Matrix2d::Identity() * (g3 * (mid3 < 0 ? 5.0 / 6.0 : ts) * t);
-    l->mass = m1.rho * t;
-    l->rotary = m1.rho * t * t * t / 12.0;
-    l->thickness = t;
-    l->z_bottom = -0.5 * t;
-    l->z_top = 0.5 * t;
-    l->q_bottom = l->q_top = q;
     l->card = "PSHELL " + std::to_string(pid);
     s.laminate = std::move(l);
   }
