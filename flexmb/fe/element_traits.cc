@@ -4,6 +4,7 @@
 
 #include "flexmb/common/error.h"
 #include "flexmb/fe/elements/beam2.h"
+#include "flexmb/fe/elements/beam3.h"
 #include "flexmb/fe/elements/rod2.h"
 #include "flexmb/fe/elements/shell_quad4.h"
 #include "flexmb/fe/elements/shell_tria3.h"
@@ -88,6 +89,7 @@ constexpr AbaqusName kTraitsC3D15[] = {{"C3D15"}};
 constexpr AbaqusName kTraitsC3D20[] = {{"C3D20"}};
 constexpr AbaqusName kTraitsC3D20R[] = {{"C3D20R"}};
 constexpr AbaqusName kTraitsT3D2[] = {{"T3D2"}};
+constexpr AbaqusName kTraitsB32[] = {{"B32"}, {"B32R"}, {"B32H"}};
 
 // Abaqus faces (element-based surfaces); a shell's both sides are all its nodes
 constexpr AbaqusFace kTraitsQuadFaces[] = {
@@ -131,6 +133,9 @@ constexpr int kTraitsNastranWedge15[] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 12, 13, 14, 
 constexpr int kTraitsGmshTet10[] = {0, 1, 2, 3, 4, 5, 6, 7, 9, 8};
 // gmsh prism 15: edges 0-1, 0-2, 0-3, 1-2, 1-4, 2-5, 3-4, 3-5, 4-5
 constexpr int kTraitsGmshWedge15[] = {0, 1, 2, 3, 4, 5, 6, 9, 7, 12, 14, 13, 8, 10, 11};
+
+// gmsh line 3 and VTK quadratic edge: the mid node last (flexmb, as Abaqus: A, mid, B)
+constexpr int kTraitsLine3Order[] = {0, 2, 1};
 
 // VTK wedges: the base 0 1 2 turns the other way (its normal points away from 3 4 5)
 constexpr int kTraitsVtkWedge6[] = {0, 2, 1, 3, 5, 4};
@@ -318,6 +323,21 @@ constexpr ElementTraits kTraitsRows[] = {
      .stress = Rod2SectionForces,
      .geometric_stiffness = TraitsRod2Geometric,
      .translations_only = true},
+    {.type = kBeam3,
+     .name = "beam3",
+     .description = "3-node beam",
+     .nodes = 3,
+     .corners = 2,  // the ends, nodes 1 and 3 (Abaqus's order puts the mid node between them)
+     .family = ElementFamily::kBeam,
+     .abaqus = kTraitsB32,
+     .gmsh_code = 8,
+     .gmsh_order = kTraitsLine3Order,
+     .vtk_code = 21,
+     .vtk_order = kTraitsLine3Order,
+     .body_file_code = 11,
+     .matrices = Beam3Matrices,
+     .stress = Beam3SectionForces,
+     .geometric_stiffness = Beam3GeometricStiffness},
 };
 
 constexpr bool TraitsRowsInIdOrder() {

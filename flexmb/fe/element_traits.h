@@ -56,7 +56,7 @@ struct ElementTraits {
   const char* name = "";           ///< short name ("tet10"): the body file's enum member
   const char* description = "";    ///< for messages ("10-node tetrahedron")
   int nodes = 0;                   ///< node count
-  int corners = 0;                 ///< corner nodes (the first ones)
+  int corners = 0;                 ///< corner nodes (the first ones; the 3-node beam: its ends)
   ElementFamily family = ElementFamily::kSolid;
   /// Nastran connectivity cards ("CBAR", "CBEAM"). A solid card is read as
   /// the row whose `nodes` grid points it gives.

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "flexmb/fe/elements/beam3.h"
 #include "tests/validation/fe_beam_theory.h"
 #include "tests/validation/fe_validation.h"
 
@@ -28,9 +29,10 @@ namespace fe_beam_test {
 constexpr double kE = 2.1e11, kNu = 0.3, kRho = 7850.0;
 
 // n equal beam elements of a square b x b section from the origin along
-// `axis`, length L, orientation vector v
+// `axis`, length L, orientation vector v: 2-node beams, or with `beam3`
+// 3-node beams (B32) with their mid nodes
 Mesh BeamMesh(int n, double L, double b, double k_shear, const Vec3& axis = Vec3::UnitX(),
-              const Vec3& v = Vec3::UnitY()) {
+              const Vec3& v = Vec3::UnitY(), bool beam3 = false) {
   Mesh mesh;
   const int mat = testing::AddMaterial(mesh, kE, kNu, kRho);
   BeamSection sec;
@@ -40,6 +42,12 @@ Mesh BeamMesh(int n, double L, double b, double k_shear, const Vec3& axis = Vec3
   sec.J = 0.1406 * b * b * b * b;
   sec.ky = sec.kz = k_shear;
   mesh.beam_sections.push_back(sec);
+  if (beam3) {
+    for (int i = 0; i <= 2 * n; ++i) testing::AddNode(mesh, axis.normalized() * (L * i / (2 * n)));
+    for (int i = 0; i < n; ++i)
+      mesh.elements[testing::AddElement(mesh, kBeam3, 0, {2 * i, 2 * i + 1, 2 * i + 2})].orientation = v;
+    return mesh;
+  }
   for (int i = 0; i <= n; ++i) testing::AddNode(mesh, axis.normalized() * (L * i / n));
   for (int i = 0; i < n; ++i) testing::AddBeam(mesh, 0, i, i + 1, v);
   return mesh;
@@ -58,9 +66,10 @@ BeamProperties Theory(double L, double b, double k_shear) {
 // omega [rad/s] of the three lowest bending modes in the x-y plane: every
 // node keeps only uy and rz (ux, uz, rx, ry fixed; they do not couple with
 // x-y bending of a straight beam along x), node 0 clamped for a cantilever
-std::vector<double> PlanarOmegas(int n, double L, double b, double k_shear, BeamSupport support) {
-  Mesh mesh = BeamMesh(n, L, b, k_shear);
-  for (int i = 0; i <= n; ++i) testing::AddConstraint(mesh, i, 0b011101);
+std::vector<double> PlanarOmegas(int n, double L, double b, double k_shear, BeamSupport support,
+                                 bool beam3 = false) {
+  Mesh mesh = BeamMesh(n, L, b, k_shear, Vec3::UnitX(), Vec3::UnitY(), beam3);
+  for (int i = 0; i < static_cast<int>(mesh.nodes.size()); ++i) testing::AddConstraint(mesh, i, 0b011101);
   if (support == BeamSupport::kCantilever) testing::AddConstraint(mesh, 0, 0b111111);
   const int rigid = support == BeamSupport::kFreeFree ? 2 : 0;
   const ModalResult r = SolveMeshModes(mesh, rigid + 3);
@@ -93,11 +102,11 @@ TEST(FeBeamValidation, ReferenceSolverAgainstClosedForms) {
 }
 
 void CheckPlanarBeam(const char* name, double L, double b, double k_shear,
-                     const std::vector<int>& meshes, double min_ratio) {
+                     const std::vector<int>& meshes, double min_ratio, bool beam3 = false) {
   const BeamProperties p = Theory(L, b, k_shear);
   for (BeamSupport support : {BeamSupport::kCantilever, BeamSupport::kFreeFree}) {
     std::vector<std::vector<double>> omegas;
-    for (int n : meshes) omegas.push_back(PlanarOmegas(n, L, b, k_shear, support));
+    for (int n : meshes) omegas.push_back(PlanarOmegas(n, L, b, k_shear, support, beam3));
     for (int k = 0; k < 3; ++k) {
       Convergence c{std::string(name) +
                         (support == BeamSupport::kCantilever ? " cantilever" : " free-free") +
@@ -132,6 +141,17 @@ TEST(FeBeamValidation, SlenderBeamAgainstEulerBernoulli) {
 // ask for at least O(h) per halving, from 8 elements on as above
 TEST(FeBeamValidation, ThickBeamAgainstTimoshenko) {
   CheckPlanarBeam("thick beam2", 1.0, 0.2, 5.0 / 6.0, {8, 16, 32}, 2.0);
+}
+
+// 3-node beams (B32): two exact halves per element, so n elements are the
+// 2n-element beam2 mesh and converge as it does: O(h^4) per halving slender
+// (at least 8 asked), O(h^2) thick (at least 2), to the same references
+TEST(FeBeamValidation, SlenderBeam3AgainstEulerBernoulli) {
+  CheckPlanarBeam("slender beam3", 1.0, 0.01, 0.0, {4, 8, 16}, 8.0, true);
+}
+
+TEST(FeBeamValidation, ThickBeam3AgainstTimoshenko) {
+  CheckPlanarBeam("thick beam3", 1.0, 0.2, 5.0 / 6.0, {4, 8, 16}, 2.0, true);
 }
 
 // full 3D: a free-free beam of square section along a skew axis has six

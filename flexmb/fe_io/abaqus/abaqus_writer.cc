@@ -51,6 +51,13 @@ void WriteIds(std::FILE* f, const std::vector<int>& ids) {
   }
 }
 
+// whether Abaqus names a variant of the type without shear flexibility
+bool HasEulerBernoulliName(fe::ElementType type) {
+  for (const fe::AbaqusName& a : fe::Traits(type).abaqus)
+    if (a.variant == fe::AbaqusVariant::kEulerBernoulli) return true;
+  return false;
+}
+
 // the type's first Abaqus name; a beam without shear flexibility gets its
 // Euler-Bernoulli name (B33)
 const char* AbaqusType(const fe::Mesh& mesh, const fe::Element& e) {
@@ -96,6 +103,10 @@ std::vector<std::string> CheckWritable(const fe::Mesh& mesh) {
       if (s.nsm != 0.0) throw InputError("non-structural mass cannot be written to an Abaqus deck", {s.origin.file, s.origin.line, se});
       if ((s.ky == 0.0) != (s.kz == 0.0))
         throw InputError("shear factors with one of ky, kz zero cannot be written", {s.origin.file, s.origin.line, se});
+      if (s.ky == 0.0 && s.kz == 0.0 && !fe::Traits(e.type).translations_only && !HasEulerBernoulliName(e.type))
+        throw InputError("a beam without shear flexibility (ky = kz = 0) has no Abaqus name for this element "
+                         "(Abaqus's Euler-Bernoulli beam B33 has 2 nodes)",
+                         {e.origin.file, e.origin.line, element_entity(e)});
       if (!e.offset_a.isZero(0.0) || !e.offset_b.isZero(0.0))
         throw InputError("beam end offsets cannot be written to an Abaqus deck", {e.origin.file, e.origin.line, element_entity(e)});
       material = s.material;
