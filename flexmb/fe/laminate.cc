@@ -53,8 +53,8 @@ ShellLaminate StackPlies(const std::vector<LaminatePly>& plies, double z0) {
     l.mass += p.rho * p.t;
     l.rotary += p.rho * (zt * zt * zt - zb * zb * zb) / 3.0;
     l.thickness += p.t;
-    if (k == 0) l.q_bottom = q;
-    if (k + 1 == plies.size()) l.q_top = q;
+    if (k == 0) l.q_bottom = l.qb_bottom = q;
+    if (k + 1 == plies.size()) l.q_top = l.qb_top = q;
     z = zt;
   }
   l.z_top = z;
@@ -69,6 +69,8 @@ ShellLaminate InElementAxes(const ShellLaminate& l, double theta) {
   r.S = RotateShear(l.S, theta);
   r.q_bottom = RotatePlaneStress(l.q_bottom, theta);
   r.q_top = RotatePlaneStress(l.q_top, theta);
+  r.qb_bottom = RotatePlaneStress(l.qb_bottom, theta);
+  r.qb_top = RotatePlaneStress(l.qb_top, theta);
   return r;
 }
 

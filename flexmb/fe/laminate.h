@@ -1,6 +1,6 @@
 #pragma once
 /// \file laminate.h
-/// Laminated shells (Nastran PCOMP / PCOMPG): the equivalent single-layer
+/// Laminated shells (Nastran PCOMP / PCOMPG, a generalized PSHELL): the equivalent single-layer
 /// section of a stack of plies (classical lamination theory), its rotation
 /// into an element's axes, and the plane-stress stiffness of an isotropic
 /// or orthotropic ply. Formulation and what is approximated: docs/design.md,
@@ -36,6 +36,11 @@ struct ShellLaminate {
   double z_bottom = 0.0, z_top = 0.0;           ///< outer surfaces from the reference surface [m]
   Eigen::Matrix3d q_bottom = Eigen::Matrix3d::Zero();  ///< q of the bottom ply in laminate axes [Pa]
   Eigen::Matrix3d q_top = Eigen::Matrix3d::Zero();     ///< q of the top ply in laminate axes [Pa]
+  /// The stiffness of the bending part of the surface stresses, sigma = q
+  /// eps0 + z qb kappa at z_bottom and z_top: the outer plies' q for a
+  /// stack; a PSHELL's MID2 where it differs from MID1 [Pa].
+  Eigen::Matrix3d qb_bottom = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d qb_top = Eigen::Matrix3d::Zero();  ///< as qb_bottom, at z_top [Pa]
   std::string card;                             ///< where it came from, for messages ("PCOMP 7")
 };
 

@@ -260,6 +260,28 @@ TEST(LaminatedPlate, PshellBendingRatioAndShearThicknessFollowTheirNavierSolutio
   EXPECT_GT(meshes[0][0] / plain[0], 1.35);
 }
 
+TEST(LaminatedPlate, PshellWithAnAnisotropicMid2FollowsItsNavierSolution) {
+  // t = 10 mm; MID1 steel (membrane, mass), MID2 a MAT2 of its own
+  // (bending D = t^3 / 12 G: specially orthotropic, G11 != G22), MID3 steel
+  // (shear 5/6 G t): Nastran's PSHELL with three materials
+  const double e = 2.1e11, nu = 0.3, g = e / (2 * (1 + nu)), rho = 7850, c = kT * kT * kT / 12;
+  const double g11 = 2.3e11, g12 = 0.5e11, g22 = 1.2e11, g33 = 0.6e11;
+  const std::vector<double> exact = NavierFrequencies(c * g11, c * g22, c * g12, c * g33, 5.0 / 6.0 * g * kT, rho * kT,
+                                                      rho * kT * kT * kT / 12, 4);
+  const std::string pshell = "PSHELL,1,20,0.01,21,,20\nMAT1,20,2.1e11,,0.3,7850.\nMAT2,21,2.3e11,0.5e11,,1.2e11,,0.6e11\n";
+  std::vector<std::vector<double>> meshes;
+  for (int n : {20, 40}) meshes.push_back(DeckFrequencies(PlateDeck(n, "", pshell), "mat2", 4));
+  for (size_t m = 0; m < 4; ++m) {
+    const double extrapolated = (4 * meshes[1][m] - meshes[0][m]) / 3;
+    std::printf("  PSHELL MID2 = MAT2, mode %zu: Navier %.5f Hz, 20/40 / exact %.6f %.6f, Richardson - 1 = %.2e\n", m + 1,
+                exact[m], meshes[0][m] / exact[m], meshes[1][m] / exact[m], extrapolated / exact[m] - 1);
+    EXPECT_LT(std::abs(extrapolated / exact[m] - 1), 3e-4) << "mode " << m;
+  }
+  // the same plate with MID2 = MID1 (steel bending): G11 and G22 matter
+  const std::vector<double> plain = DeckFrequencies(PlateDeck(20, "", "PSHELL,1,20,0.01,20\nMAT1,20,2.1e11,,0.3,7850.\n"), "s", 4);
+  EXPECT_GT(std::abs(plain[0] / meshes[0][0] - 1), 0.02);
+}
+
 TEST(LaminatedPlate, MaterialAxisByThetaMcidOrPlyAnglesSwapsXAndY) {
   // the square plate is symmetric under x <-> y: turning the material axis
   // by 90 degrees gives the same frequencies (the modes swap)

@@ -118,15 +118,17 @@ template <int N>
 Eigen::Matrix<double, 6, 6 * N> SurfaceStress(const LocalFrame<N>& frame, const ShellData& s,
                                               const Eigen::Matrix<double, 2, N>& dx) {
   // bottom and top: the stiffness of the outer material and its z
-  Eigen::Matrix3d c[2];
+  Eigen::Matrix3d c[2], cb[2];
   double z[2];
   if (s.laminate) {
     c[0] = s.laminate->q_bottom;
     c[1] = s.laminate->q_top;
+    cb[0] = s.laminate->qb_bottom;
+    cb[1] = s.laminate->qb_top;
     z[0] = s.laminate->z_bottom;
     z[1] = s.laminate->z_top;
   } else {
-    c[0] = c[1] = PlaneStressMatrix(s);
+    c[0] = c[1] = cb[0] = cb[1] = PlaneStressMatrix(s);
     z[0] = -0.5 * s.t;
     z[1] = 0.5 * s.t;
   }
@@ -136,7 +138,7 @@ Eigen::Matrix<double, 6, 6 * N> SurfaceStress(const LocalFrame<N>& frame, const 
   Eigen::Matrix<double, 6, 6 * N> local = Eigen::Matrix<double, 6, 6 * N>::Zero();
   for (int side = 0; side < 2; ++side) {
     const Eigen::Matrix<double, 3, 2 * N> sm = c[side] * em;
-    const Eigen::Matrix<double, 3, 3 * N> sb = c[side] * eb * z[side];
+    const Eigen::Matrix<double, 3, 3 * N> sb = cb[side] * eb * z[side];
     for (int i = 0; i < N; ++i) {
       for (int a = 0; a < 2; ++a) local.template block<3, 1>(3 * side, 6 * i + kMembraneDofs[a]) = sm.col(2 * i + a);
       for (int a = 0; a < 3; ++a) local.template block<3, 1>(3 * side, 6 * i + kPlateDofs[a]) = sb.col(3 * i + a);

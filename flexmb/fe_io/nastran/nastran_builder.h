@@ -75,6 +75,15 @@ struct BushProperty {
   std::array<bool, 6> given{};    ///< field not blank
 };
 
+/// A material as a shell section uses it (PSHELL MID1, MID2, MID3): the
+/// plane-stress stiffness in its material axes, the transverse-shear
+/// stiffness (xz, yz) and the density.
+struct ShellMaterial {
+  fe::Mat3 q = fe::Mat3::Zero();                    ///< (s11 s22 s12) = q (e11 e22 g12) [Pa]
+  Eigen::Matrix2d shear = Eigen::Matrix2d::Zero();  ///< (t13 t23) = shear (g13 g23) [Pa]
+  double rho = 0.0;                                 ///< [kg/m^3]
+};
+
 /// Builds the mesh of one bulk data file; see ReadNastran.
 class Builder {
  public:
@@ -96,6 +105,7 @@ class Builder {
   std::map<int, int> materials_;                // MAT1 id -> index
   std::map<int, std::string> other_materials_;  // unsupported material id -> card
   std::map<int, fe::LaminatePly> ply_materials_;  // MAT8 id -> its ply (t, theta unset)
+  std::map<int, ShellMaterial> mat2_;           // MAT2 id -> its shell stiffness
   std::map<int, fe::Origin> material_origin_;
   std::map<int, PropertyRef> properties_;
   std::map<int, fe::Origin> property_origin_;
@@ -147,7 +157,9 @@ class Builder {
 
   // nastran_laminates.cc
   void AddMat8(const Entry& e, int id);
+  void AddMat2(const Entry& e, int id);
   fe::LaminatePly PlyMaterial(const Entry& e, int i, int mid);
+  ShellMaterial ShellMaterialOf(const Entry& e, int i, int mid);
   int AddPcomp(const Entry& e, int pid);
   void ReadShellMaterialAngle(const Entry& e, int i, fe::Element& el);
   void ReadPbar(const Entry& e, fe::BeamSection& s);

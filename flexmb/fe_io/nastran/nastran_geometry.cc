@@ -129,6 +129,7 @@ void Builder::AddMaterial(const Entry& e) {
   const int id = e.Id(1, "MID");
   CheckNewId(material_origin_, e, id, "material");
   if (e.name() == "MAT8") return AddMat8(e, id);
+  if (e.name() == "MAT2") return AddMat2(e, id);
   if (e.name() != "MAT1") {
     other_materials_[id] = e.name();
     return;

@@ -1,4 +1,5 @@
-// Laminated shells: MAT8 (orthotropic plies), PCOMP and PCOMPG (the ply
+// Laminated shells: MAT8 (orthotropic plies), MAT2 (anisotropic shell
+// materials of a PSHELL), PCOMP and PCOMPG (the ply
 // stack), and the material angle (THETA or MCID) of the shell elements
 // that use them. The section is the equivalent single layer of classical
 // lamination theory (fe/laminate.h); what is approximated: docs/formats.md,
@@ -43,10 +44,52 @@ void Builder::AddMat8(const Entry& e, int id) {
   other_materials_[id] = "MAT8 (an orthotropic ply material: use it in a PCOMP or PCOMPG)";
 }
 
+// MAT2: G11 G12 G13 G22 G23 G33, RHO (thermal, stress limits and damping
+// do not change K or M), MCSID blank or 0 (the element's material axis);
+// the plane-stress matrix [G11 G12 G13; G12 G22 G23; G13 G23 G33] must be
+// positive definite where a PSHELL uses it for membrane or bending, its
+// upper 2 x 2 block [G11 G12; G12 G22] where it is MID3 (transverse shear)
+void Builder::AddMat2(const Entry& e, int id) {
+  ShellMaterial m;
+  const int f[3][3] = {{2, 3, 4}, {3, 5, 6}, {4, 6, 7}};
+  const char* names[3][3] = {{"G11", "G12", "G13"}, {"G12", "G22", "G23"}, {"G13", "G23", "G33"}};
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) m.q(r, c) = e.Real(f[r][c], names[r][c], 0.0);
+  m.shear = m.q.topLeftCorner<2, 2>();
+  m.rho = NonNegative(e, 8, "RHO", e.Real(8, "RHO", 0.0));
+  for (int k = 9; k <= 16; ++k) e.Real(k, "a thermal, stress limit or damping value", 0.0);
+  if (e.Int(17, "MCSID", 0) != 0)
+    e.Fail(17, "MCSID (a material coordinate system of its own) is not supported: leave it blank and give the "
+               "material axis on the elements (THETA or MCID)");
+  if (e.Size() > 17) e.Fail(18, "unexpected field");
+  mat2_[id] = m;
+  other_materials_[id] = "MAT2 (an anisotropic shell material: use it in a PSHELL)";
+}
+
+// MID `mid` (MAT1, MAT2 or MAT8, field i) as a shell section uses it
+ShellMaterial Builder::ShellMaterialOf(const Entry& e, int i, int mid) {
+  ShellMaterial m;
+  if (const auto it = mat2_.find(mid); it != mat2_.end()) return it->second;
+  if (const auto it = ply_materials_.find(mid); it != ply_materials_.end()) {
+    m.q = it->second.q;
+    m.shear = Eigen::Vector2d(it->second.g13, it->second.g23).asDiagonal();
+    m.rho = it->second.rho;
+    return m;
+  }
+  const fe::Material& iso = mesh_.materials[static_cast<size_t>(MaterialIndex(e, i, mid))];
+  m.q = fe::IsotropicPlaneStress(iso.E, iso.nu);
+  m.shear = Eigen::Matrix2d::Identity() * iso.G;
+  m.rho = iso.rho;
+  return m;
+}
+
 // the ply material of MAT1 or MAT8 `mid`, referred to from field i
 fe::LaminatePly Builder::PlyMaterial(const Entry& e, int i, int mid) {
   const auto it = ply_materials_.find(mid);
   if (it != ply_materials_.end()) return it->second;
+  if (mat2_.count(mid) != 0)
+    e.Fail(i, "material " + std::to_string(mid) + " is a MAT2: not supported as a ply (it has no transverse "
+              "shear moduli; give the ply as MAT8 or MAT1)");
   const fe::Material& m = mesh_.materials[MaterialIndex(e, i, mid)];
   fe::LaminatePly p;
   p.q = fe::IsotropicPlaneStress(m.E, m.nu);

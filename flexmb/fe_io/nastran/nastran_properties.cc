@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Cholesky>
+
 #include "flexmb/common/error.h"
 #include "flexmb/fe_io/nastran/nastran_builder.h"
 #include "flexmb/fe_io/nastran/nastran_sections.h"
@@ -69,34 +71,51 @@ int Builder::AddPshell(const Entry& e, int pid) {
   s.id = pid;
   if (e.Blank(2)) e.Fail(2, "MID1 is blank: shells without membrane stiffness are not supported");
   const int mid1 = e.Id(2, "MID1");
-  s.material = MaterialIndex(e, 2, mid1);
   s.thickness = Positive(e, 3, "thickness T", e.Real(3, "T"));
   if (e.Blank(4)) e.Fail(4, "MID2 is blank: membrane-only shells are not supported");
   const int mid2 = e.Int(4, "MID2");
-  if (mid2 != mid1)
-    e.Fail(4, "MID2 = " + std::to_string(mid2) + " differs from MID1 = " + std::to_string(mid1) +
-                  ": unsupported (flexmb's shells use one isotropic material)");
+  if (mid2 <= 0)
+    e.Fail(4, "MID2 = " + std::to_string(mid2) + " (plane strain or no bending) is not supported");
   const double ratio = Positive(e, 5, "12I/T**3", e.Real(5, "12I/T**3", 1.0));
   // blank MID3: Nastran neglects transverse shear flexibility; flexmb's
-  // shells keep it (Mindlin, 5/6 G t of MID1), which makes no difference
-  // for thin shells; a MID3 gives G3 TS (TS/T times T)
+  // shells keep it (Mindlin, 5/6 T times the shear modulus of MID2), which
+  // makes no difference for thin shells; a MID3 gives its shear times TS/T T
   const int mid3 = e.Blank(6) ? -1 : e.Id(6, "MID3");
   const double ts = Positive(e, 7, "TS/T", e.Real(7, "TS/T", 5.0 / 6.0));
-  const bool plain = std::abs(ratio - 1.0) <= 1e-6 && (mid3 < 0 || (mid3 == mid1 && std::abs(ts - 5.0 / 6.0) <= 1e-4));
+  const bool isotropic1 = materials_.count(mid1) != 0;
+  if (isotropic1) s.material = MaterialIndex(e, 2, mid1);
+  const bool plain = isotropic1 && mid2 == mid1 && std::abs(ratio - 1.0) <= 1e-6 &&
+                     (mid3 < 0 || (mid3 == mid1 && std::abs(ts - 5.0 / 6.0) <= 1e-4));
   if (!plain) {
-    // a bending ratio or another shear stiffness: the section as an
-    // equivalent single layer (fe/laminate.h) of MID1's plane stress,
-    // A = q T, D = q 12I/T^3 T^3 / 12, S = G3 TS (no coupling)
-    const fe::Material& m1 = mesh_.materials[static_cast<size_t>(s.material)];
-    const double t = s.thickness, g3 = mid3 < 0 ? m1.G : mesh_.materials[static_cast<size_t>(MaterialIndex(e, 6, mid3))].G;
-    fe::LaminatePly ply;  // one ply of MID1 through the thickness, then the ratio and the shear
-    ply.q = fe::IsotropicPlaneStress(m1.E, m1.nu);
-    ply.g13 = ply.g23 = m1.G;
-    ply.rho = m1.rho;
-    ply.t = t;
-    auto l = std::make_shared<fe::ShellLaminate>(fe::StackPlies({ply}, -0.5 * t));
-    l->D *= ratio;
-    l->S = Eigen::Matrix2d::Identity() * (g3 * (mid3 < 0 ? 5.0 / 6.0 : ts) * t);
+    // MID1 and MID2 of other materials (MAT2, MAT8, another MAT1), a
+    // bending ratio or another shear stiffness: the section as an
+    // equivalent single layer (fe/laminate.h), A = T q1, D = 12I/T^3 T^3 / 12
+    // q2, S = TS/T T G3, no coupling; mass and rotary inertia of MID1's rho
+    const double t = s.thickness;
+    const ShellMaterial m1 = ShellMaterialOf(e, 2, mid1), m2 = ShellMaterialOf(e, 4, mid2);
+    // a MAT2's upper block is in-plane: without MID3, its G33 stands for the transverse shear
+    Eigen::Matrix2d g3 = mat2_.count(mid2) != 0 ? Eigen::Matrix2d(Eigen::Matrix2d::Identity() * m2.q(2, 2)) : m2.shear;
+    if (mid3 >= 0) g3 = ShellMaterialOf(e, 6, mid3).shear;
+    if (m1.q.llt().info() != Eigen::Success || !m1.q.allFinite())
+      e.Fail(2, "the plane-stress matrix of MID1 = " + std::to_string(mid1) + " is not positive definite");
+    if (m2.q.llt().info() != Eigen::Success || !m2.q.allFinite())
+      e.Fail(4, "the plane-stress matrix of MID2 = " + std::to_string(mid2) + " is not positive definite");
+    if (g3.llt().info() != Eigen::Success || !g3.allFinite())
+      e.Fail(mid3 >= 0 ? 6 : 4, "the transverse shear stiffness of " +
+                                    std::string(mid3 >= 0 ? "MID3 = " + std::to_string(mid3)
+                                                          : "MID2 = " + std::to_string(mid2)) +
+                                    " is not positive definite");
+    auto l = std::make_shared<fe::ShellLaminate>();
+    l->A = m1.q * t;
+    l->D = m2.q * (ratio * t * t * t / 12.0);
+    l->S = g3 * ((mid3 < 0 ? 5.0 / 6.0 : ts) * t);
+    l->mass = m1.rho * t;
+    l->rotary = m1.rho * t * t * t / 12.0;
+    l->thickness = t;
+    l->z_bottom = -0.5 * t;
+    l->z_top = 0.5 * t;
+    l->q_bottom = l->q_top = m1.q;
+    l->qb_bottom = l->qb_top = m2.q;
     l->card = "PSHELL " + std::to_string(pid);
     s.laminate = std::move(l);
   }

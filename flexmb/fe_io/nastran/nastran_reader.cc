@@ -214,7 +214,7 @@ int Builder::MaterialIndex(const Entry& e, int i, int id) {
   const auto other = other_materials_.find(id);
   if (other != other_materials_.end())
     e.Fail(i, "material " + std::to_string(id) + " is a " + other->second +
-                  ", which is not supported (only isotropic MAT1)");
+                  ", which is not supported here (MAT1 everywhere; MAT2 and MAT8 in shell properties)");
   e.Fail(i, "material " + std::to_string(id) + " does not exist");
 }
 

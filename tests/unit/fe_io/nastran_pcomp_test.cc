@@ -2,7 +2,7 @@
 // (the listed half mirrored), a blank MID or T repeating the ply before,
 // PCOMPG, MAT1 and MAT8 plies, NSM, the element's THETA; each against the
 // hand-computed laminate; and the errors that name the card and field
-// (LAM options, a MAT8 on a PSHELL, no plies, a missing MCID system).
+// (LAM options, a MAT2 ply, no plies, a missing MCID system).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -72,7 +72,7 @@ TEST(NastranPcomp, BadLaminatesNameCardAndField) {
       {"CQUAD4,1,1,1,2,3,4\nPCOMP,1\n", {"PCOMP 1", "no plies"}},
       {"CQUAD4,1,1,1,2,3,4\nPCOMP,1\n,30,0.001,0.\n", {"PCOMP 1", "material 30 does not exist"}},
       {"CQUAD4,1,1,1,2,3,4\nPCOMP,1,,,,,,,SYM\n,10,-0.001,0.\n", {"PCOMP 1", "ply thickness T"}},
-      {"CQUAD4,1,1,1,2,3,4\nPSHELL,1,10,0.01,10\n", {"PSHELL 1", "MAT8", "PCOMP"}},
+      {"CQUAD4,1,1,1,2,3,4\nPCOMP,1\n,30,0.001,0.\nMAT2,30,1.e9,,,1.e9,,1.e8\n", {"PCOMP 1", "MAT2", "ply"}},
       {"CQUAD4,1,1,1,2,3,4,5\nPCOMP,1,,,,,,,SYM\n,10,0.001,0.\n", {"CQUAD4 1", "coordinate system 5 does not exist"}},
   };
   int k = 0;
