@@ -7,7 +7,9 @@
 #include "flexmb/fe/elements/beam3.h"
 #include "flexmb/fe/elements/rod2.h"
 #include "flexmb/fe/elements/shell_quad4.h"
+#include "flexmb/fe/elements/shell_quad8.h"
 #include "flexmb/fe/elements/shell_tria3.h"
+#include "flexmb/fe/elements/shell_tria6.h"
 #include "flexmb/fe/elements/solid_hex20.h"
 #include "flexmb/fe/elements/solid_hex8.h"
 #include "flexmb/fe/elements/solid_tet10.h"
@@ -62,6 +64,8 @@ void TraitsHex20RMatrices(const ElementInput& in, MatX& K, MatX& M) {
 
 // Nastran cards
 constexpr const char* kTraitsCquad4[] = {"CQUAD4"};
+constexpr const char* kTraitsCquad8[] = {"CQUAD8"};
+constexpr const char* kTraitsCtria6[] = {"CTRIA6"};
 constexpr const char* kTraitsCtria3[] = {"CTRIA3"};
 constexpr const char* kTraitsCbar[] = {"CBAR", "CBEAM"};
 constexpr const char* kTraitsCtetra[] = {"CTETRA"};
@@ -90,12 +94,22 @@ constexpr AbaqusName kTraitsC3D20[] = {{"C3D20"}};
 constexpr AbaqusName kTraitsC3D20R[] = {{"C3D20R"}};
 constexpr AbaqusName kTraitsT3D2[] = {{"T3D2"}};
 constexpr AbaqusName kTraitsB32[] = {{"B32"}, {"B32R"}, {"B32H"}};
+constexpr AbaqusName kTraitsS8[] = {{"S8R"}, {"S8"}, {"S8R5"}};
+constexpr AbaqusName kTraitsS6[] = {{"STRI65"}, {"S6"}};
 
 // Abaqus faces (element-based surfaces); a shell's both sides are all its nodes
 constexpr AbaqusFace kTraitsQuadFaces[] = {
     {"SPOS", 4, {1, 2, 3, 4}}, {"SNEG", 4, {1, 2, 3, 4}}, {"S1", 4, {1, 2, 3, 4}}, {"S2", 4, {1, 2, 3, 4}}};
 constexpr AbaqusFace kTraitsTriaFaces[] = {
     {"SPOS", 3, {1, 2, 3}}, {"SNEG", 3, {1, 2, 3}}, {"S1", 3, {1, 2, 3}}, {"S2", 3, {1, 2, 3}}};
+constexpr AbaqusFace kTraitsQuad8Faces[] = {{"SPOS", 8, {1, 2, 3, 4, 5, 6, 7, 8}},
+                                            {"SNEG", 8, {1, 2, 3, 4, 5, 6, 7, 8}},
+                                            {"S1", 8, {1, 2, 3, 4, 5, 6, 7, 8}},
+                                            {"S2", 8, {1, 2, 3, 4, 5, 6, 7, 8}}};
+constexpr AbaqusFace kTraitsTria6Faces[] = {{"SPOS", 6, {1, 2, 3, 4, 5, 6}},
+                                            {"SNEG", 6, {1, 2, 3, 4, 5, 6}},
+                                            {"S1", 6, {1, 2, 3, 4, 5, 6}},
+                                            {"S2", 6, {1, 2, 3, 4, 5, 6}}};
 constexpr AbaqusFace kTraitsTet4Faces[] = {
     {"S1", 3, {1, 2, 3}}, {"S2", 3, {1, 4, 2}}, {"S3", 3, {2, 4, 3}}, {"S4", 3, {3, 4, 1}}};
 constexpr AbaqusFace kTraitsTet10Faces[] = {{"S1", 6, {1, 2, 3, 5, 6, 7}},
@@ -338,6 +352,36 @@ constexpr ElementTraits kTraitsRows[] = {
      .matrices = Beam3Matrices,
      .stress = Beam3SectionForces,
      .geometric_stiffness = Beam3GeometricStiffness},
+    {.type = kQuad8,
+     .name = "quad8",
+     .description = "8-node shell",
+     .nodes = 8,
+     .corners = 4,
+     .family = ElementFamily::kShell,
+     .nastran_cards = kTraitsCquad8,
+     .abaqus = kTraitsS8,
+     .abaqus_faces = kTraitsQuad8Faces,
+     .gmsh_code = 16,
+     .vtk_code = 23,
+     .body_file_code = 12,
+     .matrices = ShellQuad8Matrices,
+     .stress = ShellQuad8Stress,
+     .geometric_stiffness = TraitsGeometric<ShellQuad8GeometricStiffness>},
+    {.type = kTria6,
+     .name = "tria6",
+     .description = "6-node shell",
+     .nodes = 6,
+     .corners = 3,
+     .family = ElementFamily::kShell,
+     .nastran_cards = kTraitsCtria6,
+     .abaqus = kTraitsS6,
+     .abaqus_faces = kTraitsTria6Faces,
+     .gmsh_code = 9,
+     .vtk_code = 22,
+     .body_file_code = 13,
+     .matrices = ShellTria6Matrices,
+     .stress = ShellTria6Stress,
+     .geometric_stiffness = TraitsGeometric<ShellTria6GeometricStiffness>},
 };
 
 constexpr bool TraitsRowsInIdOrder() {

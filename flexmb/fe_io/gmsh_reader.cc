@@ -25,6 +25,11 @@ struct GmshType {
   int dim = 0;              // topological dimension (2.2: dimension of the physical group)
   bool point = false;       // type 15: no element, nodes still join their groups' node sets
   bool supported = false;   // else read, and accepted only as a boundary of supported elements
+  // second-order lines and surfaces (3-node line, 6-node triangle, 8-node
+  // quadrangle): a boundary of supported elements of higher dimension when
+  // all their nodes belong to such elements (the physical groups of a
+  // second-order solid mesh), an element otherwise
+  bool boundary_if_covered = false;
   ElementType type = ElementType::kQuad4;
   std::span<const int> order;  // node order of the type (fe/element_traits.h)
 };
@@ -61,7 +66,8 @@ const fe::ElementTraits* GmshRow(int code) {
 bool LookUpType(int code, GmshType& t) {
   const GmshCatalogueEntry* c = GmshEntry(code);
   if (c == nullptr) return false;
-  t = {c->nodes, c->dim, code == kGmshPoint, code == kGmshPoint, ElementType::kQuad4, {}};
+  t = {c->nodes, c->dim, code == kGmshPoint, code == kGmshPoint, code == 8 || code == 9 || code == 16,
+       ElementType::kQuad4, {}};
   if (const fe::ElementTraits* row = GmshRow(code)) {
     t.supported = true;
     t.type = row->type;
@@ -508,7 +514,9 @@ class GmshParser {
           }
         }
       }
-      if (!e.type.supported) {
+      bool covered = e.type.boundary_if_covered;
+      for (int n : idx) covered = covered && max_dim[n] > e.type.dim;
+      if (!e.type.supported || covered) {
         // a face or edge of supported elements (e.g. the 6-node triangles of a
         // physical surface on a 10-node tetrahedral mesh) only marks nodes
         for (int n : idx)

@@ -53,24 +53,38 @@ void Builder::AddShell(const Entry& e) {
   const int nn = row.nodes;
   const int pid = e.Int(2, "PID", el.id);
   el.property = PropertyIndex(e, 2, pid, {"PSHELL", "PCOMP", "PCOMPG"});
+  // fields after the grid points (QRG): CQUAD4, CTRIA3: THETA, ZOFFS, -, -,
+  // TFLAG, T1..; CQUAD8: T1-T4, THETA, ZOFFS, TFLAG; CTRIA6: THETA, ZOFFS,
+  // T1-T3, TFLAG
+  struct Fields {
+    int theta, zoffs, tflag, t1, last;
+  };
+  const int corners = row.corners;
+  const Fields f = nn == 8   ? Fields{15, 16, 17, 11, 17}
+                   : nn == 6 ? Fields{9, 10, 14, 11, 14}
+                             : Fields{3 + nn, 4 + nn, 10, 11, 10 + nn};
+  for (int k = corners; k < nn; ++k)
+    if (e.Blank(3 + k))
+      e.Fail(3 + k, "mid-side grid point G" + std::to_string(k + 1) +
+                        " is blank: elements without some mid-side nodes are not supported");
   ReadNodes(e, el, 3, nn);
   // THETA or MCID: the material axis, for laminates (isotropic MAT1: no effect)
-  ReadShellMaterialAngle(e, 3 + nn, el);
-  el.shell_offset = e.Real(4 + nn, "ZOFFS", 0.0);
-  const int tflag = e.Int(10, "TFLAG", 0);
-  if (tflag != 0 && tflag != 1) e.Fail(10, "TFLAG must be 0 or 1");
+  ReadShellMaterialAngle(e, f.theta, el);
+  el.shell_offset = e.Real(f.zoffs, "ZOFFS", 0.0);
+  const int tflag = e.Int(f.tflag, "TFLAG", 0);
+  if (tflag != 0 && tflag != 1) e.Fail(f.tflag, "TFLAG must be 0 or 1");
   const double t = mesh_.shell_sections[el.property].thickness;
-  for (int k = 0; k < nn; ++k) {
-    if (e.Blank(11 + k)) continue;
+  for (int k = 0; k < corners; ++k) {
+    if (e.Blank(f.t1 + k)) continue;
     std::string what = "T";
     what += std::to_string(k + 1);
-    const double ti = e.Real(11 + k, what.c_str());
+    const double ti = e.Real(f.t1 + k, what.c_str());
     const double expected = tflag == 1 ? 1.0 : t;
     if (std::abs(ti - expected) > 1e-6 * expected)
-      e.Fail(11 + k, "corner thicknesses T1-T" + std::to_string(nn) +
-                         " different from the PSHELL thickness are not supported");
+      e.Fail(f.t1 + k, "corner thicknesses T1-T" + std::to_string(corners) +
+                           " different from the PSHELL thickness are not supported");
   }
-  if (e.Size() > 10 + nn) e.Fail(11 + nn, "unexpected field");
+  if (e.Size() > f.last) e.Fail(f.last + 1, "unexpected field");
   mesh_.elements.push_back(std::move(el));
 }
 

@@ -169,7 +169,8 @@ void Builder::ReadShellMaterialAngle(const Entry& e, int i, fe::Element& el) {
     axis = cs.R.col(0);
   }
   const auto x = [&](int k) { return mesh_.nodes[el.nodes[static_cast<size_t>(k)]].x; };
-  const fe::Vec3 normal = el.nodes.size() == 4 ? fe::Vec3((x(2) - x(0)).cross(x(3) - x(1)))
+  const bool quad = el.nodes.size() == 4 || el.nodes.size() == 8;  // the corners' diagonals (as the elements)
+  const fe::Vec3 normal = quad ? fe::Vec3((x(2) - x(0)).cross(x(3) - x(1)))
                                                : fe::Vec3((x(1) - x(0)).cross(x(2) - x(0)));
   const fe::Vec3 n = normal.normalized();
   const fe::Vec3 e1 = (x(1) - x(0) - n * n.dot(x(1) - x(0))).normalized(), e2 = n.cross(e1);

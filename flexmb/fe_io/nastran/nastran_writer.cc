@@ -120,7 +120,7 @@ void WriteNastranBulk(const fe::Mesh& mesh, const std::string& path, const Nastr
   int max_eid = 0;
   for (const fe::Element& e : mesh.elements) {
     const std::string entity = "element " + Int(e.id);
-    if (e.type != fe::ElementType::kQuad4 && e.type != fe::ElementType::kTria3) Refuse(entity + " (not a shell)", mesh);
+    if (e.type != fe::ElementType::kQuad4 && e.type != fe::ElementType::kTria3) Refuse(entity + " (" + std::string(fe::TypeName(e.type)) + ": only 3- and 4-node shells are written)", mesh);
     if (e.id <= 0) throw InputError(entity + ": id is not positive", {mesh.source, 0, entity});
     if (e.property < 0 || e.property >= static_cast<int>(mesh.shell_sections.size()))
       throw InputError(entity + " has no shell section", {mesh.source, 0, entity});

@@ -12,6 +12,7 @@
 
 #include "flexmb/common/error.h"
 #include "flexmb/fe/element_matrices.h"
+#include "flexmb/fe/element_traits.h"
 #include "flexmb/fe/elements/shell_quad4.h"
 #include "flexmb/fe/elements/shell_tria3.h"
 #include "tests/unit/fe/fe_test_models.h"
@@ -53,10 +54,7 @@ struct ShellFixture {
   }
 
   void Compute(MatX& K, MatX& M, MassForm form = MassForm::kConsistent) const {
-    if (element.type == ElementType::kQuad4)
-      ShellQuad4Matrices(Input(form), K, M);
-    else
-      ShellTria3Matrices(Input(form), K, M);
+    Traits(element.type).matrices(Input(form), K, M);
   }
 };
 

@@ -124,7 +124,7 @@ TEST(NastranWriter, RefusesWhatTheDeckWouldNotCarry) {
       {[](Mesh& m) { m.linear_constraints.push_back({}); }, "linear constraints"},
       {[](Mesh& m) { m.constraints.push_back({}); }, "single-point constraints"},
       {[](Mesh& m) { m.nodes[3].id = 0; }, "node id 0 is not positive"},
-      {[](Mesh& m) { m.elements[2].type = ElementType::kHex8; }, "element 3 (not a shell)"},
+      {[](Mesh& m) { m.elements[2].type = ElementType::kHex8; }, "element 3 (8-node hexahedron: only 3- and 4-node shells are written)"},
       {[](Mesh& m) { m.nodes[1].x.x() = std::nan(""); }, "is not finite"},
   };
   for (const Case& c : cases) {
