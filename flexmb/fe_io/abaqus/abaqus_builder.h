@@ -20,8 +20,9 @@
 
 namespace flexmb::io::abaqus {
 
-/// What an element line makes: a structural element or a point-mass part.
-enum class Kind { kStructural, kMass, kRotaryInertia };
+/// What an element line makes: a structural element, a point-mass part or a
+/// spring (SPRING1, SPRING2, SPRINGA).
+enum class Kind { kStructural, kMass, kRotaryInertia, kSpring };
 
 /// Where an element id of the deck went.
 struct ElementRecord {
@@ -40,16 +41,20 @@ struct NamedSet {
   }
 };
 
-/// A MASS or ROTARYI element, waiting for its *MASS / *ROTARY INERTIA.
+/// A MASS, ROTARYI or spring element, waiting for its *MASS / *ROTARY
+/// INERTIA / *SPRING.
 struct MassElement {
   int id = 0;
   Kind kind = Kind::kMass;
   int node = -1;
+  int node_b = -1;                            ///< SPRING2, SPRINGA: the second node
   bool assigned = false;
   double mass = 0.0;                          ///< [kg]
   fe::Mat3 inertia = fe::Mat3::Zero();        ///< [kg m^2], basic frame
+  double k = 0.0;                             ///< springs [N/m or N m/rad]
+  int dof_a = 0, dof_b = 0;                   ///< SPRING1, SPRING2: components 0..5
   fe::Origin origin;
-  std::string type;                           ///< "MASS" or "ROTARYI"
+  std::string type;                           ///< "MASS", "ROTARYI", "SPRING1", "SPRING2" or "SPRINGA"
 };
 
 /// One face of an element-based surface: its element and its nodes (node
@@ -130,6 +135,7 @@ class Builder {
   void BeamSection(const std::vector<Card>& cards, const std::vector<int>& order, int i);
   int SameBeamSection(const fe::BeamSection& v) const;
   void MassCard(const Card& c);
+  void SpringCard(const Card& c);
 
   // abaqus_constraints.cc
   void Boundary(const Card& c);

@@ -33,7 +33,9 @@ bool LookupType(const std::string& t, TypeInfo& info) {
       }
   if (t == "MASS") info = {Kind::kMass, ElementType::kQuad4, false, nullptr, 1};
   if (t == "ROTARYI") info = {Kind::kRotaryInertia, ElementType::kQuad4, false, nullptr, 1};
-  return t == "MASS" || t == "ROTARYI";
+  if (t == "SPRING1") info = {Kind::kSpring, ElementType::kQuad4, false, nullptr, 1};
+  if (t == "SPRING2" || t == "SPRINGA") info = {Kind::kSpring, ElementType::kQuad4, false, nullptr, 2};
+  return t == "MASS" || t == "ROTARYI" || t == "SPRING1" || t == "SPRING2" || t == "SPRINGA";
 }
 
 // the names LookupType knows, for messages
@@ -41,7 +43,7 @@ std::string SupportedTypes() {
   std::string s;
   for (const fe::ElementTraits& row : fe::AllElementTraits())
     for (const fe::AbaqusName& a : row.abaqus) s += std::string(a.name) + ", ";
-  return s + "MASS, ROTARYI";
+  return s + "MASS, ROTARYI, SPRING1, SPRING2, SPRINGA";
 }
 
 }  // namespace
@@ -149,6 +151,8 @@ void Builder::Elements(const Card& c) {
       m.id = id;
       m.kind = info.kind;
       m.node = NodeIndex(d, 1, entity);
+      if (info.nodes == 2) m.node_b = NodeIndex(d, 2, entity);
+      if (m.node_b == m.node) Fail(d.origin, entity, "both nodes are the same");
       m.origin = d.origin;
       m.type = type;
       rec = {info.kind, static_cast<int>(masses_.size())};

@@ -43,6 +43,7 @@ fe::Mesh Builder::Build(std::vector<Card>& cards) {
     if (c.key == "SHELLSECTION") ShellSection(c);
     if (c.key == "BEAMSECTION" || c.key == "BEAMGENERALSECTION") BeamSection(cards, order, i);
     if (c.key == "MASS" || c.key == "ROTARYINERTIA") MassCard(c);
+    if (c.key == "SPRING") SpringCard(c);
   }
   // ties first: they move (adjust) slave nodes onto the master surface
   for (int i : order)
@@ -67,7 +68,7 @@ std::vector<int> Builder::Filter(std::vector<Card>& cards) {
   static const std::set<std::string> kModel = {
       "NODE", "ELEMENT", "NSET", "ELSET", "SURFACE", "MATERIAL", "SOLIDSECTION", "SHELLSECTION",
       "BEAMSECTION", "BEAMGENERALSECTION", "MASS", "ROTARYINERTIA", "BOUNDARY", "RIGIDBODY",
-      "COUPLING", "SYSTEM", "EQUATION", "TIE"};
+      "COUPLING", "SYSTEM", "EQUATION", "TIE", "SPRING"};
   static const std::set<std::string> kMaterialSub = {
       "ELASTIC", "DENSITY", "EXPANSION", "CONDUCTIVITY", "SPECIFICHEAT", "PLASTIC", "DAMPING", "CREEP"};
   static const std::set<std::string> kSilent = {
@@ -78,7 +79,7 @@ std::vector<int> Builder::Filter(std::vector<Card>& cards) {
   // keywords that would change the stiffness or mass: reading on without
   // them would give a different model (docs/formats.md)
   static const std::set<std::string> kUnsupported = {
-      "MPC", "SPRING", "DASHPOT", "KINEMATICCOUPLING", "DISTRIBUTINGCOUPLING",
+      "MPC", "DASHPOT", "KINEMATICCOUPLING", "DISTRIBUTINGCOUPLING",
       "SHELLGENERALSECTION", "MEMBRANESECTION", "CONNECTORSECTION", "CONNECTORBEHAVIOR", "CONNECTORELASTICITY",
       "GAP", "TRANSFORM", "NONSTRUCTURALMASS", "EMBEDDEDELEMENT", "MATRIXINPUT", "MATRIXASSEMBLE",
       "SUBSTRUCTUREPROPERTY", "GASKETSECTION", "COHESIVESECTION", "FRAMESECTION", "USERELEMENT", "UELPROPERTY",
@@ -162,10 +163,33 @@ void Builder::Finish() {
   for (const MassElement& m : masses_) {
     if (!m.assigned)
       Fail(m.origin, m.type + " element " + std::to_string(m.id),
-           m.kind == Kind::kMass ? "no *MASS is assigned to this element" : "no *ROTARY INERTIA is assigned to this element");
+           m.kind == Kind::kMass            ? "no *MASS is assigned to this element"
+           : m.kind == Kind::kSpring        ? "no *SPRING is assigned to this element"
+                                            : "no *ROTARY INERTIA is assigned to this element");
+  }
+  // springs: a component pair, or (SPRINGA) along the line between the nodes
+  for (const MassElement& m : masses_) {
+    if (m.kind != Kind::kSpring) continue;
+    fe::ScalarSpring s;
+    s.id = m.id;
+    s.node_a = m.node;
+    s.component_a = m.dof_a;
+    s.node_b = m.node_b;
+    s.component_b = m.dof_b;
+    s.k = m.k;
+    s.origin = m.origin;
+    if (m.type == "SPRINGA") {
+      const fe::Vec3 d = mesh_.nodes[m.node_b].x - mesh_.nodes[m.node].x;
+      if (!(d.norm() > 0.0)) Fail(m.origin, "SPRINGA element " + std::to_string(m.id), "its nodes coincide: no direction");
+      const fe::Vec3 e = d.normalized();
+      s.directional = true;
+      for (int a = 0; a < 3; ++a) s.coef_a[a] = s.coef_b[a] = e[a];
+    }
+    mesh_.springs.push_back(s);
   }
   // a ROTARYI element joins the MASS element on the same node defined just before it
   for (const MassElement& m : masses_) {
+    if (m.kind == Kind::kSpring) continue;
     if (m.kind == Kind::kRotaryInertia && !mesh_.point_masses.empty()) {
       fe::PointMass& last = mesh_.point_masses.back();
       if (last.node == m.node && last.inertia.isZero(0.0) && last.mass > 0.0) {

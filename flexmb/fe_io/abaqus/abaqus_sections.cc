@@ -383,4 +383,45 @@ void Builder::MassCard(const Card& c) {
   }
 }
 
+// *SPRING (linear): SPRING1 and SPRING2 take their DOF on the first data
+// line (integers, as CalculiX tells it from the stiffness line, the blank
+// line Abaqus writes for SPRINGA being dropped), then the stiffness
+void Builder::SpringCard(const Card& c) {
+  const std::string entity = SectionEntity(c);
+  if (c.Find("NONLINEAR")) Fail(c.origin, entity, "NONLINEAR springs are not supported (linear springs only)");
+  if (c.Find("ORIENTATION")) Fail(c.origin, entity, "ORIENTATION is not supported (springs act in basic axes)");
+  if (c.data.empty()) Fail(c.origin, entity, "needs its stiffness on the next line");
+  auto integers = [](const DataLine& d) {
+    for (const std::string& f : d.fields)
+      if (f.find_first_of(".eEdD") != std::string::npos) return false;
+    return !d.fields.empty();
+  };
+  const bool with_dofs = integers(c.data[0]);
+  const size_t first = with_dofs ? 1 : 0;
+  if (c.data.size() != first + 1)
+    Fail(c.origin, entity, c.data.size() <= first ? "needs its stiffness after the degrees of freedom"
+                                                  : "needs exactly one stiffness line (temperature-dependent springs are not supported)");
+  const DataLine& kd = c.data[first];
+  MaxFields(kd, 3, entity);
+  const double k = RealReq(kd, 0, entity, "spring stiffness");
+  if (!(k >= 0.0)) Fail(kd.origin, entity, "spring stiffness must not be negative");
+  const NamedSet& set = SectionSet(c, entity);
+  for (int id : set.items) {
+    const ElementRecord& r = elements_.at(id);
+    if (r.kind != Kind::kSpring) Fail(c.origin, entity, ElementName(id) + " is not a spring element");
+    MassElement& m = masses_[r.index];
+    if (m.assigned) Fail(c.origin, entity, ElementName(id) + " already has its stiffness");
+    const int want = m.type == "SPRINGA" ? 0 : m.type == "SPRING1" ? 1 : 2;
+    const int got = with_dofs ? static_cast<int>(c.data[0].fields.size()) : 0;
+    if (got != want)
+      Fail(with_dofs ? c.data[0].origin : c.origin, entity,
+           ElementName(id) + " needs " + std::to_string(want) + " degree(s) of freedom on the line after *SPRING, got " +
+               std::to_string(got));
+    if (want >= 1) m.dof_a = Integer(c.data[0], 0, entity, "degree of freedom", 1, 6) - 1;
+    if (want == 2) m.dof_b = Integer(c.data[0], 1, entity, "degree of freedom", 1, 6) - 1;
+    m.k = k;
+    m.assigned = true;
+  }
+}
+
 }  // namespace flexmb::io::abaqus

@@ -60,6 +60,7 @@ void Builder::AddElementNodes(const NamedSet& es, NamedSet& out) {
       for (int n : mesh_.elements[r.index].nodes) out.Add(n);
     } else {
       out.Add(masses_[r.index].node);
+      if (masses_[r.index].node_b >= 0) out.Add(masses_[r.index].node_b);
     }
   }
 }

@@ -105,12 +105,12 @@ TEST(AbaqusReader, UnsupportedKeywordsAreListedInOneError) {
   const std::string path = WriteScratch("unsupported.inp", base +
                                                               "*MPC\nBEAM,1,2\n"  // line 15
                                                               "*CLOAD\n3,3,100.\n"
-                                                              "*SPRING, ELSET=P\n1.\n"
+                                                              "*DASHPOT, ELSET=P\n1.\n"
                                                               "*MPC\nBEAM,1,3\n");
   const std::string m = InputErrorOf([&] { ReadAbaqus(path); });
   testing::ExpectContains(m, {"unsupported.inp:15: *MPC: 2 keyword types are not supported and would change the "
                               "stiffness or mass of the model: *MPC (x2, first at ",
-                              "*SPRING (x1, at "},
+                              "*DASHPOT (x1, at "},
                           m);
   EXPECT_EQ(m.find("CLOAD"), std::string::npos) << m;
   WarningCapture w;
