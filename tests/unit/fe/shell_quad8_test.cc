@@ -136,27 +136,13 @@ void RunSecondOrderPatch(bool triangles, const std::function<Eigen::Matrix<doubl
 }
 
 TEST(ShellQuad8, MembranePatchTest) {
-  auto field = [](Eigen::Vector2d p) {
-    Eigen::Matrix<double, 6, 1> l = Eigen::Matrix<double, 6, 1>::Zero();
-    l(0) = 1e-3 * (p.x() + 0.5 * p.y());
-    l(1) = 1e-3 * (p.y() + 0.5 * p.x());
-    return l;
-  };
-  RunSecondOrderPatch(false, field);
-  RunSecondOrderPatch(true, field);
+  RunSecondOrderPatch(false, PatchMembraneField);
+  RunSecondOrderPatch(true, PatchMembraneField);
 }
 
 TEST(ShellQuad8, BendingPatchTest) {
-  // w = 1e-3 (x^2 + x y + y^2) / 2, Kirchhoff rotations rx = dw/dy, ry = -dw/dx
-  auto field = [](Eigen::Vector2d p) {
-    Eigen::Matrix<double, 6, 1> l = Eigen::Matrix<double, 6, 1>::Zero();
-    l(2) = 1e-3 * (p.x() * p.x() + p.x() * p.y() + p.y() * p.y()) / 2.0;
-    l(3) = 1e-3 * (p.y() + 0.5 * p.x());
-    l(4) = -1e-3 * (p.x() + 0.5 * p.y());
-    return l;
-  };
-  RunSecondOrderPatch(false, field);
-  RunSecondOrderPatch(true, field);
+  RunSecondOrderPatch(false, PatchBendingField);
+  RunSecondOrderPatch(true, PatchBendingField);
 }
 
 // a constant membrane strain (1, 2, 0.5) 1e-4 in the element's axes gives

@@ -296,15 +296,29 @@ inline std::vector<Eigen::Matrix<double, 6, 1>> RunPatch(
   return out;
 }
 
+// the patch tests' fields (local u v w rx ry rz at a point): a constant
+// membrane strain, u = 1e-3 (x + y / 2), v = 1e-3 (y + x / 2): eps = 1e-3
+// (1, 1, 1), omega = 0
+inline Eigen::Matrix<double, 6, 1> PatchMembraneField(Eigen::Vector2d p) {
+  Eigen::Matrix<double, 6, 1> l = Eigen::Matrix<double, 6, 1>::Zero();
+  l(0) = 1e-3 * (p.x() + 0.5 * p.y());
+  l(1) = 1e-3 * (p.y() + 0.5 * p.x());
+  return l;
+}
+
+// and a constant curvature, w = 1e-3 (x^2 + x y + y^2) / 2 with Kirchhoff
+// rotations rx = dw/dy, ry = -dw/dx
+inline Eigen::Matrix<double, 6, 1> PatchBendingField(Eigen::Vector2d p) {
+  Eigen::Matrix<double, 6, 1> l = Eigen::Matrix<double, 6, 1>::Zero();
+  l(2) = 1e-3 * (p.x() * p.x() + p.x() * p.y() + p.y() * p.y()) / 2.0;
+  l(3) = 1e-3 * (p.y() + 0.5 * p.x());
+  l(4) = -1e-3 * (p.x() + 0.5 * p.y());
+  return l;
+}
+
 inline void MembranePatch(const std::vector<std::vector<int>>& elements) {
   const Patch patch;
-  // u = 1e-3 (x + y / 2), v = 1e-3 (y + x / 2): eps = 1e-3 (1, 1, 1), omega = 0
-  auto field = [](Eigen::Vector2d p) {
-    Eigen::Matrix<double, 6, 1> l = Eigen::Matrix<double, 6, 1>::Zero();
-    l(0) = 1e-3 * (p.x() + 0.5 * p.y());
-    l(1) = 1e-3 * (p.y() + 0.5 * p.x());
-    return l;
-  };
+  const auto field = PatchMembraneField;
   const double c = 1e6 * 0.001 / (1.0 - 0.0625);
   const Eigen::Vector3d nres = c * Eigen::Vector3d(1e-3 * 1.25, 1e-3 * 1.25, 1e-3 * 0.375);
   const auto loads = EdgeLoads(patch, [&](Eigen::Vector2d n) {
@@ -320,14 +334,7 @@ inline void MembranePatch(const std::vector<std::vector<int>>& elements) {
 
 inline void BendingPatch(const std::vector<std::vector<int>>& elements) {
   const Patch patch;
-  // w = 1e-3 (x^2 + x y + y^2) / 2, Kirchhoff rotations: rx = dw/dy, ry = -dw/dx
-  auto field = [](Eigen::Vector2d p) {
-    Eigen::Matrix<double, 6, 1> l = Eigen::Matrix<double, 6, 1>::Zero();
-    l(2) = 1e-3 * (p.x() * p.x() + p.x() * p.y() + p.y() * p.y()) / 2.0;
-    l(3) = 1e-3 * (p.y() + 0.5 * p.x());
-    l(4) = -1e-3 * (p.x() + 0.5 * p.y());
-    return l;
-  };
+  const auto field = PatchBendingField;
   // curvatures of beta = (ry, -rx): (-1e-3, -1e-3, -1e-3); M = D kappa
   const double d = 1e6 * 1e-9 / 12.0 / (1.0 - 0.0625);
   const Eigen::Vector3d m = d * Eigen::Vector3d(-1e-3 * 1.25, -1e-3 * 1.25, -1e-3 * 0.375);
