@@ -7,6 +7,7 @@ follow-camera renders of examples/truck_lane_change/view_animation.py
 under a virtual X server (Xvfb). Skipped where ParaView (python3-paraview)
 or Xvfb is missing."""
 
+import contextlib
 import csv
 import json
 import os
@@ -83,14 +84,12 @@ def test_paraview_reads_the_animation_as_written(run, tmp_path):
     assert same_time >= 10
 
 
-@pytest.fixture
-def display():
+@contextlib.contextmanager
+def xvfb():
     """A virtual X server of our own (Xvfb), up before it is used: Xvfb
     picks a free display and writes its number to -displayfd only once it
     accepts connections (xvfb-run -a, and waiting for the socket file, now
     and then started the client before its server answered)."""
-    if not shutil.which("Xvfb"):
-        pytest.skip("Xvfb not found (xvfb)")
     read_fd, write_fd = os.pipe()
     server = subprocess.Popen(["Xvfb", "-displayfd", str(write_fd), "-screen", "0", "1280x800x24", "-nolisten", "tcp"],
                               pass_fds=(write_fd,), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
@@ -106,17 +105,34 @@ def display():
         server.wait(timeout=10)
 
 
+@pytest.fixture
+def display():
+    if not shutil.which("Xvfb"):
+        pytest.skip("Xvfb not found (xvfb)")
+    with xvfb() as d:
+        yield d
+
+
+def x_failure(r):
+    """pvbatch failed in making its window (the X server or GLX, not the
+    script): seen now and then on a loaded CI machine."""
+    return r.returncode != 0 and any(k in r.stderr for k in ("X server", "CreateAWindow", "GLX", "display"))
+
+
 def test_follow_camera_renders_the_truck(run, source_dir, tmp_path, display):
     out, rows, _ = run
     script = os.path.join(source_dir, "examples", "truck_lane_change", "view_animation.py")
     png = tmp_path / "png"
-    env = dict(os.environ, DISPLAY=display)
     cmd = ["pvbatch", script, str(out / "animation" / "anim.pvd"), "--png", str(png), "--stride", "15"]
-    r = subprocess.run(cmd, capture_output=True, text=True, timeout=300, env=env)
-    if r.returncode != 0 and ("X server" in r.stderr or "CreateAWindow" in r.stderr):  # once more
+    r = subprocess.run(cmd, capture_output=True, text=True, timeout=300, env=dict(os.environ, DISPLAY=display))
+    # a window that could not be made: twice more, each with a fresh X server
+    for _ in range(2):
+        if not x_failure(r):
+            break
         time.sleep(2.0)
-        r = subprocess.run(cmd, capture_output=True, text=True, timeout=300, env=env)
-    assert r.returncode == 0, r.stderr[-3000:]
+        with xvfb() as fresh:
+            r = subprocess.run(cmd, capture_output=True, text=True, timeout=300, env=dict(os.environ, DISPLAY=fresh))
+    assert r.returncode == 0, r.stderr[:1500] + "\n...\n" + r.stderr[-1500:]
     cam = json.loads((png / "camera.json").read_text())
     assert [c["frame"] for c in cam] == [0, 15, 30]
     for c in cam:
