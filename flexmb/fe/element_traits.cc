@@ -63,10 +63,10 @@ void TraitsHex20RMatrices(const ElementInput& in, MatX& K, MatX& M) {
 }
 
 // Nastran cards
-constexpr const char* kTraitsCquad4[] = {"CQUAD4"};
+constexpr const char* kTraitsCquad4[] = {"CQUAD4", "CQUADR"};
 constexpr const char* kTraitsCquad8[] = {"CQUAD8"};
 constexpr const char* kTraitsCtria6[] = {"CTRIA6"};
-constexpr const char* kTraitsCtria3[] = {"CTRIA3"};
+constexpr const char* kTraitsCtria3[] = {"CTRIA3", "CTRIAR"};
 constexpr const char* kTraitsCbar[] = {"CBAR", "CBEAM"};
 constexpr const char* kTraitsCtetra[] = {"CTETRA"};
 constexpr const char* kTraitsChexa[] = {"CHEXA"};

@@ -49,6 +49,13 @@ void Builder::ReadNodes(const Entry& e, fe::Element& el, int first, int count) {
 
 void Builder::AddShell(const Entry& e) {
   const fe::ElementTraits& row = *NastranRows(e.name()).front();
+  // CQUADR, CTRIAR: Nastran's shells with a drilling DOF of their own
+  // formulation; flexmb's shells carry a drilling stiffness as well
+  if (e.name() == "CQUADR" || e.name() == "CTRIAR")
+    Warn(e,
+         e.name() + " elements are read as flexmb's " + row.description +
+             " (membrane, bending and shear as CQUAD4 / CTRIA3; the drilling stiffness differs from Nastran's)",
+         e.name());
   fe::Element el = NewElement(e, row.type);
   const int nn = row.nodes;
   const int pid = e.Int(2, "PID", el.id);

@@ -616,5 +616,23 @@ TEST(NastranReader, IncludeErrors) {
                           "none.bdf");
 }
 
+// CQUADR and CTRIAR (Nastran's shells with their own drilling DOF) are read
+// as the 4- and 3-node shells, with one warning per card name: the same
+// element matrices as CQUAD4 / CTRIA3 on the same grid points
+TEST(NastranReader, CquadrAndCtriarReadAsFirstOrderShellsWithAWarning) {
+  const std::string base = "MAT1,1,2.1e11,,0.3,7850.\nPSHELL,1,1,0.01,1\nGRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\n"
+                           "GRID,3,,1.,1.,0.\nGRID,4,,0.,1.,0.\n";
+  testing::WarningCapture w;
+  const fe::Mesh r = ReadNastran(WriteScratch("cquadr.bdf", base + "CQUADR,1,1,1,2,3,4\nCQUADR,2,1,1,2,3,4\nCTRIAR,3,1,1,2,3\n"));
+  const fe::Mesh q = ReadNastran(WriteScratch("cquad4.bdf", base + "CQUAD4,1,1,1,2,3,4\nCQUAD4,2,1,1,2,3,4\nCTRIA3,3,1,1,2,3\n"));
+  ASSERT_EQ(r.elements.size(), 3u);
+  EXPECT_EQ(r.elements[0].type, fe::ElementType::kQuad4);
+  EXPECT_EQ(r.elements[2].type, fe::ElementType::kTria3);
+  EXPECT_EQ(w.Count("CQUADR elements are read as flexmb's 4-node shell"), 1);
+  EXPECT_EQ(w.Count("CTRIAR elements are read as flexmb's 3-node shell"), 1);
+  const fe::AssembledModel a = fe::Assemble(r), b = fe::Assemble(q);
+  EXPECT_EQ((Eigen::MatrixXd(a.K) - Eigen::MatrixXd(b.K)).norm(), 0.0);
+}
+
 }  // namespace
 }  // namespace flexmb::io
