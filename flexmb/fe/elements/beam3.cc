@@ -25,8 +25,8 @@ constexpr int kBeam3HalfNodes[2][2] = {{0, 1}, {1, 2}};
 std::array<Beam3Half, 2> Beam3Halves(const ElementInput& in) {
   const Element& e = CheckElementNodes(in, 3, "beam");
   const ErrorContext ctx = ElementContext(e);
-  if (!e.offset_a.isZero() || !e.offset_b.isZero())
-    throw InputError("end offsets are not supported on the 3-node beam", ctx);
+  if (!(e.offset_a - e.offset_b).isZero(0.0) || !e.offset_a.allFinite())
+    throw InputError("different end offsets are not supported on the 3-node beam (only one offset of its axis)", ctx);
   const Vec3 &xa = in.x[0], &xm = in.x[1], &xb = in.x[2];
   const double L = (xb - xa).norm();
   if (!(L > 1e-10 * std::max(xa.norm(), xb.norm())) || !(L > 0.0))
@@ -49,6 +49,7 @@ std::array<Beam3Half, 2> Beam3Halves(const ElementInput& in) {
     Beam3Half& half = halves[h];
     half.element = e;
     half.element.nodes = {e.nodes[kBeam3HalfNodes[h][0]], e.nodes[kBeam3HalfNodes[h][1]]};
+    half.element.offset_a = half.element.offset_b = e.offset_a;  // the axis offset from the node line
     half.x = {in.x[kBeam3HalfNodes[h][0]], in.x[kBeam3HalfNodes[h][1]]};
     half.input = in;  // its pointers are set by Bound, once the array has its place
   }

@@ -12,7 +12,9 @@
 /// error. Only straight elements are read: a mid node off the chord A-B by
 /// more than 1e-4 of its length, or closer than 1 % of the length to an
 /// end, is an error (an arc is meshed with straight elements instead); the
-/// two halves then share one element frame. Details: docs/design.md, "FE:
+/// two halves then share one element frame. An offset of the beam's axis
+/// from its nodes (offset_a = offset_b, e.g. Abaqus OFFSET1/OFFSET2) is a
+/// rigid link at all three nodes. Details: docs/design.md, "FE:
 /// 3-node beam".
 
 #include <Eigen/Core>
@@ -28,9 +30,8 @@ inline constexpr ElementType kBeam3{11};
 /// node by node ux uy uz rx ry rz, nodes A, mid, B) of a 3-node beam: the
 /// sum of its two halves' beam2 matrices (Beam2Matrices, with the mass form
 /// of `in`). Throws InputError naming the element (type, id, file:line) for
-/// a curved element or a mid node near an end (see the file comment), end
-/// offsets (the 3-node beam has none), and everything Beam2Matrices
-/// refuses.
+/// a curved element or a mid node near an end (see the file comment),
+/// different offsets at its ends, and everything Beam2Matrices refuses.
 void Beam3Matrices(const ElementInput& in, MatX& K, MatX& M);
 
 /// Section forces of a 3-node beam at its ends, as Beam2SectionForces: S

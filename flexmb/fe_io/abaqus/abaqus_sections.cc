@@ -302,6 +302,23 @@ void Builder::BeamSection(const std::vector<Card>& cards, const std::vector<int>
   } else {
     ShapeSection(shape, d0, mat.nu, entity, s);
   }
+  // OFFSET1, OFFSET2 (CalculiX): the beam's axis lies -OFFSETk times the
+  // section's extent along local k from the node line (OFFSET2 = 0.5: the
+  // nodes on the top surface)
+  const double offset[2] = {c.Find("OFFSET1") ? Real(c.Find("OFFSET1")->value, c.origin, entity, "OFFSET1") : 0.0,
+                            c.Find("OFFSET2") ? Real(c.Find("OFFSET2")->value, c.origin, entity, "OFFSET2") : 0.0};
+  const bool offsets = offset[0] != 0.0 || offset[1] != 0.0;
+  double extent[2] = {0.0, 0.0};  // the section's size along local 1 and 2
+  if (offsets) {
+    if (shape == "RECT" || shape == "BOX") {
+      extent[0] = Positive(d0, 0, entity, "width a");
+      extent[1] = Positive(d0, 1, entity, "height b");
+    } else if (shape == "CIRC" || shape == "PIPE" || shape == "THICKPIPE") {
+      extent[0] = extent[1] = 2.0 * Positive(d0, 0, entity, "radius r");
+    } else {
+      Fail(c.origin, entity, "OFFSET1 / OFFSET2 need a section with a size (RECT, CIRC, PIPE, BOX), not " + shape);
+    }
+  }
   Vec3 n1(0.0, 0.0, -1.0);
   if (c.data.size() > 1) {
     const DataLine& d1 = c.data[1];
@@ -337,6 +354,15 @@ void Builder::BeamSection(const std::vector<Card>& cards, const std::vector<int>
                   }
                   e.property = index[eb];
                   e.orientation = n1;
+                  if (offsets) {
+                    const Vec3 axis = mesh_.nodes[e.nodes.back()].x - mesh_.nodes[e.nodes.front()].x;
+                    const Vec3 t = axis.normalized(), n1p = n1 - t * t.dot(n1);
+                    if (!(axis.norm() > 0.0) || !(n1p.norm() > 1e-8 * n1.norm()))
+                      Fail(c.origin, entity, ElementName(e.id) + ": no local axes for OFFSET1 / OFFSET2 (zero length, "
+                                                                 "or n1 along the beam)");
+                    const Vec3 e1 = n1p.normalized(), e2 = t.cross(e1);
+                    e.offset_a = e.offset_b = -(offset[0] * extent[0] * e1 + offset[1] * extent[1] * e2);
+                  }
                 });
 }
 

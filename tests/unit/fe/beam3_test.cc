@@ -5,7 +5,9 @@
 // (superposition, exact), the section forces at both ends against statics,
 // the rigid-body mass and inertia of the consistent and lumped mass, the
 // Euler buckling load of a cantilever column from the geometric stiffness,
-// and errors for curved elements, mid nodes at an end and end offsets.
+// an offset of the axis as a rigid link (an eccentric axial load bends it
+// by P e), and errors for curved elements, mid nodes at an end and
+// different end offsets.
 
 #include <gtest/gtest.h>
 
@@ -231,6 +233,26 @@ TEST(Beam3, GeometricStiffnessGivesTheEulerLoad) {
   const double P = 1.0 / eig.eigenvalues().maxCoeff();
   const double ref = M_PI * M_PI * proto.material.E * proto.section.Iz / (4.0 * L * L);
   EXPECT_NEAR(P, ref, 1e-4 * ref);
+}
+
+// the axis offset e below the node line (offset -e z): an axial load P on
+// the tip node bends the cantilever by the moment P e, uz = -P e L^2 / (2 E
+// Iy), and moves the node along x by P L / (E A) + e theta_y, theta_y = P e L
+// / (E Iy); rigid motions stay free of energy
+TEST(Beam3, AxisOffsetIsARigidLinkAtEveryNode) {
+  const double L = 2.0, P = 1.0e4, e = 0.05;
+  Beam3Fixture b(Vec3::Zero(), Vec3(L, 0.0, 0.0), Vec3::UnitY());
+  b.element.offset_a = b.element.offset_b = Vec3(0.0, 0.0, -e);
+  MatX K, M;
+  Beam3Matrices(b.Input(), K, M);
+  ExpectSixRigidModes(K, b.x, 6);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(12);
+  f(6) = P;
+  const Eigen::VectorXd u = Clamped(K, f);
+  const double E = b.material.E, Iy = b.section.Iy, A = b.section.A;
+  const double uz = -P * e * L * L / (2 * E * Iy), ux = P * L / (E * A) + e * P * e * L / (E * Iy);
+  EXPECT_NEAR(u(8), uz, 1e-10 * std::abs(uz));
+  EXPECT_NEAR(u(6), ux, 1e-10 * ux);
 }
 
 TEST(Beam3, BadGeometryIsAnInputErrorNamingTheElement) {
