@@ -101,6 +101,11 @@ class Builder {
   fe::Mesh mesh_;
   std::map<int, CoordSys> coords_;
   std::map<int, int> nodes_;                    // grid id -> node index
+  struct SpointRange {
+    int first, last;
+    fe::Origin origin;
+  };
+  std::vector<SpointRange> spoints_;            // scalar point ids (SPOINT), for messages
   std::vector<int> node_cd_;                    // displacement system per node
   std::map<int, int> materials_;                // MAT1 id -> index
   std::map<int, std::string> other_materials_;  // unsupported material id -> card
@@ -132,6 +137,7 @@ class Builder {
   static int Components(const Entry& e, int i, const char* what);
   const CoordSys& Coord(const Entry& e, int i, int id);
   int NodeIndex(const Entry& e, int i, const char* what);
+  void AddSpoint(const Entry& e);
   int MaterialIndex(const Entry& e, int i, int id);
   int PropertyIndex(const Entry& e, int i, int pid, std::initializer_list<const char*> cards);
   void CheckCd(const Entry& e, int i, int node, int mask);

@@ -30,7 +30,7 @@ const std::map<std::string, Phase>& Phases() {
         {Phase::kDefaults, {"GRDSET", "BAROR", "BEAMOR"}},
         {Phase::kCoords, {"CORD2R", "CORD2C", "CORD2S", "CORD1R", "CORD1C", "CORD1S", "CORD3G", "CORD3R"}},
         {Phase::kMaterials, {"MAT1", "MAT2", "MAT3", "MAT8", "MAT9", "MAT10", "MAT11"}},
-        {Phase::kGrids, {"GRID"}},
+        {Phase::kGrids, {"GRID", "SPOINT"}},
         {Phase::kProperties, {"PSHELL", "PCOMP", "PCOMPG", "PBAR", "PBARL", "PBEAM", "PBEAML", "PSOLID", "PELAS", "PROD", "PTUBE",
                                  "PBUSH", "PMASS"}},
         {Phase::kLinks, {"RBE2", "RBAR", "RBAR1", "RBE3", "CONM2", "CONM1", "CELAS1", "CELAS2", "CBUSH",
@@ -139,6 +139,7 @@ void Builder::Dispatch(const Entry& e) {
   if (n == "GRDSET" || n == "BAROR" || n == "BEAMOR") return AddDefaults(e);
   if (n.rfind("MAT", 0) == 0) return AddMaterial(e);
   if (n == "GRID") return AddGrid(e);
+  if (n == "SPOINT") return AddSpoint(e);
   if (n == "CROD" || n == "CONROD" || n == "CTUBE") return AddRod(e);
   for (const fe::ElementTraits& t : fe::AllElementTraits())
     for (const char* card : t.nastran_cards)
@@ -204,8 +205,34 @@ const CoordSys& Builder::Coord(const Entry& e, int i, int id) {
 int Builder::NodeIndex(const Entry& e, int i, const char* what) {
   const int id = e.Id(i, what);
   const auto it = nodes_.find(id);
-  if (it == nodes_.end()) e.Fail(i, "node " + std::to_string(id) + " does not exist");
+  if (it == nodes_.end()) {
+    for (const SpointRange& r : spoints_)
+      if (id >= r.first && id <= r.last)
+        e.Fail(i, std::to_string(id) + " is a scalar point (SPOINT at " + Where(r.origin) +
+                      "), which flexmb does not support: only grid points carry DOF");
+    e.Fail(i, "node " + std::to_string(id) + " does not exist");
+  }
   return it->second;
+}
+
+// SPOINT: ids one by one, or "ID1 THRU ID2"; recorded for the messages of
+// the cards that refer to them (scalar points carry no DOF in flexmb)
+void Builder::AddSpoint(const Entry& e) {
+  int previous = -1;  // the field of the id added last from this card
+  for (int i = 1; i <= e.Size(); ++i) {
+    if (e.Blank(i)) continue;
+    if (e.Text(i) == "THRU") {
+      if (previous != i - 1) e.Fail(i, "THRU needs an id right before it");
+      const int first = spoints_.back().first, last = e.Id(i + 1, "ID");
+      if (last < first) e.Fail(i + 1, "THRU range ends below its start");
+      spoints_.back().last = last;  // the range's first id was added as a single one
+      ++i;
+      continue;
+    }
+    previous = i;
+    const int id = e.Id(i, "ID");
+    spoints_.push_back({id, id, OriginOf(e)});
+  }
 }
 
 int Builder::MaterialIndex(const Entry& e, int i, int id) {

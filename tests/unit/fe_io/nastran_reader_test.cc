@@ -616,6 +616,25 @@ TEST(NastranReader, IncludeErrors) {
                           "none.bdf");
 }
 
+// a scalar point (SPOINT, one by one or THRU a range) is not a node: a card
+// that uses one says so, naming the SPOINT card; a bad THRU is an error
+TEST(NastranReader, ScalarPointsAreNamedWhereTheyAreUsed) {
+  const std::string base = "MAT1,1,2.1e11,,0.3,7850.\nGRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\nPROD,1,1,1.e-4\n"
+                           "CROD,1,1,1,2\nSPOINT,100,THRU,120,130\n";
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {"MPC,7,1,1,1.,110,0,-1.\n", {":7: MPC 7", "110 is a scalar point (SPOINT at ", "spoint0.bdf:6)"}},
+      {"CELAS2,9,1.e3,130,0,2,1\n", {":7: CELAS2 9", "130 is a scalar point"}},
+      {"MPC,7,1,1,1.,121,0,-1.\n", {":7: MPC 7", "node 121 does not exist"}},
+      {"SPOINT,THRU,5\n", {":7: SPOINT", "THRU needs an id right before it"}},
+      {"SPOINT,9,THRU,5\n", {":7: SPOINT", "THRU range ends below its start"}},
+  };
+  int k = 0;
+  for (const auto& [cards, parts] : cases) {
+    const std::string path = WriteScratch("spoint" + std::to_string(k++) + ".bdf", base + cards);
+    testing::ExpectContains(InputErrorOf([&] { ReadNastran(path); }), parts, cards);
+  }
+}
+
 // CQUADR and CTRIAR (Nastran's shells with their own drilling DOF) are read
 // as the 4- and 3-node shells, with one warning per card name: the same
 // element matrices as CQUAD4 / CTRIA3 on the same grid points
