@@ -58,6 +58,9 @@ void ShapeSection(const std::string& shape, const DataLine& d, double nu, const 
     s.ky = s.kz = 10.0 * (1.0 + nu) / (12.0 + 11.0 * nu);
     s.stress_points = AbaqusRectanglePoints(a, b);
   } else if (shape == "CIRC") {
+    if (d.fields.size() > 1)
+      Fail(d.origin, entity, "SECTION=CIRC with two values (CalculiX's elliptical section, by its two diameters) is "
+                             "not supported; Abaqus's CIRC takes one radius");
     MaxFields(d, 1, entity);
     const double r = Positive(d, 0, entity, "radius r");
     s.A = kPi * r * r;
@@ -301,6 +304,11 @@ void Builder::BeamSection(const std::vector<Card>& cards, const std::vector<int>
     s.ky = s.kz = 1.0;
   } else {
     ShapeSection(shape, d0, mat.nu, entity, s);
+    if (shape == "CIRC")
+      WarnOnce("CIRC", At(c.origin) + ": " + entity + ": SECTION=CIRC " + d0.fields[0] +
+                           " is read as the radius (Abaqus); CalculiX reads it as the diameter, so a CalculiX deck's "
+                           "round beam would come out 16 times stiffer in bending: there give it as SECTION=PIPE "
+                           "with the radius and a wall as thick as the radius (reported once)");
   }
   // OFFSET1, OFFSET2 (CalculiX): the beam's axis lies -OFFSETk times the
   // section's extent along local k from the node line (OFFSET2 = 0.5: the
@@ -313,8 +321,12 @@ void Builder::BeamSection(const std::vector<Card>& cards, const std::vector<int>
     if (shape == "RECT" || shape == "BOX") {
       extent[0] = Positive(d0, 0, entity, "width a");
       extent[1] = Positive(d0, 1, entity, "height b");
-    } else if (shape == "CIRC" || shape == "PIPE" || shape == "THICKPIPE") {
+    } else if (shape == "PIPE" || shape == "THICKPIPE") {
       extent[0] = extent[1] = 2.0 * Positive(d0, 0, entity, "radius r");
+    } else if (shape == "CIRC") {
+      Fail(c.origin, entity, "OFFSET1 / OFFSET2 (CalculiX) with SECTION=CIRC: CalculiX's CIRC value is a diameter, "
+                             "Abaqus's a radius; give the section as SECTION=PIPE (radius, wall as thick as the "
+                             "radius)");
     } else {
       Fail(c.origin, entity, "OFFSET1 / OFFSET2 need a section with a size (RECT, CIRC, PIPE, BOX), not " + shape);
     }

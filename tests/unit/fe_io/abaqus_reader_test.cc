@@ -486,5 +486,22 @@ TEST(AbaqusReader, BadInputNamesFileLineAndEntity) {
       [](const std::string& path) { ReadAbaqus(path); });
 }
 
+// SECTION=CIRC: one value is the radius (Abaqus), with one warning that
+// CalculiX means the diameter; two values (CalculiX's ellipse) and OFFSETk
+// on a CIRC (a CalculiX deck) are errors
+TEST(AbaqusReader, CircSectionConventions) {
+  const std::string base = "*NODE\n1,0,0,0\n2,1,0,0\n*ELEMENT, TYPE=B31, ELSET=B\n1,1,2\n*MATERIAL, NAME=M\n*ELASTIC\n"
+                           "2.1e11, 0.3\n";
+  WarningCapture w;
+  const Mesh m = ReadAbaqus(WriteScratch("circ.inp", base + "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=CIRC\n0.02\n"));
+  EXPECT_NEAR(m.beam_sections[0].A, kPi * 0.0004, 1e-15);
+  EXPECT_EQ(w.Count("SECTION=CIRC 0.02 is read as the radius (Abaqus); CalculiX reads it as the diameter"), 1);
+  const std::string two = WriteScratch("circ2.inp", base + "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=CIRC\n0.02, 0.03\n");
+  testing::ExpectContains(InputErrorOf([&] { ReadAbaqus(two); }), {"circ2.inp:10", "elliptical section"}, "two values");
+  const std::string off =
+      WriteScratch("circ3.inp", base + "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=CIRC, OFFSET1=0.5\n0.02\n0., 0., 1.\n");
+  testing::ExpectContains(InputErrorOf([&] { ReadAbaqus(off); }), {"circ3.inp:9", "OFFSET1 / OFFSET2", "PIPE"}, "offset");
+}
+
 }  // namespace
 }  // namespace flexmb::io
