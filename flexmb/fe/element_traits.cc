@@ -32,16 +32,6 @@ void TraitsSolidStress(const ElementInput& in, MatX& S, Eigen::Matrix3d&) {
   Stress(in, S);
 }
 
-// the beam's prestress is its mean axial force
-void TraitsBeam2Geometric(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG, double* axial_force) {
-  MatX S;
-  Eigen::Matrix3d axes;
-  Beam2SectionForces(in, S, axes);
-  const double N = 0.5 * (S.row(0).dot(u) + S.row(6).dot(u));
-  if (axial_force != nullptr) *axial_force = N;
-  Beam2GeometricStiffness(in, N, KG);
-}
-
 // the rod's prestress is its axial force
 void TraitsRod2Geometric(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG, double* axial_force) {
   MatX S;
@@ -199,7 +189,7 @@ constexpr ElementTraits kTraitsRows[] = {
      .body_file_code = 2,
      .matrices = Beam2Matrices,
      .stress = Beam2SectionForces,
-     .geometric_stiffness = TraitsBeam2Geometric},
+     .geometric_stiffness = Beam2GeometricStiffnessUnder},
     {.type = ElementType::kTet4,
      .name = "tet4",
      .description = "4-node tetrahedron",

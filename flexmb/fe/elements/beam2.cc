@@ -221,4 +221,13 @@ void Beam2GeometricStiffness(const ElementInput& in, double N, MatX& KG) {
   KG = 0.5 * (KG + KG.transpose()).eval();
 }
 
+void Beam2GeometricStiffnessUnder(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG, double* axial_force) {
+  MatX S;
+  Eigen::Matrix3d axes;
+  Beam2SectionForces(in, S, axes);
+  const double N = 0.5 * (S.row(0).dot(u) + S.row(6).dot(u));
+  if (axial_force != nullptr) *axial_force = N;
+  Beam2GeometricStiffness(in, N, KG);
+}
+
 }  // namespace flexmb::fe

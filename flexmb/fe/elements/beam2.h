@@ -60,4 +60,10 @@ void Beam2SectionForces(const ElementInput& in, MatX& S, Eigen::Matrix3d& axes);
 /// P of the element chain. Throws InputError as Beam2Matrices.
 void Beam2GeometricStiffness(const ElementInput& in, double N, MatX& KG);
 
+/// Geometric stiffness of a 2-node beam prestressed by its element
+/// displacements u (12): Beam2GeometricStiffness under the mean of the
+/// axial forces at its ends (Beam2SectionForces); *axial_force (if not
+/// null) is that force [N]. Throws InputError as Beam2Matrices.
+void Beam2GeometricStiffnessUnder(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG, double* axial_force);
+
 }  // namespace flexmb::fe

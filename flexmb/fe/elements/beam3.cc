@@ -22,7 +22,8 @@ struct Beam3Half {
 // position of half h's nodes in the 3-node element (A, mid, B)
 constexpr int kBeam3HalfNodes[2][2] = {{0, 1}, {1, 2}};
 
-std::array<Beam3Half, 2> Beam3Halves(const ElementInput& in) {
+// fills the halves of the element of `in` (their inputs point into them)
+void Beam3Halves(const ElementInput& in, std::array<Beam3Half, 2>& halves) {
   const Element& e = CheckElementNodes(in, 3, "beam");
   const ErrorContext ctx = ElementContext(e);
   if (!(e.offset_a - e.offset_b).isZero(0.0) || !e.offset_a.allFinite())
@@ -44,23 +45,16 @@ std::array<Beam3Half, 2> Beam3Halves(const ElementInput& in) {
     throw InputError("the mid node of the 3-node beam lies at " + std::to_string(s / L) +
                          " of its length from end A, not between its ends",
                      ctx);
-  std::array<Beam3Half, 2> halves;
   for (int h = 0; h < 2; ++h) {
     Beam3Half& half = halves[h];
     half.element = e;
     half.element.nodes = {e.nodes[kBeam3HalfNodes[h][0]], e.nodes[kBeam3HalfNodes[h][1]]};
     half.element.offset_a = half.element.offset_b = e.offset_a;  // the axis offset from the node line
     half.x = {in.x[kBeam3HalfNodes[h][0]], in.x[kBeam3HalfNodes[h][1]]};
-    half.input = in;  // its pointers are set by Bound, once the array has its place
+    half.input = in;
+    half.input.element = &half.element;
+    half.input.x = half.x.data();
   }
-  return halves;
-}
-
-// the half's inputs point into the half itself: rebind after the array is returned
-const ElementInput& Bound(Beam3Half& half) {
-  half.input.element = &half.element;
-  half.input.x = half.x.data();
-  return half.input;
 }
 
 // adds the half's 12 x 12 block to the element's 18 x 18 one
@@ -73,24 +67,26 @@ void AddHalf(int h, const MatX& block, MatX& out) {
 }  // namespace
 
 void Beam3Matrices(const ElementInput& in, MatX& K, MatX& M) {
-  std::array<Beam3Half, 2> halves = Beam3Halves(in);
+  std::array<Beam3Half, 2> halves;
+  Beam3Halves(in, halves);
   K = MatX::Zero(18, 18);
   M = MatX::Zero(18, 18);
   MatX k, m;
   for (int h = 0; h < 2; ++h) {
-    Beam2Matrices(Bound(halves[h]), k, m);
+    Beam2Matrices(halves[h].input, k, m);
     AddHalf(h, k, K);
     AddHalf(h, m, M);
   }
 }
 
 void Beam3SectionForces(const ElementInput& in, MatX& S, Eigen::Matrix3d& axes) {
-  std::array<Beam3Half, 2> halves = Beam3Halves(in);
+  std::array<Beam3Half, 2> halves;
+  Beam3Halves(in, halves);
   S = MatX::Zero(12, 18);
   MatX s;
   Eigen::Matrix3d half_axes;
   for (int h = 0; h < 2; ++h) {
-    Beam2SectionForces(Bound(halves[h]), s, half_axes);
+    Beam2SectionForces(halves[h].input, s, half_axes);
     if (h == 0) axes = half_axes;
     // end A from the first half's rows 0-5, end B from the second's rows 6-11
     for (int j = 0; j < 2; ++j)
@@ -100,19 +96,17 @@ void Beam3SectionForces(const ElementInput& in, MatX& S, Eigen::Matrix3d& axes) 
 
 void Beam3GeometricStiffness(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG,
                              double* axial_force) {
-  std::array<Beam3Half, 2> halves = Beam3Halves(in);
+  std::array<Beam3Half, 2> halves;
+  Beam3Halves(in, halves);
   KG = MatX::Zero(18, 18);
-  MatX s, kg;
-  Eigen::Matrix3d axes;
+  MatX kg;
   double mean = 0.0;
   for (int h = 0; h < 2; ++h) {
-    const ElementInput& half = Bound(halves[h]);
     Eigen::VectorXd uh(12);
     for (int j = 0; j < 2; ++j) uh.segment<6>(6 * j) = u.segment<6>(6 * kBeam3HalfNodes[h][j]);
-    Beam2SectionForces(half, s, axes);
-    const double N = 0.5 * (s.row(0).dot(uh) + s.row(6).dot(uh));
+    double N = 0.0;
+    Beam2GeometricStiffnessUnder(halves[h].input, uh, kg, &N);
     mean += 0.5 * N;
-    Beam2GeometricStiffness(half, N, kg);
     AddHalf(h, kg, KG);
   }
   if (axial_force != nullptr) *axial_force = mean;
