@@ -83,17 +83,17 @@ ShellMaterial Builder::ShellMaterialOf(const Entry& e, int i, int mid) {
   return m;
 }
 
-// the ply material of MAT1 or MAT8 `mid`, referred to from field i
+// the ply material of MAT1 or MAT8 `mid`, referred to from field i: its
+// shell stiffness with the transverse shear moduli of a ply
 fe::LaminatePly Builder::PlyMaterial(const Entry& e, int i, int mid) {
-  const auto it = ply_materials_.find(mid);
-  if (it != ply_materials_.end()) return it->second;
   if (mat2_.count(mid) != 0)
     e.Fail(i, "material " + std::to_string(mid) + " is a MAT2: not supported as a ply (it has no transverse "
               "shear moduli; give the ply as MAT8 or MAT1)");
-  const fe::Material& m = mesh_.materials[MaterialIndex(e, i, mid)];
+  const ShellMaterial m = ShellMaterialOf(e, i, mid);
   fe::LaminatePly p;
-  p.q = fe::IsotropicPlaneStress(m.E, m.nu);
-  p.g13 = p.g23 = m.G;
+  p.q = m.q;
+  p.g13 = m.shear(0, 0);
+  p.g23 = m.shear(1, 1);
   p.rho = m.rho;
   return p;
 }
