@@ -72,6 +72,24 @@ Eigen::Matrix<double, D, 4 * D> Expand(const double (&s)[4]) {
   return S;
 }
 
+// K -= (x x^T) (x) G, block by block (x the 4 scalar shape values)
+template <int D, class MatK>
+void AddShapeProduct(MatK& K, const double (&x)[4], const double (&y)[4], const Eigen::Matrix<double, D, D>& G) {
+  for (int q = 0; q < 4; ++q)
+    for (int p = 0; p < 4; ++p) K.template block<D, D>(D * p, D * q) -= (x[p] * y[q]) * G;
+}
+
+// K -= (x x^T) (x) Gxx + (x y^T) (x) Gxy + (y x^T) (x) Gyx + (y y^T) (x) Gyy
+template <int D, class MatK>
+void AddShapeProducts(MatK& K, const double (&x)[4], const double (&y)[4], const Eigen::Matrix<double, D, D>& Gxx,
+                      const Eigen::Matrix<double, D, D>& Gxy, const Eigen::Matrix<double, D, D>& Gyx,
+                      const Eigen::Matrix<double, D, D>& Gyy) {
+  for (int q = 0; q < 4; ++q)
+    for (int p = 0; p < 4; ++p)
+      K.template block<D, D>(D * p, D * q) -=
+          (x[p] * x[q]) * Gxx + (x[p] * y[q]) * Gxy + (y[p] * x[q]) * Gyx + (y[p] * y[q]) * Gyy;
+}
+
 }  // namespace
 
 void GaussPoints01(int n, const double*& xi, const double*& w) {
@@ -100,6 +118,21 @@ LineElement<D>::LineElement(double length, const BeamSection& section, const Qua
     throw InputError("ANCF element: the hourglass control factor must not be negative");
   axial_full_ = std::min(1.0, order.hourglass * section.I / (section.A * length * length));
   if (order.axial == order.axial_full_points) axial_full_ = 0.0;
+  // the kernels' point tables: shape slopes and curvatures, weighted stiffness
+  const auto scalar = [](const ShapeMat& S, double (&out)[4]) {
+    for (int a = 0; a < 4; ++a) out[a] = S(0, D * a);
+  };
+  ForEachAxialPoint([&](double x, double EA) {
+    AxialPoint& pt = axial_pts_[n_axial_++];
+    pt.k = EA;
+    scalar(ShapeSlope(x), pt.sx);
+  });
+  ForEachBendingPoint([&](double x, double EI) {
+    BendingPoint& pt = bending_pts_[n_bending_++];
+    pt.k = EI;
+    scalar(ShapeSlope(x), pt.sx);
+    scalar(ShapeCurvature(x), pt.sxx);
+  });
   // S^T S is of degree 6 in xi: 4 points are exact
   GaussPoints01(4, xi, w);
   mass_.setZero();
@@ -150,27 +183,6 @@ typename LineElement<D>::VecK LineElement<D>::Curvature(const Vec& e, double xi)
 }
 
 template <int D>
-void LineElement<D>::BendingTerms(const ShapeMat& Sx, const ShapeMat& Sxx, const Vec& e, int k,
-                                  double& kap, Vec& dkap, Mat& ddkap) const {
-  const Eigen::Matrix<double, D, D> A = CrossMatrix<D>(k);
-  const VecD a = Sx * e;
-  const VecD b = Sxx * e;
-  const double g = a.squaredNorm();
-  if (!(g > 0.0)) throw NumericalError("ANCF element slope r' vanished (element collapsed)");
-  const double c = a.dot(A * b);
-  const Vec dc = Sx.transpose() * (A * b) + Sxx.transpose() * (A.transpose() * a);
-  const Vec dg = 2.0 * Sx.transpose() * a;
-  kap = c / g;
-  dkap = dc / g - (c / (g * g)) * dg;
-  const Eigen::Matrix<double, D, kDof> ASxx = A * Sxx;
-  ddkap.noalias() = Sx.transpose() * ASxx / g;
-  ddkap.noalias() += ASxx.transpose() * Sx / g;
-  ddkap.noalias() -= (dc * dg.transpose() + dg * dc.transpose()) / (g * g);
-  ddkap.noalias() -= (2.0 * c / (g * g)) * Sx.transpose() * Sx;
-  ddkap.noalias() += (2.0 * c / (g * g * g)) * dg * dg.transpose();
-}
-
-template <int D>
 template <class F>
 void LineElement<D>::ForEachAxialPoint(F&& f) const {
   const double* xi = nullptr;
@@ -194,12 +206,6 @@ void LineElement<D>::ForEachBendingPoint(F&& f) const {
 }
 
 template <int D>
-void LineElement<D>::AddStrainTerm(double stiffness, double strain, const Vec& d1, const Mat& d2,
-                                   const Vec& edot, Vec& Q, Mat& dQde, Mat& dQdedot) const {
-  AddAncfStrainTerm<kDof>(stiffness, section_.damping, strain, d1, d2, edot, Q, dQde, dQdedot);
-}
-
-template <int D>
 double LineElement<D>::StrainEnergy(const Vec& e) const {
   double W = 0.0;
   ForEachAxialPoint([&](double xi, double EA) {
@@ -212,59 +218,160 @@ double LineElement<D>::StrainEnergy(const Vec& e) const {
   return W;
 }
 
+// The element kernels below use the structure of the shape matrices,
+// S(xi) = s(xi)^T (x) I_D with the 4 scalar Hermite functions s: the slope
+// a = r' = E s' and b = r'' = E s'' (E the D x 4 matrix of nodal vectors),
+// every strain gradient is s' (x) alpha + s'' (x) gamma with D-vectors alpha,
+// gamma, and every Hessian a sum of (x y^T) (x) G over x, y in {s', s''}
+// with D x D blocks G. The element tangent is assembled from these D x D
+// blocks instead of products of zero-padded D x 4D shape matrices (issue
+// 23; docs/design.md "ANCF element kernel"). StrainEnergy, AxialStrain and
+// Curvature keep the plain formulas: the tests check the kernels against them.
+
 template <int D>
 void LineElement<D>::AddInternalForces(const Vec& e, const Vec& edot, Vec& Q, Mat& dQde,
                                        Mat& dQdedot) const {
-  double val = 0.0;
-  Vec d1;
-  Mat d2;
-  ForEachAxialPoint([&](double xi, double EA) {
-    val = AncfAxialStrainTerms<D, kDof>(section_.axial_strain, ShapeSlope(xi), e, d1, d2);
-    AddStrainTerm(EA, val, d1, d2, edot, Q, dQde, dQdedot);
-  });
-  ForEachBendingPoint([&](double xi, double EI) {
-    const ShapeMat Sx = ShapeSlope(xi);
-    const ShapeMat Sxx = ShapeCurvature(xi);
-    for (int k = 0; k < kCurv; ++k) {
-      BendingTerms(Sx, Sxx, e, k, val, d1, d2);
-      AddStrainTerm(EI, val - kappa0_(k), d1, d2, edot, Q, dQde, dQdedot);
+  using MatDD = Eigen::Matrix<double, D, D>;
+  using Vec4 = Eigen::Matrix<double, 4, 1>;
+  const Eigen::Map<const Eigen::Matrix<double, D, 4>> E(e.data()), Ed(edot.data());
+  const double beta = section_.damping;
+  const bool damped = beta > 0.0;
+  const MatDD I = MatDD::Identity();
+  const MatDD Z = MatDD::Zero();
+  const VecD zero = VecD::Zero();
+  for (int g = 0; g < n_axial_; ++g) {
+    const AxialPoint& pt = axial_pts_[g];
+    const Eigen::Map<const Vec4> sx(pt.sx);
+    const VecD a = E * sx;
+    const VecD ad = damped ? VecD(Ed * sx) : zero;
+    const double k = pt.k;
+    const double gg = a.squaredNorm();
+    MatDD G;
+    VecD f;
+    if (section_.axial_strain == AxialStrainMeasure::kGreenLagrange) {
+      // eps = (|a|^2 - 1) / 2: d1 = s' (x) a, d2 = (s' s'^T) (x) I
+      const double c2 = k * (0.5 * (gg - 1.0) + beta * a.dot(ad));
+      f = c2 * a;
+      G.noalias() = k * a * a.transpose();
+      G += c2 * I;
+      if (damped) G.noalias() += (beta * k) * a * ad.transpose();
+      if (damped) AddShapeProduct(dQdedot, pt.sx, pt.sx, MatDD((beta * k) * a * a.transpose()));
+    } else {
+      // eps = |a| - 1: d1 = s' (x) n, d2 = (s' s'^T) (x) (I - n n^T) / |a|
+      const double l = std::sqrt(gg);
+      if (!(l > 0.0)) throw NumericalError("ANCF element slope r' vanished (element collapsed)");
+      const VecD n = a / l;
+      const double c2 = k * (l - 1.0 + beta * n.dot(ad));
+      f = c2 * n;
+      const MatDD nn = n * n.transpose();
+      G = k * nn + (c2 / l) * (I - nn);
+      if (damped) {
+        const VecD w = (ad - n * n.dot(ad)) / l;  // d2 edot = s' (x) w
+        G.noalias() += (beta * k) * n * w.transpose();
+        AddShapeProduct(dQdedot, pt.sx, pt.sx, MatDD((beta * k) * nn));
+      }
     }
-  });
+    for (int p = 0; p < 4; ++p) Q.template segment<D>(D * p) -= pt.sx[p] * f;
+    AddShapeProduct(dQde, pt.sx, pt.sx, G);
+  }
+  for (int g = 0; g < n_bending_; ++g) {
+    const BendingPoint& pt = bending_pts_[g];
+    const Eigen::Map<const Vec4> sx(pt.sx), sxx(pt.sxx);
+    const VecD a = E * sx;
+    const VecD b = E * sxx;
+    const VecD ad = damped ? VecD(Ed * sx) : zero;
+    const VecD bd = damped ? VecD(Ed * sxx) : zero;
+    const double gg = a.squaredNorm();
+    if (!(gg > 0.0)) throw NumericalError("ANCF element slope r' vanished (element collapsed)");
+    const double K = pt.k;
+    VecD fa = zero, fb = zero;
+    MatDD Gss = Z, Gsx = Z, Gxs = Z, Gxx = Z, Css = Z, Csx = Z, Cxs = Z, Cxx = Z;
+    for (int k = 0; k < kCurv; ++k) {
+      // kappa = c / g with c = a . A b, g = a . a; d kappa/de = s' (x) alpha + s'' (x) gamma
+      const MatDD A = CrossMatrix<D>(k);
+      const VecD Ab = A * b;
+      const double c = a.dot(Ab);
+      const VecD alpha = Ab / gg - (2.0 * c / (gg * gg)) * a;
+      const VecD gamma = A.transpose() * a / gg;
+      // Hessian: (s' s'^T) (x) Hss + (s' s''^T) (x) Hsx + (s'' s'^T) (x) Hsx^T
+      MatDD Hss = (-2.0 / gg) * (alpha * a.transpose() + a * alpha.transpose());
+      Hss.diagonal().array() -= 2.0 * c / (gg * gg);
+      const MatDD Hsx = (A - 2.0 * a * gamma.transpose()) / gg;
+      const double rate = damped ? alpha.dot(ad) + gamma.dot(bd) : 0.0;
+      const double c2 = K * (c / gg - kappa0_(k) + beta * rate);
+      fa += c2 * alpha;
+      fb += c2 * gamma;
+      Gss.noalias() += K * alpha * alpha.transpose();
+      Gsx.noalias() += K * alpha * gamma.transpose();
+      Gxs.noalias() += K * gamma * alpha.transpose();
+      Gxx.noalias() += K * gamma * gamma.transpose();
+      Gss += c2 * Hss;
+      Gsx += c2 * Hsx;
+      Gxs += c2 * Hsx.transpose();
+      if (damped) {
+        const double bk = beta * K;
+        const VecD w1 = Hss * ad + Hsx * bd;  // d2 edot = s' (x) w1 + s'' (x) w2
+        const VecD w2 = Hsx.transpose() * ad;
+        Gss.noalias() += bk * alpha * w1.transpose();
+        Gsx.noalias() += bk * alpha * w2.transpose();
+        Gxs.noalias() += bk * gamma * w1.transpose();
+        Gxx.noalias() += bk * gamma * w2.transpose();
+        Css.noalias() += bk * alpha * alpha.transpose();
+        Csx.noalias() += bk * alpha * gamma.transpose();
+        Cxs.noalias() += bk * gamma * alpha.transpose();
+        Cxx.noalias() += bk * gamma * gamma.transpose();
+      }
+    }
+    for (int p = 0; p < 4; ++p) Q.template segment<D>(D * p) -= pt.sx[p] * fa + pt.sxx[p] * fb;
+    AddShapeProducts(dQde, pt.sx, pt.sxx, Gss, Gsx, Gxs, Gxx);
+    if (damped) AddShapeProducts(dQdedot, pt.sx, pt.sxx, Css, Csx, Cxs, Cxx);
+  }
 }
 
 template <int D>
 void LineElement<D>::AddInternalForceVector(const Vec& e, const Vec& edot, Vec& Q) const {
+  using Vec4 = Eigen::Matrix<double, 4, 1>;
+  const Eigen::Map<const Eigen::Matrix<double, D, 4>> E(e.data()), Ed(edot.data());
   const double beta = section_.damping;
-  // Q -= k s ds/de (+ the Kelvin-Voigt term), as AddAncfStrainTerm without tangents
-  auto add = [&](double k, double s, const Vec& d1) {
-    Q.noalias() -= (k * s) * d1;
-    if (beta > 0.0) Q.noalias() -= (beta * k * d1.dot(edot)) * d1;
-  };
+  const bool damped = beta > 0.0;
   const bool gl = section_.axial_strain == AxialStrainMeasure::kGreenLagrange;
-  ForEachAxialPoint([&](double xi, double EA) {
-    const ShapeMat Sx = ShapeSlope(xi);
-    const VecD a = Sx * e;
-    const double g = a.squaredNorm();
-    if (gl) return add(EA, 0.5 * (g - 1.0), Sx.transpose() * a);
-    const double l = std::sqrt(g);
-    if (!(l > 0.0)) throw NumericalError("ANCF element slope r' vanished (element collapsed)");
-    add(EA, l - 1.0, Sx.transpose() * a / l);
-  });
-  ForEachBendingPoint([&](double xi, double EI) {
-    const ShapeMat Sx = ShapeSlope(xi);
-    const ShapeMat Sxx = ShapeCurvature(xi);
-    const VecD a = Sx * e;
-    const VecD b = Sxx * e;
-    const double g = a.squaredNorm();
-    if (!(g > 0.0)) throw NumericalError("ANCF element slope r' vanished (element collapsed)");
-    const Vec dg = 2.0 * Sx.transpose() * a;
+  for (int g = 0; g < n_axial_; ++g) {
+    const AxialPoint& pt = axial_pts_[g];
+    const Eigen::Map<const Vec4> sx(pt.sx);
+    const VecD a = E * sx;
+    const double gg = a.squaredNorm();
+    VecD f;
+    if (gl) {
+      f = pt.k * (0.5 * (gg - 1.0) + (damped ? beta * a.dot(Ed * sx) : 0.0)) * a;
+    } else {
+      const double l = std::sqrt(gg);
+      if (!(l > 0.0)) throw NumericalError("ANCF element slope r' vanished (element collapsed)");
+      const VecD n = a / l;
+      f = pt.k * (l - 1.0 + (damped ? beta * n.dot(Ed * sx) : 0.0)) * n;
+    }
+    for (int p = 0; p < 4; ++p) Q.template segment<D>(D * p) -= pt.sx[p] * f;
+  }
+  for (int g = 0; g < n_bending_; ++g) {
+    const BendingPoint& pt = bending_pts_[g];
+    const Eigen::Map<const Vec4> sx(pt.sx), sxx(pt.sxx);
+    const VecD a = E * sx;
+    const VecD b = E * sxx;
+    const double gg = a.squaredNorm();
+    if (!(gg > 0.0)) throw NumericalError("ANCF element slope r' vanished (element collapsed)");
+    VecD fa = VecD::Zero(), fb = VecD::Zero();
     for (int k = 0; k < kCurv; ++k) {
       const Eigen::Matrix<double, D, D> A = CrossMatrix<D>(k);
-      const double c = a.dot(A * b);
-      const Vec dc = Sx.transpose() * (A * b) + Sxx.transpose() * (A.transpose() * a);
-      add(EI, c / g - kappa0_(k), dc / g - (c / (g * g)) * dg);
+      const VecD Ab = A * b;
+      const double c = a.dot(Ab);
+      const VecD alpha = Ab / gg - (2.0 * c / (gg * gg)) * a;
+      const VecD gamma = A.transpose() * a / gg;
+      const double rate = damped ? alpha.dot(Ed * sx) + gamma.dot(Ed * sxx) : 0.0;
+      const double c2 = pt.k * (c / gg - kappa0_(k) + beta * rate);
+      fa += c2 * alpha;
+      fb += c2 * gamma;
     }
-  });
+    for (int p = 0; p < 4; ++p) Q.template segment<D>(D * p) -= pt.sx[p] * fa + pt.sxx[p] * fb;
+  }
 }
 
 template <int D>

@@ -21,6 +21,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "flexmb/common/error.h"
@@ -208,9 +209,6 @@ class LineElement {
   VecK kappa0_ = VecK::Zero();
 
  private:
-  // bending strain and its first and second derivatives at one point
-  void BendingTerms(const ShapeMat& Sx, const ShapeMat& Sxx, const Vec& e, int k, double& kap,
-                    Vec& dkap, Mat& ddkap) const;
   // calls f(xi, EA w) at every point of the axial rules (weights include
   // the length and the split between reduced and full integration)
   template <class F>
@@ -218,16 +216,27 @@ class LineElement {
   // calls f(xi, EI w) at every bending quadrature point
   template <class F>
   void ForEachBendingPoint(F&& f) const;
-  // elastic (and damping) force of one strain component with weighted
-  // stiffness k: -k strain d1, its tangent, and the damping terms
-  void AddStrainTerm(double stiffness, double strain, const Vec& d1, const Mat& d2, const Vec& edot,
-                     Vec& Q, Mat& dQde, Mat& dQdedot) const;
-
   double length_;
   BeamSection section_;
   QuadratureOrder order_;
   double axial_full_ = 0.0;  // fraction of the axial energy integrated fully
   Mat mass_;
+  // quadrature points of the kernels: weighted stiffness k (EA resp. EI
+  // times weight and length) and the scalar Hermite slopes s' [1/m] and
+  // curvatures s'' [1/m^2] of the 4 nodal vectors
+  struct AxialPoint {
+    double k;
+    double sx[4];
+  };
+  struct BendingPoint {
+    double k;
+    double sx[4];
+    double sxx[4];
+  };
+  std::array<AxialPoint, 12> axial_pts_{};
+  int n_axial_ = 0;
+  std::array<BendingPoint, 6> bending_pts_{};
+  int n_bending_ = 0;
 };
 
 extern template class LineElement<2>;
