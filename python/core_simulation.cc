@@ -389,6 +389,7 @@ void BindSimulation(py::module_& m) {
         d["rejected_steps"] = st.rejected;
         d["newton_iterations"] = st.newton_iterations;
         d["factorizations"] = st.factorizations;
+        d["chord_checks"] = st.chord_checks;
         d["max_constraint_violation"] = st.max_constraint_violation;
         d["integration_time_s"] = s.seconds_integrating;
         return d;

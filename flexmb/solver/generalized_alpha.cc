@@ -78,8 +78,14 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
   for (int it = 0; it < m.solver.max_newton; ++it) {
     ++stats.newton_iterations;
     // fresh: iteration matrix at this iterate; else the kept factorization
-    const bool fresh = refresh;
+    bool fresh = refresh;
     refresh = !reuse;
+    // full Newton from the second iteration on: the previous iterate's
+    // factorization first gives a chord correction; if that is already within
+    // the tolerance it is the last correction of the step, else the matrix is
+    // refreshed at this iterate (docs/design.md "Convergence check by a chord step")
+    const bool probe = !reuse && it > 0;
+    if (probe) fresh = false;
     trial_.lambda.setZero();
     for (int e = 0; e < m.nc; ++e)
       if (ws.row_of_eq[e] >= 0) trial_.lambda(e) = lam1_(ws.row_of_eq[e]);
@@ -109,10 +115,35 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
       }
       have_matrix_ = true;
       matrix_h_ = h;
-    } else {
+    } else if (reuse) {
       used_kept_ = true;
     }
+    if (probe) rhs_probe_ = ws.rhs;
     lu_.Solve(ws.rhs);
+    if (probe) {
+      const double scale0 = std::max(1.0, dq_.lpNorm<Eigen::Infinity>());
+      const double chord = ws.rhs.head(nv).lpNorm<Eigen::Infinity>() / scale0;
+      ++stats.chord_checks;
+      if (!(chord <= kChordAcceptFraction * m.solver.newton_tol)) {
+        // not converged yet: the Newton matrix at this iterate
+        EvaluateForces(m, trial_, ws, true);
+        AddMassTangents(m, trial_, vdot1_, ws);
+        AssembleIterationMatrix(m, trial_, ws, coef);
+        ++stats.factorizations;
+        have_matrix_ = false;
+        if (!lu_.Factorize(ws.S)) {
+          const int c = lu_.singular_column();
+          hint_ = c >= 0 && c < nv ? "singular iteration matrix at velocity coordinate " + std::to_string(c)
+                                   : "singular iteration matrix";
+          return StepStatus::kNewtonFailed;
+        }
+        have_matrix_ = true;
+        matrix_h_ = h;
+        fresh = true;
+        ws.rhs = rhs_probe_;
+        lu_.Solve(ws.rhs);
+      }
+    }
     dx_ = ws.rhs.head(nv);
     // update
     // q_{n+1} = q_n (+) dq with the accumulated increment (composing the
@@ -136,7 +167,7 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
     // is not enough: components that the kept matrix reduces slowly hardly
     // show in |dx| (docs/design.md "Newton predictor")
     bool accept = norm <= m.solver.newton_tol;
-    if (!fresh) {
+    if (reuse && !fresh) {
       if (it > 0) {
         rate_ = norm / prev_norm;
         if (rate_ > max_rate) refresh = true;

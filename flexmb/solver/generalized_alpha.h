@@ -31,6 +31,7 @@ struct IntegratorStats {
   long rejected = 0;           ///< steps rejected (error or Newton failure)
   long newton_iterations = 0;  ///< Newton iterations of all attempts
   long factorizations = 0;     ///< numeric LU factorizations
+  long chord_checks = 0;       ///< full Newton's convergence checks with the previous factorization
   double max_constraint_violation = 0.0;  ///< max |Phi| over accepted steps
 };
 
@@ -45,6 +46,14 @@ class GeneralizedAlpha {
   /// most this fraction of newton_tol (full Newton's remaining error is
   /// quadratic in ||dx||, far below the tolerance).
   static constexpr double kKeptMatrixErrorFraction = 0.01;
+
+  /// Full Newton accepts a chord correction (the previous iterate's
+  /// factorization applied to this iterate's residual) as the step's last
+  /// when it is within this fraction of newton_tol; else it refreshes the
+  /// matrix at this iterate. The chord correction differs from the Newton
+  /// correction by O(|dx_prev|) relatively, and the error left after it is
+  /// O(|dx_prev| |dx|).
+  static constexpr double kChordAcceptFraction = 1.0;
 
   /// rho_inf in [0, 1]: spectral radius at infinite frequency (1 = no
   /// numerical damping).
@@ -109,6 +118,7 @@ class GeneralizedAlpha {
   VecX a_, vdot_;
   // trial values
   VecX a1_, vdot1_, q1_, v1_, lam1_, dq_, res_, dx_;
+  VecX rhs_probe_;  // right-hand side of a chord check, kept for the Newton solve
   State trial_;
 };
 
