@@ -26,6 +26,16 @@ struct Workspace {
   /// Per body: true if the body declared a block pattern (Body::BlockPattern);
   /// then only its entries of mass, dQdq, dQdv are zeroed, used and copied.
   std::vector<char> body_sparse;
+  /// One pattern entry of S in a sparse body's diagonal block: its position
+  /// in S.valuePtr(), its row i and column j in the body's block and the
+  /// index i + j nv_b of the same entry in the body's dense blocks (mass,
+  /// dQdq, dQdv).
+  struct BlockEntry {
+    int s, i, j, lin;
+  };
+  /// Per body: the entries of a sparse body's block, column by column (empty
+  /// for dense bodies), found once so that the step loop does not search S.
+  std::vector<std::vector<BlockEntry>> body_entries;
   /// Per marker: (first, count) of the body's velocity columns its Jacobian
   /// can touch (Body::MarkerColumns), in the body's own indices.
   std::vector<std::pair<int, int>> marker_cols;

@@ -319,8 +319,15 @@ void InitWorkspace(const Model& model, Workspace& ws, const std::vector<int>& re
   ws.S.makeCompressed();
   ws.rhs.setZero(nv + ws.n_active);
   BuildAssemblySlots(model, ws);
-  for (int k = 0; k < nb; ++k)
-    if (ws.body_sparse[k]) CheckBodyPattern(model, s0, ws, k);
+  ws.body_entries.assign(nb, {});
+  for (int k = 0; k < nb; ++k) {
+    if (!ws.body_sparse[k]) continue;
+    const int n = model.bodies[k]->nv();
+    auto& entries = ws.body_entries[k];
+    ForBlockEntries(ws.S, model.bodies[k]->v_offset, n,
+                    [&](int p, int i, int j) { entries.push_back({p, i, j, i + j * n}); });
+    CheckBodyPattern(model, s0, ws, k);
+  }
 }
 
 void EvaluateMarkers(const Model& model, const State& s, Workspace& ws) {
@@ -396,12 +403,12 @@ void EvaluateForces(const Model& model, const State& s, Workspace& ws, bool tang
       continue;
     if (ws.body_sparse[k]) {
       // the body writes only its pattern entries: zero just those
-      MatX& dq = ws.dQdq[k];
-      MatX& dv = ws.dQdv[k];
-      ForBlockEntries(ws.S, b.v_offset, b.nv(), [&dq, &dv](int, int i, int j) {
-        dq(i, j) = 0.0;
-        dv(i, j) = 0.0;
-      });
+      double* dq = ws.dQdq[k].data();
+      double* dv = ws.dQdv[k].data();
+      for (const Workspace::BlockEntry& e : ws.body_entries[k]) {
+        dq[e.lin] = 0.0;
+        dv[e.lin] = 0.0;
+      }
     } else {
       ws.dQdq[k].setZero();
       ws.dQdv[k].setZero();
@@ -476,11 +483,15 @@ void AssembleIterationMatrix(const Model& model, const State& s, Workspace& ws,
       }
       continue;
     }
-    ForBlockEntries(S, b.v_offset, b.nv(), [&](int p, int i, int j) {
-      val[p] += c.mass * M(i, j);
-      if (c.damping != 0.0) val[p] += -c.damping * Kv(i, j);
-      if (c.stiffness != 0.0) val[p] += -c.stiffness * Kq(i, j);
-    });
+    const double* m = M.data();
+    const double* kv = Kv.data();
+    const double* kq = Kq.data();
+    for (const Workspace::BlockEntry& e : ws.body_entries[k]) {
+      double v = c.mass * m[e.lin];
+      if (c.damping != 0.0) v -= c.damping * kv[e.lin];
+      if (c.stiffness != 0.0) v -= c.stiffness * kq[e.lin];
+      val[e.s] += v;
+    }
   }
   // force elements: -d(J^T w)/dq and -d(J^T w)/dv
   for (size_t k = 0; k < model.forces.size() && (c.damping != 0.0 || c.stiffness != 0.0); ++k) {
@@ -599,10 +610,11 @@ void MassTimes(const Model& model, const Workspace& ws, const VecX& a, VecX& r) 
       continue;
     }
     // the pattern entries of the mass block only
-    const MatX& M = ws.mass[k];
-    const int off = b.v_offset;
-    r.segment(off, b.nv()).setZero();
-    ForBlockEntries(ws.S, off, b.nv(), [&](int, int i, int j) { r(off + i) += M(i, j) * a(off + j); });
+    const double* M = ws.mass[k].data();
+    double* rb = r.data() + b.v_offset;
+    const double* ab = a.data() + b.v_offset;
+    r.segment(b.v_offset, b.nv()).setZero();
+    for (const Workspace::BlockEntry& e : ws.body_entries[k]) rb[e.i] += M[e.lin] * ab[e.j];
   }
 }
 
