@@ -36,6 +36,10 @@ struct Workspace {
   /// Per body: the entries of a sparse body's block, column by column (empty
   /// for dense bodies), found once so that the step loop does not search S.
   std::vector<std::vector<BlockEntry>> body_entries;
+  /// Per sparse body: its mass block on those entries (compressed columns,
+  /// values in the order of body_entries), for the mass product of every
+  /// Newton iteration; refreshed whenever the mass block is.
+  std::vector<SparseMat> body_mass;
   /// Per marker: (first, count) of the body's velocity columns its Jacobian
   /// can touch (Body::MarkerColumns), in the body's own indices.
   std::vector<std::pair<int, int>> marker_cols;

@@ -190,6 +190,14 @@ void BuildAssemblySlots(const Model& model, Workspace& ws) {
   }
 }
 
+/// Copies sparse body k's mass block (ws.mass[k]) onto its compressed copy.
+void RefreshSparseMass(Workspace& ws, int k) {
+  const double* M = ws.mass[k].data();
+  double* val = ws.body_mass[k].valuePtr();
+  const auto& entries = ws.body_entries[k];
+  for (size_t p = 0; p < entries.size(); ++p) val[p] = M[entries[p].lin];
+}
+
 }  // namespace
 
 void InitWorkspace(const Model& model, Workspace& ws, const std::vector<int>& removed) {
@@ -320,12 +328,20 @@ void InitWorkspace(const Model& model, Workspace& ws, const std::vector<int>& re
   ws.rhs.setZero(nv + ws.n_active);
   BuildAssemblySlots(model, ws);
   ws.body_entries.assign(nb, {});
+  ws.body_mass.assign(nb, SparseMat());
   for (int k = 0; k < nb; ++k) {
     if (!ws.body_sparse[k]) continue;
     const int n = model.bodies[k]->nv();
     auto& entries = ws.body_entries[k];
     ForBlockEntries(ws.S, model.bodies[k]->v_offset, n,
                     [&](int p, int i, int j) { entries.push_back({p, i, j, i + j * n}); });
+    // the same entries as a compressed matrix (column by column, rows ascending: the same order)
+    Triplets t;
+    for (const Workspace::BlockEntry& e : entries) t.emplace_back(e.i, e.j, 1.0);
+    ws.body_mass[k].resize(n, n);
+    ws.body_mass[k].setFromTriplets(t.begin(), t.end());
+    ws.body_mass[k].makeCompressed();
+    RefreshSparseMass(ws, k);
     CheckBodyPattern(model, s0, ws, k);
   }
 }
@@ -396,7 +412,10 @@ void EvaluateForces(const Model& model, const State& s, Workspace& ws, bool tang
     const Body& b = *model.bodies[k];
     if (b.nv() == 0) continue;
     const double* q = s.q.data() + b.q_offset;
-    if (!b.HasConstantMass()) b.MassMatrix(q, ws.mass[k]);
+    if (!b.HasConstantMass()) {
+      b.MassMatrix(q, ws.mass[k]);
+      if (ws.body_sparse[k]) RefreshSparseMass(ws, static_cast<int>(k));
+    }
     // without tangents a body that can skips its derivative blocks (left as
     // they are: the next evaluation with tangents zeroes them first)
     if (!tangents && b.AddForceVector(q, s.v.data() + b.v_offset, model.gravity_W, ws.Q.segment(b.v_offset, b.nv())))
@@ -610,11 +629,7 @@ void MassTimes(const Model& model, const Workspace& ws, const VecX& a, VecX& r) 
       continue;
     }
     // the pattern entries of the mass block only
-    const double* M = ws.mass[k].data();
-    double* rb = r.data() + b.v_offset;
-    const double* ab = a.data() + b.v_offset;
-    r.segment(b.v_offset, b.nv()).setZero();
-    for (const Workspace::BlockEntry& e : ws.body_entries[k]) rb[e.i] += M[e.lin] * ab[e.j];
+    r.segment(b.v_offset, b.nv()).noalias() = ws.body_mass[k] * a.segment(b.v_offset, b.nv());
   }
 }
 
