@@ -76,6 +76,13 @@ void AddCoupling(SparseMat& S, const int* starts, const MarkerState& ma, const C
                  const Right& Rb, const Eigen::Ref<const Eigen::Matrix<double, 6, 6>>& K6, double scale,
                  MatX& tmp, MatX& blk) {
   if (ca.second == 0 || cb.second == 0 || scale == 0.0) return;
+  if (ca.second == 6 && cb.second == 6) {
+    // rigid-body markers: fixed-size products (no dynamic-size loops)
+    const Eigen::Matrix<double, 6, 6> t6 = K6 * Rb.template block<6, 6>(0, cb.first);
+    const Eigen::Matrix<double, 6, 6> b6 = ma.J.template block<6, 6>(0, ca.first).transpose() * t6;
+    AddBlockAtSlots(S.valuePtr(), starts, b6, scale);
+    return;
+  }
   auto t = tmp.topLeftCorner(6, cb.second);
   auto b = blk.topLeftCorner(ca.second, cb.second);
   t.noalias() = K6 * Rb.middleCols(cb.first, cb.second);
