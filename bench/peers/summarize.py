@@ -69,6 +69,8 @@ for (c, s) in sorted({(k[0], k[1]) for k in keys}):
     def rate(code, n):
         rs = g.get((c, s, n, code), [])
         return med(rs, lambda r: r['steps'] / r['integration_s']) if rs else float('nan')
+    if not g.get((c, s, 'full', 'flexmb')) or not g.get((c, s, 'full', 'exudyn')):
+        continue
     fb = max(rate('flexmb', 'full'), rate('flexmb', 'modified'))
     eb = max(rate('exudyn', 'full'), rate('exudyn', 'modified'))
     ff = rate('flexmb', 'full') / rate('exudyn', 'full')
