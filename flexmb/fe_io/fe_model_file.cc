@@ -533,8 +533,11 @@ fe::FeModel LoadFeModelFile(const std::string& path) {
 
 namespace {
 
-// the model's connected parts and unused nodes, as warnings (fe/mesh_checks.h)
+// the model's connected parts and unused nodes, as warnings (fe/mesh_checks.h);
+// not for imported matrices, whose mesh holds display cells only (the
+// matrices, not the cells, join the nodes and give them degrees of freedom)
 fe::FeModel Checked(fe::FeModel model, const std::string& path) {
+  if (model.imported) return model;
   for (const std::string& w : fe::MeshCheckWarnings(model.mesh, fe::CheckMesh(model.mesh), path)) LogWarning(w);
   return model;
 }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flexmb/fe/mesh_checks.h"
 #include "flexmb/fe/modal.h"
 #include "flexmb/fe_io/exchange_set.h"
 #include "flexmb/fe_io/gmsh_reader.h"
@@ -251,6 +252,35 @@ TEST(FeModelFile, ImportedMatricesFromAnFeModelFile) {
   });
   EXPECT_NE(msg.find("imported_bad.yaml:2: unknown key 'materials' (allowed: matrices, fixed)"), std::string::npos)
       << msg;
+}
+
+TEST(FeModelFile, ImportedMatricesGetNoMeshConnectivityWarnings) {
+  // an exchange set's geometry holds display cells only: a node with degrees
+  // of freedom in the matrices but in no cell (a lumped mass here; the
+  // condensed master nodes of an RBE2 in bench/peers/rotor) is not unused,
+  // and the cells do not tell the parts apart: no mesh check warnings
+  FeModel strip = LoadFeModel(FeData("gmsh/strip.yaml"));
+  fe::Node extra;
+  extra.id = 900001;
+  extra.x = Vec3(0.0, 0.5, 0.0);
+  strip.mesh.nodes.push_back(extra);
+  fe::PointMass pm;
+  pm.id = 1;
+  pm.node = static_cast<int>(strip.mesh.nodes.size()) - 1;
+  pm.mass = 2.0;
+  strip.mesh.point_masses.push_back(pm);
+  AssemblyOptions none;
+  none.apply_constraints = false;
+  WriteExchangeSet(strip.mesh, fe::Assemble(strip.mesh, none), ScratchPath("strip_extra_set"));
+  testing::WarningCapture warnings;
+  const FeModel imported = LoadFeModel(WriteScratch(
+      "imported_extra.yaml", "matrices:\n  stiffness: strip_extra_set/K_CCS.hb\n  mass: strip_extra_set/M_CCS.hb\n"
+                             "  dof_map: strip_extra_set/dof_map.txt\n  geometry: strip_extra_set/geometry.vtk\n"));
+  ASSERT_TRUE(imported.imported);
+  EXPECT_EQ(warnings.Count("used by no element"), 0);
+  EXPECT_EQ(warnings.Count("parts that no element"), 0);
+  // the same mesh read as elements does warn about the lone mass node
+  EXPECT_EQ(fe::MeshCheckWarnings(strip.mesh, fe::CheckMesh(strip.mesh), "strip").size(), 1u);
 }
 
 TEST(FeModelFile, LoadFeModelByExtension) {
