@@ -49,7 +49,7 @@ FlexibleBody::FlexibleBody(std::string name, FlexibleBodyData data)
       data_(std::move(data)),
       n_(CheckedInvariants(this->name(), data_).n),
       inertia_(data_.reduced->invariants),
-      mass_tangent_(data_.reduced->invariants) {
+      mass_tangent_(data_.reduced->invariants, inertia_) {
   if (data_.damping.size() != 0) {
     damping_ = data_.damping;
   } else if (data_.reduced->damping.size() != 0) {

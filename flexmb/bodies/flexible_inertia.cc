@@ -98,6 +98,8 @@ void FlexibleInertia::ContractSecondOrder(const double* w, const double* wd, con
   }
 }
 
+Mat3 FlexibleInertia::MooDerivative(int k) const { return inv_.moo1[k] + FlexInertiaUnpack(GW_, k); }
+
 void FlexibleInertia::MassMatrix(const double* w, Eigen::Ref<Eigen::MatrixXd> out) const {
   const int n = n_;
   // sum_ij w_i w_j moo2[i n + j] = 1/2 sum_k w_k sum_j w_j P_kj

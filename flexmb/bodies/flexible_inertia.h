@@ -69,6 +69,11 @@ class FlexibleInertia {
   const Vec3& p_v() const { return pv_; }
   const Vec3& p_o() const { return po_; }
 
+  /// dM_oo/dw_k = moo1[k] + sum_j w_j (moo2[k n + j] + moo2[j n + k]) at the
+  /// w of the last MassMatrix or Evaluate call, from their shared
+  /// contraction of the second-order invariants (O(1) per k).
+  Mat3 MooDerivative(int k) const;
+
  private:
   // GW_ (n x 6) = contraction of the stacked moo2 with w (column r: entry r
   // of the symmetric 3 x 3 blocks, order 00, 11, 22, 10, 20, 21); with

@@ -13,7 +13,8 @@ Eigen::Matrix3d MassTangentSkew(const Eigen::Vector3d& v) {
 
 }  // namespace
 
-FlexibleMassTangent::FlexibleMassTangent(const reduction::InertiaInvariants& inv) : inv_(inv), n_(inv.n) {
+FlexibleMassTangent::FlexibleMassTangent(const reduction::InertiaInvariants& inv, const FlexibleInertia& inertia)
+    : inv_(inv), inertia_(inertia), n_(inv.n) {
   mb_.setZero(6 + n_, 6 + n_);
   ab_.setZero(6 + n_);
   y_.setZero(6 + n_);
@@ -23,8 +24,8 @@ FlexibleMassTangent::FlexibleMassTangent(const reduction::InertiaInvariants& inv
 void FlexibleMassTangent::Add(const Eigen::Matrix3d& R, const double* w, const double* a, double scale,
                               Eigen::Ref<Eigen::MatrixXd> K) const {
   const int n = n_, N = 6 + n_;
-  const Eigen::Map<const Eigen::VectorXd> wv(w, n), av(a, N);
-  reduction::MassMatrix(inv_, wv, mb_);
+  const Eigen::Map<const Eigen::VectorXd> av(a, N);
+  inertia_.MassMatrix(w, mb_);  // also the contraction MooDerivative reads
   ab_ = av;
   ab_.head<3>() = R.transpose() * av.head<3>();
   y_.noalias() = mb_ * ab_;
@@ -37,8 +38,7 @@ void FlexibleMassTangent::Add(const Eigen::Matrix3d& R, const double* w, const d
 
   // modal columns: T^T (dM_B/dw_i) a_B
   for (int i = 0; i < n; ++i) {
-    Eigen::Matrix3d doo = inv_.moo1[i];
-    for (int j = 0; j < n; ++j) doo += w[j] * (inv_.moo2[i * n + j] + inv_.moo2[j * n + i]);
+    const Eigen::Matrix3d doo = inertia_.MooDerivative(i);
     col_.head<3>() = R * (inv_.mvo1[i] * ao);
     col_.segment<3>(3).noalias() = inv_.mow1[i] * ab_.tail(n);
     col_.segment<3>(3) += inv_.mvo1[i].transpose() * av_b + doo * ao;

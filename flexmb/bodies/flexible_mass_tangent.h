@@ -19,10 +19,15 @@
 ///   columns dtheta:   rows v: -R skew(y_v) + R M_B[v, v] skew(R^T a_v),
 ///                     rows o, w: M_B[o|w, v] skew(R^T a_v);
 ///   columns dr:       zero.
-/// Cost O(n^2) per call, no allocation (scratch sized at construction).
+/// M_B(w) and the sums over moo2 come from the body's FlexibleInertia, whose
+/// contraction of the second-order invariants with w is shared with the
+/// mass matrix and the forces at the same w (issue 23). Cost O(n^2) per
+/// call (O(n) once that contraction exists), no allocation (scratch sized
+/// at construction).
 
 #include <Eigen/Core>
 
+#include "flexmb/bodies/flexible_inertia.h"
 #include "flexmb/reduction/reduced_body.h"
 
 namespace flexmb {
@@ -30,8 +35,9 @@ namespace flexmb {
 /// Evaluates d(M(q) a)/dq of one flexible body; see the file comment.
 class FlexibleMassTangent {
  public:
-  /// Keeps a reference to `inv` (must outlive this object).
-  explicit FlexibleMassTangent(const reduction::InertiaInvariants& inv);
+  /// Keeps references to `inv` and to `inertia`, the body's evaluator of
+  /// the same invariants (both must outlive this object).
+  FlexibleMassTangent(const reduction::InertiaInvariants& inv, const FlexibleInertia& inertia);
 
   /// Adds `scale` d(M(q) a)/dq to K ((6 + n) square; rows the velocity
   /// components v_W, om_B, wd; columns the increments dr_W, dtheta_B, dw)
@@ -42,6 +48,7 @@ class FlexibleMassTangent {
 
  private:
   const reduction::InertiaInvariants& inv_;
+  const FlexibleInertia& inertia_;
   int n_;
   mutable Eigen::MatrixXd mb_;  // M_B(w)
   mutable Eigen::VectorXd ab_, y_, col_;

@@ -31,7 +31,8 @@ TEST(FlexibleMassTangent, MatchesFiniteDifferencesOfMassTimesAcceleration) {
 
   MatX K = MatX::Zero(N, N);
   const Eigen::Quaterniond quat(q(3), q(4), q(5), q(6));
-  FlexibleMassTangent(reduced->invariants).Add(quat.toRotationMatrix(), q.data() + 7, a.data(), 1.0, K);
+  const FlexibleInertia inertia(reduced->invariants);
+  FlexibleMassTangent(reduced->invariants, inertia).Add(quat.toRotationMatrix(), q.data() + 7, a.data(), 1.0, K);
 
   MatX fd(N, N), M;
   VecX qp(q.size()), qm(q.size()), dx = VecX::Zero(N);
