@@ -73,6 +73,7 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
   const MatrixCoefficients coef{1.0, gp / bp, 1.0 / bp, m.solver.geometric_stiffness};
   double prev_norm = INFINITY;
   const double max_rate = m.solver.jacobian_reuse_rate;
+  int probe_accepted_at = -1, probe_failed_at = -1;  // iterations of this attempt's chord checks
   bool refresh = !reuse || !have_matrix_ || matrix_h_ != h;
   used_kept_ = false;
   for (int it = 0; it < m.solver.max_newton; ++it) {
@@ -84,7 +85,7 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
     // factorization first gives a chord correction; if that is already within
     // the tolerance it is the last correction of the step, else the matrix is
     // refreshed at this iterate (docs/design.md "Convergence check by a chord step")
-    const bool probe = !reuse && it > 0;
+    const bool probe = !reuse && it > 0 && it >= probe_from_;
     if (probe) fresh = false;
     trial_.lambda.setZero();
     for (int e = 0; e < m.nc; ++e)
@@ -124,7 +125,10 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
       const double scale0 = std::max(1.0, dq_.lpNorm<Eigen::Infinity>());
       const double chord = ws.rhs.head(nv).lpNorm<Eigen::Infinity>() / scale0;
       ++stats.chord_checks;
+      probe_accepted_at = it;
       if (!(chord <= kChordAcceptFraction * m.solver.newton_tol)) {
+        probe_accepted_at = -1;
+        probe_failed_at = it;
         // not converged yet: the Newton matrix at this iterate
         EvaluateForces(m, trial_, ws, true);
         AddMassTangents(m, trial_, vdot1_, ws);
@@ -196,6 +200,14 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
       const double viol = na > 0 ? ws.phi.lpNorm<Eigen::Infinity>() : 0.0;
       stats.max_constraint_violation = std::max(stats.max_constraint_violation, viol);
       last_failed_ = false;
+      if (!reuse) {
+        // where the next step tries its first chord check: where this one's
+        // was accepted, or after the last that failed (a check that fails
+        // costs a force evaluation and a solve); now and then from the start
+        if (probe_accepted_at > 0) probe_from_ = probe_accepted_at;
+        else if (probe_failed_at > 0) probe_from_ = probe_failed_at + 1;
+        if (++probe_steps_ % kChordRelearnSteps == 0) probe_from_ = 1;
+      }
       return StepStatus::kConverged;
     }
   }

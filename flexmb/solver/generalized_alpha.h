@@ -55,6 +55,11 @@ class GeneralizedAlpha {
   /// O(|dx_prev| |dx|).
   static constexpr double kChordAcceptFraction = 1.0;
 
+  /// Full Newton tries its first chord check of a step at the iteration
+  /// where the last step's was accepted (or after the last that failed);
+  /// every this many steps it tries from the second iteration again.
+  static constexpr int kChordRelearnSteps = 16;
+
   /// rho_inf in [0, 1]: spectral radius at infinite frequency (1 = no
   /// numerical damping).
   GeneralizedAlpha(const Model& model, Workspace& ws, double rho_inf);
@@ -119,6 +124,8 @@ class GeneralizedAlpha {
   // trial values
   VecX a1_, vdot1_, q1_, v1_, lam1_, dq_, res_, dx_;
   VecX rhs_probe_;  // right-hand side of a chord check, kept for the Newton solve
+  int probe_from_ = 1;    // first iteration of a step with a chord check (full Newton)
+  long probe_steps_ = 0;  // converged full Newton steps, for kChordRelearnSteps
   State trial_;
 };
 
