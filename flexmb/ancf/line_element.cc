@@ -72,7 +72,7 @@ Eigen::Matrix<double, D, 4 * D> Expand(const double (&s)[4]) {
   return S;
 }
 
-// K -= (x x^T) (x) G, block by block (x the 4 scalar shape values)
+// K -= (x y^T) (x) G, block by block (x, y: 4 scalar shape values each)
 template <int D, class MatK>
 void AddShapeProduct(MatK& K, const double (&x)[4], const double (&y)[4], const Eigen::Matrix<double, D, D>& G) {
   for (int q = 0; q < 4; ++q)

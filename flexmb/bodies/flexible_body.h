@@ -70,6 +70,9 @@ class FlexibleBody final : public Body {
   /// Throws InputError naming the body if the reduced body is missing or its
   /// sizes are inconsistent (invariants, modes, matrices, initial values).
   FlexibleBody(std::string name, FlexibleBodyData data);
+  /// Not copyable or movable: the mass tangent refers to this body's inertia.
+  FlexibleBody(const FlexibleBody&) = delete;
+  FlexibleBody& operator=(const FlexibleBody&) = delete;
 
   int nq() const override { return 7 + n_; }
   int nv() const override { return 6 + n_; }

@@ -24,6 +24,7 @@ void GeneralizedAlpha::Start(const State& s) {
   a_ = vdot_;
   trial_ = s;
   lam1_.setZero(ws_.n_active);
+  rhs_probe_.setZero(ws_.rhs.size());
   have_matrix_ = false;
 }
 
@@ -105,44 +106,28 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
       return StepStatus::kNewtonFailed;
     }
     if (fresh) {
-      AssembleIterationMatrix(m, trial_, ws, coef);
-      ++stats.factorizations;
-      have_matrix_ = false;
-      if (!lu_.Factorize(ws.S)) {
-        const int c = lu_.singular_column();
-        hint_ = c >= 0 && c < nv ? "singular iteration matrix at velocity coordinate " + std::to_string(c)
-                                 : "singular iteration matrix";
-        return StepStatus::kNewtonFailed;
-      }
-      have_matrix_ = true;
-      matrix_h_ = h;
+      if (!FactorizeIterationMatrix(coef, h)) return StepStatus::kNewtonFailed;
     } else if (reuse) {
       used_kept_ = true;
     }
+    bool chord_ok = false;  // this iteration's chord correction ends the step
     if (probe) rhs_probe_ = ws.rhs;
     lu_.Solve(ws.rhs);
     if (probe) {
       const double scale0 = std::max(1.0, dq_.lpNorm<Eigen::Infinity>());
       const double chord = ws.rhs.head(nv).lpNorm<Eigen::Infinity>() / scale0;
       ++stats.chord_checks;
-      probe_accepted_at = it;
-      if (!(chord <= kChordAcceptFraction * m.solver.newton_tol)) {
-        probe_accepted_at = -1;
+      // within the tolerance and contracting (a matrix that no longer fits
+      // the iterate, e.g. after a contact opened, shows in the rate)
+      chord_ok = chord <= kChordAcceptFraction * m.solver.newton_tol && chord <= kChordMaxRate * prev_norm;
+      if (chord_ok) {
+        probe_accepted_at = it;
+      } else {
         probe_failed_at = it;
         // not converged yet: the Newton matrix at this iterate
         EvaluateForces(m, trial_, ws, true);
         AddMassTangents(m, trial_, vdot1_, ws);
-        AssembleIterationMatrix(m, trial_, ws, coef);
-        ++stats.factorizations;
-        have_matrix_ = false;
-        if (!lu_.Factorize(ws.S)) {
-          const int c = lu_.singular_column();
-          hint_ = c >= 0 && c < nv ? "singular iteration matrix at velocity coordinate " + std::to_string(c)
-                                   : "singular iteration matrix";
-          return StepStatus::kNewtonFailed;
-        }
-        have_matrix_ = true;
-        matrix_h_ = h;
+        if (!FactorizeIterationMatrix(coef, h)) return StepStatus::kNewtonFailed;
         fresh = true;
         ws.rhs = rhs_probe_;
         lu_.Solve(ws.rhs);
@@ -170,7 +155,7 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
     // rate measured in this step. The estimate rate / (1 - rate) |dx| alone
     // is not enough: components that the kept matrix reduces slowly hardly
     // show in |dx| (docs/design.md "Newton predictor")
-    bool accept = norm <= m.solver.newton_tol;
+    bool accept = norm <= m.solver.newton_tol || chord_ok;
     if (reuse && !fresh) {
       if (it > 0) {
         rate_ = norm / prev_norm;
@@ -220,6 +205,21 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
   }
   hint_ = worst >= 0 ? "largest constraint residual in " + DescribeEquation(m, worst) : "Newton did not converge";
   return StepStatus::kNewtonFailed;
+}
+
+bool GeneralizedAlpha::FactorizeIterationMatrix(const MatrixCoefficients& coef, double h) {
+  AssembleIterationMatrix(model_, trial_, ws_, coef);
+  ++stats.factorizations;
+  have_matrix_ = false;
+  if (!lu_.Factorize(ws_.S)) {
+    const int c = lu_.singular_column();
+    hint_ = c >= 0 && c < model_.nv ? "singular iteration matrix at velocity coordinate " + std::to_string(c)
+                                    : "singular iteration matrix";
+    return false;
+  }
+  have_matrix_ = true;
+  matrix_h_ = h;
+  return true;
 }
 
 std::vector<ResidualShare> GeneralizedAlpha::FailureShares(int count) const {

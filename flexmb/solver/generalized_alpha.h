@@ -20,6 +20,7 @@
 
 #include "flexmb/model/model.h"
 #include "flexmb/model/workspace.h"
+#include "flexmb/solver/assembler.h"
 #include "flexmb/solver/residual_share.h"
 #include "flexmb/solver/sparse_lu.h"
 
@@ -54,6 +55,11 @@ class GeneralizedAlpha {
   /// correction by O(|dx_prev|) relatively, and the error left after it is
   /// O(|dx_prev| |dx|).
   static constexpr double kChordAcceptFraction = 1.0;
+
+  /// ... and when it is at most this fraction of the previous correction
+  /// (Newton contracts quadratically near the solution; a chord correction
+  /// that does not shrink means the previous matrix no longer fits).
+  static constexpr double kChordMaxRate = 0.5;
 
   /// Full Newton tries its first chord check of a step at the iteration
   /// where the last step's was accepted (or after the last that failed);
@@ -104,6 +110,9 @@ class GeneralizedAlpha {
  private:
   // one attempt; reuse: modified Newton (SolverSettings::jacobian_reuse)
   StepStatus Attempt(const State& s, double h, bool reuse);
+  // assembles the iteration matrix at the trial state and factorizes it;
+  // false (with the hint set) if it is singular
+  bool FactorizeIterationMatrix(const MatrixCoefficients& coef, double h);
 
   const Model& model_;
   Workspace& ws_;
