@@ -37,3 +37,19 @@ def counters(it, t_int, steps):
     Jacobians, integration time and steps per second."""
     return {'steps': int(it.currentStepIndex), 'newton_iterations': int(it.newtonStepsCount),
             'jacobians': int(it.newtonJacobiCount), 'integration_s': t_int, 'steps_per_s': steps / t_int}
+
+
+def parser(tend, h, rho, solver_choice=False):
+    """The options every driver takes: --modified (modified Newton), --tend,
+    --h, --rho with the model's defaults, and with `solver_choice` --solver
+    dense|sparse (Exudyn's EXUdense or EigenSparse)."""
+    import argparse
+    ap = argparse.ArgumentParser()
+    ap.add_argument('--modified', action='store_true', help='modified Newton (Jacobian reuse)')
+    ap.add_argument('--tend', type=float, default=tend)
+    ap.add_argument('--h', type=float, default=h)
+    ap.add_argument('--rho', type=float, default=rho)
+    if solver_choice:
+        ap.add_argument('--solver', default='dense', choices=['dense', 'sparse'],
+                        help='Exudyn linear solver: EXUdense (default) or EigenSparse')
+    return ap
