@@ -125,10 +125,10 @@ AncfHoistRopeBody::AncfHoistRopeBody(std::string name, const HoistRopeData& data
   positive(s.A, "area");
   positive(s.I, "bending inertia");
   positive(s.rho, "density");
-  positive(data_.drum_radius, "drum radius");
+  if (data_.drum_in_body) positive(data_.drum_radius, "drum radius");
   if (!(data_.stored_length >= 0.0) || !(data_.drum_inertia >= 0.0) || !(s.damping >= 0.0))
     throw InputError("hoist rope stored length, drum inertia and damping must not be negative", ctx);
-  if (!(data_.stored_length > 0.0) && !(data_.drum_inertia > 0.0))
+  if (data_.drum_in_body && !(data_.stored_length > 0.0) && !(data_.drum_inertia > 0.0))
     throw InputError("hoist rope needs rope stored on the drum or a drum inertia (else paying out a "
                      "straight rope moves no mass and the free length has no inertia)",
                      ctx);
@@ -137,7 +137,8 @@ AncfHoistRopeBody::AncfHoistRopeBody(std::string name, const HoistRopeData& data
     throw InputError("hoist rope start, drum and payout speed must be finite and the direction non-zero", ctx);
   rhoA_ = s.rho * s.A;
   L_total_ = data_.free_length + data_.stored_length;
-  m_drum_ = data_.drum_inertia / (data_.drum_radius * data_.drum_radius);
+  m_drum_ = data_.drum_in_body ? data_.drum_inertia / (data_.drum_radius * data_.drum_radius) : 0.0;
+  rhoS_ = data_.drum_in_body ? rhoA_ : 0.0;
   const Vec3 t0 = data_.direction_W.normalized();
   const Vec3 n = std::abs(t0.z()) < 1.0 - 1e-6 ? Vec3::UnitZ() : Vec3::UnitX();
   R_W0_.col(0) = t0;
@@ -207,7 +208,7 @@ void AncfHoistRopeBody::MassMatrix(const double* q, MatX& M) const {
   ApplyBanded(Db, q, t2_);
   M.col(nL_).head(nL_) = t1_;
   M.row(nL_).head(nL_) = t1_.transpose();
-  M(nL_, nL_) = Eigen::Map<const VecX>(q, nL_).dot(t2_) / L + rhoA_ * (L_total_ - L) + m_drum_;
+  M(nL_, nL_) = Eigen::Map<const VecX>(q, nL_).dot(t2_) / L + rhoS_ * (L_total_ - L) + m_drum_;
 }
 
 void AncfHoistRopeBody::AddMassTangent(const double* q, const double* a, double scale, Eigen::Ref<MatX> K) const {
@@ -225,7 +226,7 @@ void AncfHoistRopeBody::AddMassTangent(const double* q, const double* a, double 
   }
   K.col(nL_).head(nL_) += scale * t1_;
   K.row(nL_).head(nL_) += scale * (t2_ + (2.0 * aL / L) * t3_).transpose();
-  K(nL_, nL_) += scale * aL * (-qq.dot(t3_) / (L * L) - rhoA_);
+  K(nL_, nL_) += scale * aL * (-qq.dot(t3_) / (L * L) - rhoS_);
 }
 
 void AncfHoistRopeBody::AddForces(const double* q, const double* v, const Vec3& g_W, Eigen::Ref<VecX> Q,
@@ -302,8 +303,12 @@ void AncfHoistRopeBody::Forces(const double* q, const double* v, const Vec3& g_W
   const double qDq = qq.dot(t4_), qDqd = qq.dot(t5_), qdCqd = vq.dot(t2_), qdMqd = vq.dot(t1_);
   // Lagrange's velocity terms of T, gravity: V = -L t6 . q - rho A (L_total - L) g . p_drum
   Q.head(nL_) += -Ld * (t1_ + t2_ - t3_) + (Ld * Ld / L) * t4_ + L * t6_;
-  Q(nL_) += -qdCqd + 0.5 * qdMqd - 2.0 * Ld * qDqd / L + 0.5 * Ld * Ld * qDq / (L * L) + 0.5 * rhoA_ * Ld * Ld +
-            t6_.dot(qq) - rhoA_ * g_W.dot(data_.drum_W);
+  Q(nL_) += -qdCqd + 0.5 * qdMqd - 2.0 * Ld * qDqd / L + 0.5 * Ld * Ld * qDq / (L * L) + 0.5 * rhoS_ * Ld * Ld +
+            t6_.dot(qq) - rhoS_ * g_W.dot(data_.drum_W);
+  // fed over the sheave: the rope enters at node 0 from that height (so that
+  // at rest the lead's pull equals the axial force at the top of the span)
+  const double rhoF = data_.drum_in_body ? 0.0 : rhoA_;
+  Q(nL_) -= rhoF * g_W.dot(qq.head<3>());
   if (!tangents) return;
   Eigen::Ref<MatX>& dQdq = *dQdq_p;
   Eigen::Ref<MatX>& dQdv = *dQdv_p;
@@ -312,9 +317,10 @@ void AncfHoistRopeBody::Forces(const double* q, const double* v, const Vec3& g_W
   dQdq.row(nL_).head(nL_) += ((-2.0 * Ld / L) * t5_ + (Ld * Ld / (L * L)) * t4_).transpose();
   dQdq(nL_, nL_) += 2.0 * Ld * qDqd / (L * L) - Ld * Ld * qDq / (L * L * L);
   dQdv.row(nL_).head(nL_) += (t1_ - t2_ - t3_ - (2.0 * Ld / L) * t4_).transpose();
-  dQdv(nL_, nL_) += -2.0 * qDqd / L + Ld * qDq / (L * L) + rhoA_ * Ld;
+  dQdv(nL_, nL_) += -2.0 * qDqd / L + Ld * qDq / (L * L) + rhoS_ * Ld;
   dQdq.col(nL_).head(nL_) += t6_;
   dQdq.row(nL_).head(nL_) += t6_.transpose();
+  dQdq.block<1, 3>(nL_, 0) -= rhoF * g_W.transpose();
 }
 
 double AncfHoistRopeBody::ElementStrain(int e, const Vec13& y, const Vec13& yd, Vec13* Q, Mat13* K,
@@ -467,7 +473,9 @@ double AncfHoistRopeBody::KineticEnergy(const double* q, const double* v) const 
 double AncfHoistRopeBody::GravityPotential(const double* q, const Vec3& g_W) const {
   const double L = q[nL_], N = n_el_;
   const Vec3 gq[4] = {0.5 * g_W, g_W / 12.0, 0.5 * g_W, -g_W / 12.0};
-  double V = -rhoA_ * (L_total_ - L) * g_W.dot(data_.drum_W);
+  // fed over the sheave: the rope still to enter at node 0's height
+  double V = -rhoS_ * (L_total_ - L) * g_W.dot(data_.drum_W);
+  if (!data_.drum_in_body) V -= rhoA_ * (L_total_ - L) * g_W.dot(Eigen::Map<const Vec3>(q));
   for (int e = 0; e < n_el_; ++e)
     for (int a = 0; a < 4; ++a) V -= L * (rhoA_ / N) * gq[a].dot(Eigen::Map<const Vec3>(q + 6 * e + 3 * a));
   return V;

@@ -56,8 +56,17 @@
 /// displacement along world x, on which a winch driver (WinchDriver)
 /// prescribes L(t) or a point force along x applies the drum torque / R.
 ///
-/// Not modelled: the lead span's own stretch and its pull on the boom head
-/// (add a rope force element between drum and sheave markers), the rope's
+/// Without the drum in the body (HoistRopeData::drum_in_body false) the
+/// stored rope and drum terms above are left out (m_s = 0, no stored weight;
+/// the rope enters at node 0's height instead: Q_L gets -rho A g . r_0, so
+/// that at rest the feeding pull is the axial force at the top of the span;
+/// GravityPotential counts the rope still to enter at r_0):
+/// a `rope` force element with a `span` (forces/reeved_rope.h) is then the
+/// lead span from the drum to the sheave, whose tension pulls the payout
+/// marker; the L coordinate's inertia is the span's own transport term.
+///
+/// Not modelled (with the drum in the body): the lead span's own stretch and
+/// its pull on the boom head (see the previous paragraph), the rope's
 /// wrap on the sheave, torsion, and the drum's rotation with its carrier
 /// (the slewing platform's turn adds nothing to the drum spin).
 
@@ -82,6 +91,13 @@ struct HoistRopeData {
   double drum_radius = 0.0;             ///< winding radius R [m], > 0
   double drum_inertia = 0.0;            ///< drum spin inertia J about its axis [kg m^2], >= 0
   double payout_speed = 0.0;            ///< L'(0) [m/s] (positive pays out)
+  /// true: the span is fed straight from the drum, whose spin inertia and
+  /// stored rope (mass, weight at drum_W) belong to the body. false: the span
+  /// is fed over the boom-head sheave by a `rope` force element (the lead
+  /// span, with the drum) that couples to the payout marker
+  /// (forces/reeved_rope.h); the body then has neither drum nor stored rope
+  /// mass, and stored_length only bounds how much can be paid out.
+  bool drum_in_body = true;
 };
 
 /// Hoisting rope of changing free length; see the file comment.
@@ -178,7 +194,8 @@ class AncfHoistRopeBody final : public Body {
   int nL_;          // 6 (N + 1): index of L
   double rhoA_;
   double L_total_;  // free + stored length at t = 0 [m]
-  double m_drum_;   // J / R^2 [kg]
+  double m_drum_;   // J / R^2 [kg] (0 without the drum in the body)
+  double rhoS_;     // mass per length of the stored rope counted in the body (rho A, or 0)
   Mat3 R_W0_;       // reference frame: x along the initial direction
   // element integrals (unit element, rho A included): M0 = int S^T S,
   // Ca = int S^T S', Cb = int xi S^T S', Da = int S'^T S', Db = int xi S'^T S',

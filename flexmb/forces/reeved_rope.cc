@@ -17,10 +17,16 @@ using ReevedRopeVec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6 * kMaxForceM
 
 }  // namespace
 
-ReevedRope::ReevedRope(std::string name, RopeLaw law, int path_markers, RopeDrum drum)
-    : ForceElement(name), law_(name, std::move(law)), path_(path_markers), drum_(drum) {
+ReevedRope::ReevedRope(std::string name, RopeLaw law, int path_markers, RopeDrum drum, RopeSpan span)
+    : ForceElement(name), law_(name, std::move(law)), path_(path_markers), drum_(drum), span_(span) {
   const ErrorContext ctx{"", 0, "force '" + this->name() + "'"};
   if (path_ < 2) throw InputError("a rope path needs at least two markers, got " + std::to_string(path_), ctx);
+  if (span_.present && (law_.law().hoist_speed || law_.law().free_length_function))
+    throw InputError("with a span the winch is the drum or the span's own winch: give neither hoist_speed nor a "
+                     "free-length function",
+                     ctx);
+  if (span_.present && !(span_.free_length > 0.0))
+    throw InputError(fmt::format("the span's free length must be > 0, got {:g} m", span_.free_length), ctx);
   if (!drum_.joint) return;
   if (!(drum_.radius > 0.0) || !std::isfinite(drum_.radius))
     throw InputError(fmt::format("the drum radius must be finite and > 0, got {:g} m", drum_.radius), ctx);
@@ -39,31 +45,45 @@ void ReevedRope::Evaluate(const MarkerState&, const MarkerState&, double, ForceE
 
 void ReevedRope::FreeLength(const MarkerState* const* m, double t, double& L0, double& L0dot, Vec3& a,
                             Vec3& wrel) const {
+  double theta = 0.0;
   if (!drum_.joint) {
-    law_.FreeLength(t, L0, L0dot);
-    return;
+    if (span_.present) {
+      L0 = law_.law().free_length;
+      L0dot = 0.0;
+    } else {
+      law_.FreeLength(t, L0, L0dot);
+      return;
+    }
+  } else {
+    const MarkerState& di = *m[path_];
+    const MarkerState& dj = *m[path_ + 1];
+    const double wrapped = drum_.joint->Coordinate(0, di, dj, nullptr);
+    theta = wrapped;
+    if (theta_set_) theta += 2.0 * M_PI * std::round((theta_last_ - wrapped) / (2.0 * M_PI));
+    theta_last_ = theta;
+    theta_set_ = true;
+    a = drum_.joint->CoordinateAxis(0, di);
+    wrel = dj.w_WM - di.w_WM;
+    L0 = law_.law().free_length + drum_.radius * theta;
+    L0dot = drum_.radius * a.dot(wrel);
   }
-  const MarkerState& di = *m[path_];
-  const MarkerState& dj = *m[path_ + 1];
-  const double wrapped = drum_.joint->Coordinate(0, di, dj, nullptr);
-  double theta = wrapped;
-  if (theta_set_) theta += 2.0 * M_PI * std::round((theta_last_ - wrapped) / (2.0 * M_PI));
-  theta_last_ = theta;
-  theta_set_ = true;
-  a = drum_.joint->CoordinateAxis(0, di);
-  wrel = dj.w_WM - di.w_WM;
-  L0 = law_.law().free_length + drum_.radius * theta;
-  L0dot = drum_.radius * a.dot(wrel);
+  if (span_.present) {
+    const MarkerState& p = *m[PayoutMarker()];
+    L0 -= law_.law().falls * (p.p_WM.x() - span_.free_length);
+    L0dot -= law_.law().falls * p.v_WM.x();
+  }
   if (!(L0 > 0.0)) {
-    char what[200];
-    std::snprintf(what, sizeof what, "the free length of the rope is %.6g m at t = %.6g s (drum angle %.6g rad); "
-                  "it must stay > 0 (the drum would be empty)", L0, t, theta);
+    char what[240];
+    std::snprintf(what, sizeof what, "the free length of the rope is %.6g m at t = %.6g s (drum angle %.6g rad%s); "
+                  "it must stay > 0 (the drum would be empty)", L0, t, theta,
+                  span_.present ? ", after what the span took" : "");
     throw InputError(what, {"", 0, "force '" + name() + "'"});
   }
 }
 
 void ReevedRope::EvaluateMarkers(const MarkerState* const* m, double t, ForceEval& e) const {
-  const int n6 = 6 * (path_ + (drum_.joint ? 2 : 0));  // the markers, also before the model sets them
+  // the markers, also before the model sets them
+  const int n6 = 6 * (path_ + (drum_.joint ? 2 : 0) + (span_.present ? 1 : 0));
   e.wrench_n.setZero();
   if (e.tangents) {
     e.K_n.setZero();
@@ -73,7 +93,6 @@ void ReevedRope::EvaluateMarkers(const MarkerState* const* m, double t, ForceEva
   Vec3 a = Vec3::Zero(), wrel = Vec3::Zero();
   FreeLength(m, t, L0, L0dot, a, wrel);
   const RopeLaw& law = law_.law();
-  const int last = path_ - 2;  // the last segment hangs the hook block on n falls
   // stretched length, its rate and its gradient g_l over the path positions
   double l = 0.0, ldot = 0.0;
   Eigen::Ref<VecX> w = e.wrench_n;
@@ -84,7 +103,7 @@ void ReevedRope::EvaluateMarkers(const MarkerState* const* m, double t, ForceEva
       throw NumericalError("the path markers " + std::to_string(s) + " and " + std::to_string(s + 1) +
                                " coincide: the rope direction is undefined",
                            {"", 0, "force '" + name() + "'"});
-    const double c = s == last ? law.falls : 1.0;
+    const double c = SegmentFactor(s);
     l += c * ls;
     ldot += c * (d / ls).dot(m[s + 1]->v_WM - m[s]->v_WM);
   }
@@ -94,51 +113,58 @@ void ReevedRope::EvaluateMarkers(const MarkerState* const* m, double t, ForceEva
   const double eps_dot = ldot / L0 - l * L0dot / (L0 * L0);
   const double T = EA * (eps + beta * eps_dot);
   if (!(T > 0.0)) return;  // the damping may relieve the rope, never push
+  // generalized force on psi (L0 = free_length + psi), from the elastic
+  // energy and the dissipation function
+  const double Qpsi = EA * (eps * (1.0 + 0.5 * eps) + beta * eps_dot * (1.0 + eps));
   const double R = drum_.joint ? drum_.radius : 0.0;
-  const double Q = R * EA * (eps * (1.0 + 0.5 * eps) + beta * eps_dot * (1.0 + eps));
 
-  // g_l = dl/dx (positions of the path), g_th = dtheta/dx (drum rotations)
+  // g_l = dl/dx (positions of the path), g_psi = dpsi/dx (drum rotations,
+  // the span's payout)
   VecX& gl = e.wrench_n;  // built in place, then scaled
   for (int s = 0; s + 1 < path_; ++s) {
     const Vec3 u = (m[s + 1]->p_WM - m[s]->p_WM).normalized();
-    const double c = s == last ? law.falls : 1.0;
+    const double c = SegmentFactor(s);
     gl.segment<3>(6 * (s + 1)) += c * u;
     gl.segment<3>(6 * s) -= c * u;
   }
-  const int di = 6 * path_, dj = 6 * (path_ + 1);
+  const int di = 6 * path_, dj = 6 * (path_ + 1), dp = 6 * PayoutMarker();
+  const double n_span = span_.present ? law.falls : 0.0;
   if (!e.tangents) {
     gl *= -T;
     if (R > 0.0) {
-      w.segment<3>(di + 3) = -Q * a;
-      w.segment<3>(dj + 3) = Q * a;
+      w.segment<3>(di + 3) = -R * Qpsi * a;
+      w.segment<3>(dj + 3) = R * Qpsi * a;
     }
+    if (span_.present) w(dp) = -n_span * Qpsi;
     return;
   }
-  ReevedRopeVec gth = ReevedRopeVec::Zero(n6);
+  ReevedRopeVec gpsi = ReevedRopeVec::Zero(n6);
   if (R > 0.0) {
-    gth.segment<3>(di + 3) = -a;
-    gth.segment<3>(dj + 3) = a;
+    gpsi.segment<3>(di + 3) = -R * a;
+    gpsi.segment<3>(dj + 3) = R * a;
   }
+  if (span_.present) gpsi(dp) = -n_span;
   // partial derivatives of eps and d(eps)/dt by l, L0, ldot, L0dot
   const double e_l = 1.0 / L0, e_L = -l / (L0 * L0);
   const double ed_l = -L0dot / (L0 * L0), ed_L = -ldot / (L0 * L0) + 2.0 * l * L0dot / (L0 * L0 * L0);
   const double ed_ld = 1.0 / L0, ed_Ld = -l / (L0 * L0);
-  // T and Q by l, theta (L0 = free + R theta), ldot, thetadot
-  const double T_l = EA * (e_l + beta * ed_l), T_th = R * EA * (e_L + beta * ed_L);
-  const double T_ld = EA * beta * ed_ld, T_thd = R * EA * beta * ed_Ld;
+  // T and Q_psi by l, psi, ldot, psidot
+  const double T_l = EA * (e_l + beta * ed_l), T_psi = EA * (e_L + beta * ed_L);
+  const double T_ld = EA * beta * ed_ld, T_psid = EA * beta * ed_Ld;
   const auto q_of = [&](double ex, double edx) {
-    return R * EA * (ex * (1.0 + eps) + beta * (edx * (1.0 + eps) + eps_dot * ex));
+    return EA * (ex * (1.0 + eps) + beta * (edx * (1.0 + eps) + eps_dot * ex));
   };
-  const double Q_l = q_of(e_l, ed_l), Q_th = R * q_of(e_L, ed_L);
-  const double Q_ld = q_of(0.0, ed_ld), Q_thd = R * q_of(0.0, ed_Ld);
+  const double Q_l = q_of(e_l, ed_l), Q_psi = q_of(e_L, ed_L);
+  const double Q_ld = q_of(0.0, ed_ld), Q_psid = q_of(0.0, ed_Ld);
 
-  // d(ldot)/dx and d(thetadot)/dx at fixed twists; the Hessian of l
-  ReevedRopeVec dld = ReevedRopeVec::Zero(n6), dthd = ReevedRopeVec::Zero(n6);
+  // d(ldot)/dx and d(psidot)/dx at fixed twists (the payout marker's
+  // Jacobian is constant); the Hessian of l
+  ReevedRopeVec dld = ReevedRopeVec::Zero(n6), dpsid = ReevedRopeVec::Zero(n6);
   for (int s = 0; s + 1 < path_; ++s) {
     const Vec3 d = m[s + 1]->p_WM - m[s]->p_WM;
     const double ls = d.norm();
     const Vec3 u = d / ls;
-    const double c = s == last ? law.falls : 1.0;
+    const double c = SegmentFactor(s);
     const Mat3 P = c * (Mat3::Identity() - u * u.transpose()) / ls;
     const Vec3 pv = P * (m[s + 1]->v_WM - m[s]->v_WM);
     dld.segment<3>(6 * (s + 1)) += pv;
@@ -151,24 +177,24 @@ void ReevedRope::EvaluateMarkers(const MarkerState* const* m, double t, ForceEva
     e.K_n.block<3, 3>(i0, j0) += T * P;
   }
   if (R > 0.0) {
-    dthd.segment<3>(di + 3) = a.cross(wrel);
-    // Q d(g_th)/dx: the axis a turns with marker i (da = -skew(a) dth_i)
+    dpsid.segment<3>(di + 3) = R * a.cross(wrel);
+    // Q_psi d(g_psi)/dx: the axis a turns with marker i (da = -skew(a) dth_i)
     const Mat3 Sa = Skew(a);
-    e.K_n.block<3, 3>(dj + 3, di + 3) -= Q * Sa;
-    e.K_n.block<3, 3>(di + 3, di + 3) += Q * Sa;
+    e.K_n.block<3, 3>(dj + 3, di + 3) -= R * Qpsi * Sa;
+    e.K_n.block<3, 3>(di + 3, di + 3) += R * Qpsi * Sa;
   }
   const ReevedRopeVec g = gl;
-  const ReevedRopeVec dT = T_l * g + T_th * gth + T_ld * dld + T_thd * dthd;
-  const ReevedRopeVec dQ = Q_l * g + Q_th * gth + Q_ld * dld + Q_thd * dthd;
-  const ReevedRopeVec cT = T_ld * g + T_thd * gth;
-  const ReevedRopeVec cQ = Q_ld * g + Q_thd * gth;
+  const ReevedRopeVec dT = T_l * g + T_psi * gpsi + T_ld * dld + T_psid * dpsid;
+  const ReevedRopeVec dQ = Q_l * g + Q_psi * gpsi + Q_ld * dld + Q_psid * dpsid;
+  const ReevedRopeVec cT = T_ld * g + T_psid * gpsi;
+  const ReevedRopeVec cQ = Q_ld * g + Q_psid * gpsi;
   e.K_n.noalias() -= g * dT.transpose();
-  e.K_n.noalias() += gth * dQ.transpose();
+  e.K_n.noalias() += gpsi * dQ.transpose();
   e.C_n.noalias() -= g * cT.transpose();
-  e.C_n.noalias() += gth * cQ.transpose();
+  e.C_n.noalias() += gpsi * cQ.transpose();
   // the wrench last (gl is its storage)
   gl *= -T;
-  w += Q * gth;
+  w += Qpsi * gpsi;
 }
 
 double ReevedRope::PotentialEnergyMarkers(const MarkerState* const* m, double t) const {
@@ -177,7 +203,7 @@ double ReevedRope::PotentialEnergyMarkers(const MarkerState* const* m, double t)
   FreeLength(m, t, L0, L0dot, a, wrel);
   double l = 0.0;
   for (int s = 0; s + 1 < path_; ++s)
-    l += (s == path_ - 2 ? law_.law().falls : 1.0) * (m[s + 1]->p_WM - m[s]->p_WM).norm();
+    l += SegmentFactor(s) * (m[s + 1]->p_WM - m[s]->p_WM).norm();
   const double eps = l / L0 - 1.0;
   return eps > 0.0 ? 0.5 * law_.law().axial_stiffness * L0 * eps * eps : 0.0;
 }

@@ -16,6 +16,15 @@ struct RopeDrum {
   double radius = 0.0;           ///< winding radius to the rope's centre line [m], > 0
 };
 
+/// The hanging span of a reeved rope as an ANCF body of changing length
+/// (ancf/ancf_hoist_rope_body.h, without its own drum): the rope's path then
+/// ends at the boom-head sheave, and the span's free length L (its payout
+/// marker's x) is fed from this rope.
+struct RopeSpan {
+  bool present = false;
+  double free_length = 0.0;  ///< L of the span at the start [m]
+};
+
 /// Tension-only rope along the path of markers P_0 .. P_m (m >= 1): P_0 where
 /// the rope leaves the winch, P_1 .. P_{m-1} sheaves (the rope passes through
 /// the marker origins: wrap length and sheave friction are not modelled),
@@ -39,13 +48,26 @@ struct RopeDrum {
 /// drum must not be evaluated from two threads at once. The rope has no mass.
 /// Markers: P_0 .. P_m, then the drum joint's markers i and j. K and C are
 /// exact on each side of the slack switch.
+///
+/// With a span (RopeSpan), P_m is the sheave the span hangs from, every path
+/// segment counts once, and the n falls are the span's (an ANCF body whose
+/// section is the n falls together): the rope is conserved between drum,
+/// path and span, so the path's free length is
+///   L0 = free_length + R theta - n (L - L_span(0)),
+/// L the span's free length (the x of its payout marker, the last marker).
+/// The path's tension then pulls the span's payout marker with the
+/// generalized force -n EA eps (1 + eps / 2) - ... (the same as the drum's,
+/// with -n for R): at rest the span's top tension (all falls) is n T. Paying
+/// out more than the path holds (L0 <= 0) is an error naming the rope. With
+/// L0 = free_length + psi, psi = R theta - n (L - L_span(0)), every tangent
+/// below is taken through psi.
 class ReevedRope final : public ForceElement {
  public:
   /// `path_markers` = m + 1 >= 2. `law` as for Rope; with a drum, free_length
   /// is L0 at theta = 0 and a hoisting speed or free-length function is an
   /// error. Throws InputError naming the rope for bad values, a drum radius
   /// <= 0 or a drum joint without an angle coordinate.
-  ReevedRope(std::string name, RopeLaw law, int path_markers, RopeDrum drum = {});
+  ReevedRope(std::string name, RopeLaw law, int path_markers, RopeDrum drum = {}, RopeSpan span = {});
   const char* type() const override { return "rope"; }
   /// Not used: a ReevedRope acts on more than two markers.
   void Evaluate(const MarkerState&, const MarkerState&, double, ForceEval&) const override;
@@ -56,15 +78,24 @@ class ReevedRope final : public ForceElement {
   int path_markers() const { return path_; }
   /// The drum (joint null without one).
   const RopeDrum& drum() const { return drum_; }
+  /// The rope's properties (free_length: the path's at drum angle 0).
+  const RopeLaw& law() const { return law_.law(); }
+  /// The span (present false without one).
+  const RopeSpan& span() const { return span_; }
 
  private:
   /// Free length L0 [m] and its rate [m/s]; with a drum also the drum axis
   /// a (world) and the relative angular velocity w_j - w_i of its markers.
   void FreeLength(const MarkerState* const* m, double t, double& L0, double& L0dot, Vec3& a, Vec3& wrel) const;
+  /// Coefficient of path segment s in the stretched length.
+  double SegmentFactor(int s) const { return s == path_ - 2 && !span_.present ? law_.law().falls : 1.0; }
+  /// Index of the span's payout marker.
+  int PayoutMarker() const { return path_ + (drum_.joint ? 2 : 0); }
 
   Rope law_;  // the rope's properties and, without a drum, its winch
   int path_;
   RopeDrum drum_;
+  RopeSpan span_;
   mutable double theta_last_ = 0.0;  // unwrapped drum angle of the last evaluation
   mutable bool theta_set_ = false;
 };

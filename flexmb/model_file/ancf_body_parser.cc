@@ -143,7 +143,8 @@ void ParseCable(const YAML::Node& node, ParseContext& ctx, std::map<std::string,
 }
 
 // hoisting rope of changing length: the cable keys without length and end,
-// plus free_length, stored_length, drum {position, radius, inertia} and
+// plus free_length, stored_length, drum {position, radius, inertia}
+// (optional: without it a rope force's 'span' feeds the body) and
 // payout_speed; the payout marker "<name>.payout" is added
 void ParseHoistRope(const YAML::Node& node, ParseContext& ctx, std::map<std::string, int>& lines) {
   const std::string name =
@@ -159,13 +160,18 @@ void ParseHoistRope(const YAML::Node& node, ParseContext& ctx, std::map<std::str
   d.start_W = ctx.Vector3(node, "start", Vec3::Zero());
   d.direction_W = ctx.Vector3(node, "direction", -Vec3::UnitZ());
   if (!(d.direction_W.norm() > 0.0)) ctx.Fail(node["direction"], "'direction' must not be zero");
+  // without 'drum' the span is fed over a sheave by a rope force element
+  // with a 'span' (its lead span and drum): checked when the model is complete
   const YAML::Node drum = node["drum"];
-  if (!drum || !drum.IsMap()) ctx.Fail(drum ? drum : node, "expected 'drum' as {position, radius, inertia}");
-  ctx.CheckKeys(drum, {"position", "radius", "inertia"});
-  d.drum_W = ctx.Vector3(drum, "position");
-  d.drum_radius = ctx.Positive(drum, "radius");
-  d.drum_inertia = ctx.Double(drum, "inertia", 0.0);
-  if (d.drum_inertia < 0.0) ctx.Fail(drum["inertia"], "the drum 'inertia' must not be negative");
+  d.drum_in_body = static_cast<bool>(drum);
+  if (drum) {
+    if (!drum.IsMap()) ctx.Fail(drum, "expected 'drum' as {position, radius, inertia}");
+    ctx.CheckKeys(drum, {"position", "radius", "inertia"});
+    d.drum_W = ctx.Vector3(drum, "position");
+    d.drum_radius = ctx.Positive(drum, "radius");
+    d.drum_inertia = ctx.Double(drum, "inertia", 0.0);
+    if (d.drum_inertia < 0.0) ctx.Fail(drum["inertia"], "the drum 'inertia' must not be negative");
+  }
   d.payout_speed = ctx.Double(node, "payout_speed", 0.0);
   auto body = ctx.Guard(node, [&] { return std::make_unique<ancf::AncfHoistRopeBody>(name, d); });
   const int nodes = body->elements() + 1, payout = body->PayoutNode();

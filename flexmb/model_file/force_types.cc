@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "flexmb/ancf/ancf_hoist_rope_body.h"
 #include "flexmb/common/error.h"
 #include "flexmb/forces/bushing.h"
 #include "flexmb/forces/joint_motor.h"
@@ -238,7 +239,7 @@ std::vector<int> RopePath(const YAML::Node& node, ParseContext& ctx) {
 }
 
 void AddRope(const YAML::Node& node, const std::string& name, ParseContext& ctx) {
-  ctx.CheckKeys(node, {"name", "type", "i", "j", "path", "drum", "axial_stiffness", "falls", "damping_time",
+  ctx.CheckKeys(node, {"name", "type", "i", "j", "path", "drum", "span", "axial_stiffness", "falls", "damping_time",
                        "free_length", "hoist_speed"});
   std::vector<int> markers = RopePath(node, ctx);
   const int path_markers = static_cast<int>(markers.size());
@@ -258,6 +259,24 @@ void AddRope(const YAML::Node& node, const std::string& name, ParseContext& ctx)
     markers.push_back(drum.joint->marker_i);
     markers.push_back(drum.joint->marker_j);
   }
+  // the hanging span as an ANCF hoisting rope fed by this rope
+  RopeSpan span;
+  if (node["span"]) {
+    const int b = ctx.Body(node, "span");
+    const auto* body = dynamic_cast<const ancf::AncfHoistRopeBody*>(ctx.model().bodies[b].get());
+    if (!body)
+      ctx.Fail(node["span"], "body '" + ctx.model().bodies[b]->name() + "' is not an ancf_hoist_rope: a rope's "
+                             "'span' is the hanging span of changing length that the rope feeds");
+    if (body->data().drum_in_body)
+      ctx.Fail(node["span"], "the span '" + body->name() + "' has a 'drum' of its own: leave it out, the rope '" +
+                                 name + "' feeds the span (its drum is the rope's 'drum')");
+    if (node["hoist_speed"] || (node["free_length"] && !node["free_length"].IsScalar()))
+      ctx.Fail(node["span"], "with a 'span' the rope is paid out by its 'drum' (or not at all): give neither "
+                             "'hoist_speed' nor 'free_length' as a function");
+    span.present = true;
+    span.free_length = body->data().free_length;
+    markers.push_back(ctx.model().FindMarker(body->name() + ".payout"));
+  }
   if (node["hoist_speed"]) {
     law.hoist_speed = ctx.Function(node, "hoist_speed", "t");
     if (dynamic_cast<const InputFunction*>(law.hoist_speed.get()))
@@ -276,14 +295,14 @@ void AddRope(const YAML::Node& node, const std::string& name, ParseContext& ctx)
     // unstretched at the start: the path, the last segment on all falls
     const Model& model = ctx.model();
     for (int s = 0; s + 1 < path_markers; ++s)
-      law.free_length += (s + 2 == path_markers ? law.falls : 1) *
+      law.free_length += (s + 2 == path_markers && !span.present ? law.falls : 1) *
                          (InitialMarker(model, markers[s + 1]).p_WM - InitialMarker(model, markers[s]).p_WM).norm();
   }
   ctx.Guard(node, [&] {
-    if (path_markers == 2 && !drum.joint)
+    if (path_markers == 2 && !drum.joint && !span.present)
       ctx.model().AddForce(std::make_unique<Rope>(name, law), markers[0], markers[1]);
     else
-      ctx.model().AddForce(std::make_unique<ReevedRope>(name, law, path_markers, drum), markers);
+      ctx.model().AddForce(std::make_unique<ReevedRope>(name, law, path_markers, drum, span), markers);
   });
 }
 
