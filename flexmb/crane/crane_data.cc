@@ -143,7 +143,10 @@ void ReadWinchAndRope(const YAML::Node& crane, CraneData& d, YamlContext& ctx) {
   d.rope_on_drum = ctx.Double(w, "rope_on_drum", -1.0);
   if (w["rope_on_drum"] && !(d.rope_on_drum > 0)) ctx.Fail(w["rope_on_drum"], "'rope_on_drum' must be positive [m]");
 
-  const YAML::Node r = Section(crane, "rope", {"axial_stiffness", "damping_time", "falls", "slack"}, ctx);
+  const YAML::Node r = Section(crane, "rope",
+                               {"axial_stiffness", "damping_time", "falls", "slack", "model", "elements",
+                                "mass_per_length", "bending_stiffness"},
+                               ctx);
   d.rope_ea = ctx.Positive(r, "axial_stiffness");
   d.rope_damping_time = ctx.Double(r, "damping_time", 0.0);
   if (d.rope_damping_time < 0) ctx.Fail(r["damping_time"], "'damping_time' must not be negative");
@@ -151,6 +154,18 @@ void ReadWinchAndRope(const YAML::Node& crane, CraneData& d, YamlContext& ctx) {
   if (d.falls < 1) ctx.Fail(r["falls"], "'falls' must be a whole number >= 1");
   d.rope_slack = ctx.Double(r, "slack", 0.0);
   if (d.rope_slack < 0) ctx.Fail(r["slack"], "'slack' must not be negative [m]");
+  if (r["model"]) d.rope_model = r["model"].as<std::string>();
+  if (d.rope_model == "ancf") {
+    d.rope_elements = ctx.Integer(r, "elements", 10);
+    if (d.rope_elements < 1) ctx.Fail(r["elements"], "'elements' must be a whole number >= 1");
+    d.rope_mass_per_length = ctx.Positive(r, "mass_per_length");
+    d.rope_bending_stiffness = ctx.Positive(r, "bending_stiffness");
+  } else if (d.rope_model == "massless") {
+    for (const char* k : {"elements", "mass_per_length", "bending_stiffness"})
+      if (r[k]) ctx.Fail(r[k], std::string("'") + k + "' is for the ANCF rope only (model: ancf); the massless rope has none");
+  } else {
+    ctx.Fail(r["model"], "unknown rope model '" + d.rope_model + "' (massless or ancf)");
+  }
 }
 
 void ReadPayload(const YAML::Node& crane, CraneData& d, YamlContext& ctx) {
@@ -191,6 +206,13 @@ CraneData ReadCraneData(const YAML::Node& crane, YamlContext& ctx) {
   ReadCylinder(crane, d, ctx);
   ReadWinchAndRope(crane, d, ctx);
   ReadPayload(crane, d, ctx);
+  if (d.rope_model == "ancf" && !(d.clearance > 0)) {
+    ctx.SetEntity("crane.rope");
+    ctx.Fail(crane["rope"]["model"],
+             "the ANCF rope needs the load hanging (payload 'clearance' > 0): its span carries compression, so it "
+             "cannot start slack on a grounded load (docs/crane-file.md, \"The ANCF rope\"); lift-off of a "
+             "grounded load is the massless rope's case");
+  }
   ctx.SetEntity("crane");
   return d;
 }

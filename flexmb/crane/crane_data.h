@@ -85,6 +85,14 @@ struct CraneData {
   double rope_damping_time = 0;  ///< [s]
   int falls = 1;
   double rope_slack = 0;         ///< rope beyond the taut length with the load on the ground [m]
+  /// How the rope between the boom head and the hook is modelled: "massless"
+  /// (the tension-only `rope` element all the way) or "ancf" (an
+  /// `ancf_hoist_rope` span of `rope_elements` elements, the n falls as one
+  /// span of n times the section, fed by the massless lead span from the drum).
+  std::string rope_model = "massless";
+  int rope_elements = 10;
+  double rope_mass_per_length = 0;    ///< one fall [kg/m] (ancf)
+  double rope_bending_stiffness = 0;  ///< one fall, EI [N m^2] (ancf)
 
   /// The payload: a box of `payload_size` [m] with the hook `hook_height`
   /// above its centre; standing on the ground (`clearance` 0) or hanging

@@ -158,7 +158,46 @@ void AddWinchCylinderBoom(const CraneData& d, const CraneGeometry& c, Entries& e
   e.joints.push_back(Joint("cylinder_eye", "spherical", "rod.eye", "boom.eye"));
 }
 
-void AddPayloadAndRope(const CraneData& d, const CraneGeometry& c, Entries& e) {
+// the hanging span as an ANCF hoisting rope of changing length: the n falls
+// as one span of n times one fall's section (they hang side by side, stretch
+// and swing together), fed over the head sheave by `rope` (now the lead
+// span from the drum to the head) and hung on the head and the hook by
+// spherical joints. Free lengths: the lead's and the span's share of the
+// rope at the start, each stretched by the static tension of one fall.
+void AddAncfSpan(const CraneData& d, const CraneGeometry& c, double g, YAML::Node& rope, Entries& e) {
+  const double n = d.falls;
+  const double lead = (c.head_W - c.winch_exit_W).norm(), span = c.hook_drop;
+  // tension of one fall at the head: the (hanging) load's weight plus the span's
+  const double W_span = n * d.rope_mass_per_length * span * g;
+  const double W_load = d.payload_mass * g;
+  const double T_fall = (W_load + W_span) / n;
+  rope["free_length"] = D(lead / (1.0 + T_fall / d.rope_ea));
+  // the span's mean tension (all falls) is the load plus half its own weight
+  const double span_free = span / (1.0 + (W_load + 0.5 * W_span) / (n * d.rope_ea));
+  rope["span"] = "hoist_span";
+  const Vec3 head = c.head_W, hook = c.head_W - Vec3(0, 0, span);
+  YAML::Node body = Map({{"name", S("hoist_span")}, {"type", S("ancf_hoist_rope")}, {"free_length", D(span_free)},
+                         {"stored_length", D(d.rope_on_drum > 0 ? d.rope_on_drum / n : 1e6)},
+                         {"elements", YAML::Node(d.rope_elements)}});
+  // the section of n falls with a unit area: E A = n EA, rho A = n m', E I = n EI
+  body["section"] = Map({{"area", D(1.0)}, {"inertia", D(d.rope_bending_stiffness / d.rope_ea)}});
+  body["material"] = Map({{"E", D(n * d.rope_ea)}, {"rho", D(n * d.rope_mass_per_length)}});
+  body["damping"] = D(d.rope_damping_time);
+  body["start"] = V(head);
+  body["direction"] = V(hook - head);
+  body["markers"] = YAML::Node(YAML::NodeType::Sequence);
+  body["markers"].push_back(Map({{"name", S("top")}, {"end", S("start")}}));
+  body["markers"].push_back(Map({{"name", S("hook")}, {"end", S("end")}}));
+  e.bodies.push_back(body);
+  e.joints.push_back(Joint("sheave", "spherical", "boom.head", "hoist_span.top"));
+  e.joints.push_back(Joint("hook", "spherical", "hoist_span.hook", "load.hook"));
+  e.sensors.push_back(Sensor("span_length", "marker_position", "marker", "hoist_span.payout"));  // x: L
+  YAML::Node sensor = Sensor("hook_force", "joint_reaction", "joint", "hook");
+  sensor["frame"] = "world";
+  e.sensors.push_back(sensor);
+}
+
+void AddPayloadAndRope(const CraneData& d, const CraneGeometry& c, double g, Entries& e) {
   const Vec3& size = d.payload_size;
   const bool split = d.release_mass > 0;
   const double m_upper = d.payload_mass - d.release_mass;
@@ -191,13 +230,16 @@ void AddPayloadAndRope(const CraneData& d, const CraneGeometry& c, Entries& e) {
   YAML::Node rope = Map({{"name", S("hoist_rope")}, {"type", S("rope")}});
   YAML::Node path(YAML::NodeType::Sequence);
   path.SetStyle(YAML::EmitterStyle::Flow);
-  for (const char* m : {"platform.winch_exit", "boom.head", "load.hook"}) path.push_back(m);
+  path.push_back("platform.winch_exit");
+  path.push_back("boom.head");
+  if (d.rope_model != "ancf") path.push_back("load.hook");
   rope["path"] = path;
   rope["falls"] = d.falls;
   rope["axial_stiffness"] = D(d.rope_ea);
   rope["damping_time"] = D(d.rope_damping_time);
   rope["drum"] = Map({{"joint", S("winch")}, {"radius", D(d.drum_radius)}});
   rope["free_length"] = D(c.free_length);
+  if (d.rope_model == "ancf") AddAncfSpan(d, c, g, rope, e);
   e.rope = rope;
 }
 
@@ -257,7 +299,7 @@ void ExpandCraneFile(YAML::Node& root, const std::string& requested, YamlContext
   Entries e;
   AddCarrierAndPlatform(d, c, e);
   AddWinchCylinderBoom(d, c, e);
-  AddPayloadAndRope(d, c, e);
+  AddPayloadAndRope(d, c, g, e);
   // the drives: the cylinder's length, the drum's angle, the slew angle
   auto driver = [&](const char* name, const char* joint, const std::string& expr) {
     e.drivers.push_back(Map({{"name", S(name)}, {"joint", S(joint)}, {"function", Map({{"expression", S(expr)}})}}));

@@ -209,6 +209,35 @@ TEST_F(CraneFile, BadCraneDataNamesFileLineAndPart) {
 // drum's top) and the eye's transverse force from the cylinder's own
 // weight (barrel and rod, pinned at both ends), plus the rod's weight
 // along its axis.
+// the pedestal crane (tests/data/crane/pedestal_crane.yaml) at rest: its
+// luffing cylinder's axial force [N] and length [m] from the moments about
+// the foot pin, with `W_head` [N] hanging from the head sheave and the lead
+// span pulling the head towards the drum's top with `T_lead` [N]
+struct Cylinder {
+  double axial, length;
+  Eigen::Vector2d u;  // its direction (x, z)
+};
+Cylinder PedestalCylinder(double W_head, double T_lead) {
+  using V2 = Eigen::Vector2d;  // (x, z)
+  const double g = 9.81;
+  auto cross = [](const V2& r, const V2& f) { return r.x() * f.y() - r.y() * f.x(); };
+  const double a = 30.0 * M_PI / 180.0;
+  const V2 foot(0.8, 4.0), base(1.4, 3.2), drum_top(-1.5, 4.2 + 0.25);
+  auto on_boom = [&](double x, double z) {
+    return V2(foot.x() + std::cos(a) * x - std::sin(a) * z, foot.y() + std::sin(a) * x + std::cos(a) * z);
+  };
+  const V2 com = on_boom(6.0, 0), head = on_boom(12.0, 0), eye = on_boom(3.0, -0.4);
+  double moment = cross(com - foot, V2(0, -1500 * g)) + cross(head - foot, V2(0, -W_head)) +
+                  cross(head - foot, T_lead * (drum_top - head).normalized());
+  const double length = (eye - base).norm();
+  const V2 u = (eye - base) / length, n(-u.y(), u.x());
+  // the cylinder's weight: barrel's centre 0.9 m from the base pin, rod's 0.9 m from the eye
+  const double m_w = cross(0.9 * u, V2(0, -200 * g)) + cross((length - 0.9) * u, V2(0, -80 * g));
+  const double q = m_w / length;  // on the boom at the eye, along n
+  const double p = -(moment + q * cross(eye - foot, n)) / cross(eye - foot, u);
+  return {p + 80 * g * u.y(), length, u};  // axial: in the cylinder's prismatic joint
+}
+
 TEST_F(CraneFile, RigidBoomOnAFixedBaseBalancesItsMomentsAboutTheFootPin) {
   const std::string src = FLEXMB_SOURCE_DIR;
   std::filesystem::copy_file(src + "/tests/data/crane/pedestal_crane.yaml", dir_ / "crane.yaml");
@@ -219,27 +248,44 @@ TEST_F(CraneFile, RigidBoomOnAFixedBaseBalancesItsMomentsAboutTheFootPin) {
   const double g = 9.81, m = 2000, T = m * g;
   EXPECT_NEAR(last("rope.f"), T, 1e-9 * T);
   EXPECT_NEAR(last("hook.z"), 1.0 + 0.4 + 1.0, 1e-9);  // clearance + half height + hook height
+  const Cylinder c = PedestalCylinder(T, T);
+  EXPECT_NEAR(last("cylinder_length.value"), c.length, 1e-12);
+  EXPECT_NEAR(std::hypot(last("cylinder.fx"), last("cylinder.fz")), c.axial, 1e-9 * c.axial);
+  EXPECT_NEAR(std::atan2(last("cylinder.fz"), last("cylinder.fx")), std::atan2(c.u.y(), c.u.x()), 1e-12);
+}
 
-  using V2 = Eigen::Vector2d;  // (x, z)
-  auto cross = [](const V2& r, const V2& f) { return r.x() * f.y() - r.y() * f.x(); };
-  const double a = 30.0 * M_PI / 180.0;
-  const V2 foot(0.8, 4.0), base(1.4, 3.2), drum_top(-1.5, 4.2 + 0.25);
-  auto on_boom = [&](double x, double z) {
-    return V2(foot.x() + std::cos(a) * x - std::sin(a) * z, foot.y() + std::sin(a) * x + std::cos(a) * z);
-  };
-  const V2 com = on_boom(6.0, 0), head = on_boom(12.0, 0), eye = on_boom(3.0, -0.4);
-  double moment = cross(com - foot, V2(0, -1500 * g)) + cross(head - foot, V2(0, -T)) +
-                  cross(head - foot, T * (drum_top - head).normalized());
-  const double length = (eye - base).norm();
-  const V2 u = (eye - base) / length, n(-u.y(), u.x());
-  // the cylinder's weight: barrel's centre 0.9 m from the base pin, rod's 0.9 m from the eye
-  const double m_w = cross(0.9 * u, V2(0, -200 * g)) + cross((length - 0.9) * u, V2(0, -80 * g));
-  const double q = m_w / length;  // on the boom at the eye, along n
-  const double p = -(moment + q * cross(eye - foot, n)) / cross(eye - foot, u);
-  const double axial = p + 80 * g * u.y();  // in the cylinder's prismatic joint
-  EXPECT_NEAR(last("cylinder_length.value"), length, 1e-12);
-  EXPECT_NEAR(std::hypot(last("cylinder.fx"), last("cylinder.fz")), axial, 1e-9 * axial);
-  EXPECT_NEAR(std::atan2(last("cylinder.fz"), last("cylinder.fx")), std::atan2(u.y(), u.x()), 1e-12);
+// The same crane with the ANCF rope (docs/crane-file.md, "The ANCF rope"):
+// at rest the lead span's tension carries the load and the span's own
+// weight on `falls` parts, the hook carries the load, and the cylinder
+// balances the head's load plus the span; a grounded load is refused.
+TEST_F(CraneFile, AncfRopeAtRestCarriesTheLoadAndItsOwnWeight) {
+  const std::string src = FLEXMB_SOURCE_DIR;
+  std::filesystem::copy_file(src + "/tests/data/crane/pedestal_crane.yaml", dir_ / "crane.yaml");
+  const double g = 9.81, m = 2000, mu = 2.5;  // load [kg], rope [kg/m] (a heavy rope, to be seen)
+  for (int falls : {1, 2}) {
+    const std::string rope = "rope: {axial_stiffness: 1.0e7, damping_time: 0.002, falls: " + std::to_string(falls) +
+                             ", model: ancf, elements: 6, mass_per_length: 2.5, bending_stiffness: 50}";
+    Edit("rope: {axial_stiffness: 1.0e7, damping_time: 0.002, falls: 1, slack: 0.02}", rope);
+    const auto r = RunCli(dir_, "statics edited.yaml --out s" + std::to_string(falls) + " --quiet");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const ResultsCsv t = ReadResultsCsv(dir_ / ("s" + std::to_string(falls)) / "results.csv");
+    auto last = [&](const char* col) { return t.Values(col).back(); };
+    const double L = last("span_length.x"), W = m * g + falls * mu * g * L;
+    EXPECT_GT(L, 5.0);
+    EXPECT_NEAR(falls * last("rope.f"), W, 1e-9 * W) << falls << " falls";
+    EXPECT_NEAR(last("hook_force.fz"), m * g, 1e-9 * m * g) << falls << " falls";  // the joint holds the load up
+    EXPECT_NEAR(last("hook_force.fx"), 0.0, 1e-9 * m * g);
+    const Cylinder c = PedestalCylinder(W, last("rope.f"));
+    EXPECT_NEAR(std::hypot(last("cylinder.fx"), last("cylinder.fz")), c.axial, 1e-9 * c.axial) << falls << " falls";
+  }
+  const int line = Edit("clearance: 1.0", "clearance: 0.0");
+  std::string text = ReadFile(dir_ / "edited.yaml");
+  text.replace(text.find("slack: 0.02"), 11, "model: ancf, mass_per_length: 2.5, bending_stiffness: 50");
+  std::ofstream(dir_ / "edited.yaml") << text;
+  const auto r = RunCli(dir_, "statics edited.yaml --out g --quiet");
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("edited.yaml:21: crane.rope: the ANCF rope needs the load hanging"), std::string::npos)
+      << r.err << " (clearance on line " << line << ")";
 }
 
 }  // namespace crane_file_test
