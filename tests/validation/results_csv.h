@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -42,6 +44,16 @@ struct ResultsCsv {
 };
 
 /// Reads the file `p` (an empty table if it cannot be read).
+
+/// A cell's number: strtod, which (unlike std::stod) also takes subnormal
+/// values such as 4.9e-324 (a force that is zero to round-off); throws on
+/// text that is not a number.
+inline double ParseCell(const std::string& cell) {
+  char* end = nullptr;
+  const double x = std::strtod(cell.c_str(), &end);
+  if (end == cell.c_str()) throw std::invalid_argument("results.csv: not a number: '" + cell + "'");
+  return x;
+}
 inline ResultsCsv ReadResultsCsv(const std::filesystem::path& p) {
   ResultsCsv t;
   std::istringstream in(ReadFile(p));
@@ -55,7 +67,7 @@ inline ResultsCsv ReadResultsCsv(const std::filesystem::path& p) {
       if (first)
         t.header.push_back(cell);
       else
-        row.push_back(std::stod(cell));
+        row.push_back(ParseCell(cell));
     }
     if (!first) t.rows.push_back(row);
     first = false;
