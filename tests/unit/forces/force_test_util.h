@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <vector>
 
 #include "flexmb/common/error.h"
 #include "flexmb/forces/force_element.h"
@@ -125,6 +126,24 @@ inline void ExpectPotentialGradient(const ForceElement& f, const MarkerState& mi
   const Vec12 w = Wrench(f, mi, mj, t);
   EXPECT_LT((w + grad).cwiseAbs().maxCoeff(), tol * std::max(1.0, w.cwiseAbs().maxCoeff()))
       << f.type() << "\nwrench " << w.transpose() << "\n-dV/dx " << -grad.transpose();
+}
+
+/// Central differences (step h) of the wrench `eval(markers)` (6 n entries)
+/// of an element on n markers, by each marker's position (Kfd) and twist
+/// (Cfd) variation, as the element's K_n and C_n.
+template <class Eval>
+void MarkerFiniteDifferences(Eval&& eval, const std::vector<MarkerState>& ms, double h, MatX& Kfd, MatX& Cfd) {
+  const int n = 6 * static_cast<int>(ms.size());
+  Kfd.resize(n, n);
+  Cfd.resize(n, n);
+  for (int c = 0; c < n; ++c)
+    for (int twist = 0; twist < 2; ++twist) {
+      std::vector<MarkerState> p = ms, m = ms;
+      const int mk = c / 6, k = c % 6;
+      p[mk] = twist ? TwistPerturbed(ms[mk], k, h) : Perturbed(ms[mk], k, h);
+      m[mk] = twist ? TwistPerturbed(ms[mk], k, -h) : Perturbed(ms[mk], k, -h);
+      (twist ? Cfd : Kfd).col(c) = (eval(p) - eval(m)) / (2 * h);
+    }
 }
 
 }  // namespace flexmb::testing

@@ -95,21 +95,17 @@ TEST(ReevedRopeSpan, WrenchIsMinusTheEnergyGradientAndTangentsMatchFiniteDiffere
         const ReevedRope rope("r", testing::TestRopeLaw(1e5, falls, beta, L0), path, d, RopeSpan{true, 7.0});
         const ForceEval e = SpanEval(rope, ms);
         ASSERT_GT(std::abs(e.wrench_n(e.wrench_n.size() - 6)), 1e2) << "no pull on the span";
-        const int n = 6 * static_cast<int>(ms.size());
-        MatX Kfd(n, n), Cfd(n, n);
+        MatX Kfd, Cfd;
         const double h = 1e-6;
-        for (int c = 0; c < n; ++c) {
-          for (int twist = 0; twist < 2; ++twist) {
-            std::vector<MarkerState> p = ms, m = ms;
-            const int mk = c / 6, k = c % 6;
-            p[mk] = twist ? testing::TwistPerturbed(ms[mk], k, h) : testing::Perturbed(ms[mk], k, h);
-            m[mk] = twist ? testing::TwistPerturbed(ms[mk], k, -h) : testing::Perturbed(ms[mk], k, -h);
-            (twist ? Cfd : Kfd).col(c) = (SpanEval(rope, p).wrench_n - SpanEval(rope, m).wrench_n) / (2 * h);
-            if (!twist && beta == 0.0) {
-              const double grad = (SpanEnergy(rope, p) - SpanEnergy(rope, m)) / (2 * h);
-              EXPECT_NEAR(e.wrench_n(c), -grad, 1e-6 * e.wrench_n.cwiseAbs().maxCoeff()) << "component " << c;
-            }
-          }
+        testing::MarkerFiniteDifferences([&](const std::vector<MarkerState>& x) { return SpanEval(rope, x).wrench_n; },
+                                         ms, h, Kfd, Cfd);
+        // the elastic wrench is minus the energy's gradient
+        for (int c = 0; beta == 0.0 && c < 6 * static_cast<int>(ms.size()); ++c) {
+          std::vector<MarkerState> p = ms, m = ms;
+          p[c / 6] = testing::Perturbed(ms[c / 6], c % 6, h);
+          m[c / 6] = testing::Perturbed(ms[c / 6], c % 6, -h);
+          const double grad = (SpanEnergy(rope, p) - SpanEnergy(rope, m)) / (2 * h);
+          EXPECT_NEAR(e.wrench_n(c), -grad, 1e-6 * e.wrench_n.cwiseAbs().maxCoeff()) << "component " << c;
         }
         EXPECT_LT((e.K_n - Kfd).cwiseAbs().maxCoeff(), 1e-6 * std::max(1.0, Kfd.cwiseAbs().maxCoeff()))
             << "drum " << drum << " path " << path << " beta " << beta;

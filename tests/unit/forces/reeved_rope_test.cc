@@ -109,19 +109,9 @@ TEST(ReevedRope, TangentsMatchFiniteDifferences) {
       const ReevedRope rope("r", testing::TestRopeLaw(1e5, 3, 0.002, L0), path, d);
       const ForceEval e = ReevedEval(rope, ms, 0.0);
       ASSERT_GT(e.wrench_n.cwiseAbs().maxCoeff(), 1e-3) << "trivial wrench";
-      const int n = 6 * static_cast<int>(ms.size());
-      MatX Kfd(n, n), Cfd(n, n);
-      const double h = 1e-6;
-      for (int c = 0; c < n; ++c) {
-        for (int twist = 0; twist < 2; ++twist) {
-          std::vector<MarkerState> p = ms, m = ms;
-          const int mk = c / 6, k = c % 6;
-          p[mk] = twist ? testing::TwistPerturbed(ms[mk], k, h) : testing::Perturbed(ms[mk], k, h);
-          m[mk] = twist ? testing::TwistPerturbed(ms[mk], k, -h) : testing::Perturbed(ms[mk], k, -h);
-          const VecX col = (ReevedEval(rope, p, 0.0).wrench_n - ReevedEval(rope, m, 0.0).wrench_n) / (2 * h);
-          (twist ? Cfd : Kfd).col(c) = col;
-        }
-      }
+      MatX Kfd, Cfd;
+      testing::MarkerFiniteDifferences([&](const std::vector<MarkerState>& x) { return ReevedEval(rope, x, 0.0).wrench_n; },
+                                       ms, 1e-6, Kfd, Cfd);
       const double scale = std::max(1.0, Kfd.cwiseAbs().maxCoeff());
       EXPECT_LT((e.K_n - Kfd).cwiseAbs().maxCoeff(), 1e-6 * scale) << "drum " << drum << " path " << path;
       EXPECT_LT((e.C_n - Cfd).cwiseAbs().maxCoeff(), 1e-6 * std::max(1.0, Cfd.cwiseAbs().maxCoeff()))
