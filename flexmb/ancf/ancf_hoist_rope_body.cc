@@ -126,6 +126,10 @@ AncfHoistRopeBody::AncfHoistRopeBody(std::string name, const HoistRopeData& data
   positive(s.I, "bending inertia");
   positive(s.rho, "density");
   if (data_.drum_in_body) positive(data_.drum_radius, "drum radius");
+  if (!(data_.initial_length >= 0.0) || !std::isfinite(data_.initial_length))
+    throw InputError("hoist rope initial length must be >= 0 (0: the free length), got " +
+                         std::to_string(data_.initial_length),
+                     ctx);
   if (!(data_.stored_length >= 0.0) || !(data_.drum_inertia >= 0.0) || !(s.damping >= 0.0))
     throw InputError("hoist rope stored length, drum inertia and damping must not be negative", ctx);
   if (data_.drum_in_body && !(data_.stored_length > 0.0) && !(data_.drum_inertia > 0.0))
@@ -170,7 +174,8 @@ AncfHoistRopeBody::AncfHoistRopeBody(std::string name, const HoistRopeData& data
 }
 
 void AncfHoistRopeBody::InitialCoordinates(double* q, double* v) const {
-  const double h = data_.free_length / n_el_, hd = data_.payout_speed / n_el_;
+  const double span = data_.initial_length > 0.0 ? data_.initial_length : data_.free_length;
+  const double h = span / n_el_, hd = data_.payout_speed / n_el_;
   const Vec3 t0 = R_W0_.col(0);
   for (int k = 0; k <= n_el_; ++k) {
     Eigen::Map<Vec3>(q + 6 * k) = data_.start_W + (k * h) * t0;
@@ -194,7 +199,7 @@ void AncfHoistRopeBody::ApplyBanded(BlockOf&& block, const double* x, VecX& y) c
 }
 
 std::pair<double, double> AncfHoistRopeBody::RopeMasses(const double* q) const {
-  return {rhoA_ * q[nL_], rhoA_ * (L_total_ - q[nL_])};
+  return {rhoA_ * q[nL_], rhoS_ * (L_total_ - q[nL_])};
 }
 
 void AncfHoistRopeBody::MassMatrix(const double* q, MatX& M) const {
@@ -473,9 +478,10 @@ double AncfHoistRopeBody::KineticEnergy(const double* q, const double* v) const 
 double AncfHoistRopeBody::GravityPotential(const double* q, const Vec3& g_W) const {
   const double L = q[nL_], N = n_el_;
   const Vec3 gq[4] = {0.5 * g_W, g_W / 12.0, 0.5 * g_W, -g_W / 12.0};
-  // fed over the sheave: the rope still to enter at node 0's height
+  // fed over the sheave: the span's weight relative to node 0, where its
+  // rope enters (the potential of the applied forces while node 0 stays)
   double V = -rhoS_ * (L_total_ - L) * g_W.dot(data_.drum_W);
-  if (!data_.drum_in_body) V -= rhoA_ * (L_total_ - L) * g_W.dot(Eigen::Map<const Vec3>(q));
+  if (!data_.drum_in_body) V += rhoA_ * L * g_W.dot(Eigen::Map<const Vec3>(q));
   for (int e = 0; e < n_el_; ++e)
     for (int a = 0; a < 4; ++a) V -= L * (rhoA_ / N) * gq[a].dot(Eigen::Map<const Vec3>(q + 6 * e + 3 * a));
   return V;

@@ -59,8 +59,12 @@
 /// Without the drum in the body (HoistRopeData::drum_in_body false) the
 /// stored rope and drum terms above are left out (m_s = 0, no stored weight;
 /// the rope enters at node 0's height instead: Q_L gets -rho A g . r_0, so
-/// that at rest the feeding pull is the axial force at the top of the span;
-/// GravityPotential counts the rope still to enter at r_0):
+/// that at rest the feeding pull is the axial force at the top of the span.
+/// This term is not conservative: the lead span is massless, so the rope's
+/// mass appears at the sheave. GravityPotential gives the span's weight
+/// relative to node 0, the potential of the applied forces while node 0
+/// stays where it is; when the sheave moves, the energy balance misses the
+/// work of the span's weight carried with it):
 /// a `rope` force element with a `span` (forces/reeved_rope.h) is then the
 /// lead span from the drum to the sheave, whose tension pulls the payout
 /// marker; the L coordinate's inertia is the span's own transport term.
@@ -95,9 +99,14 @@ struct HoistRopeData {
   /// stored rope (mass, weight at drum_W) belong to the body. false: the span
   /// is fed over the boom-head sheave by a `rope` force element (the lead
   /// span, with the drum) that couples to the payout marker
-  /// (forces/reeved_rope.h); the body then has neither drum nor stored rope
-  /// mass, and stored_length only bounds how much can be paid out.
+  /// (forces/reeved_rope.h), or paid out by a winch driver; the body then
+  /// has neither drum nor stored rope mass, and stored_length only bounds
+  /// how much can be paid out.
   bool drum_in_body = true;
+  /// Length the span covers at t = 0 from start_W along direction_W [m]
+  /// (the nodes are spaced evenly on it): 0 for free_length (unstretched);
+  /// longer starts the span stretched (a hanging load's static strain).
+  double initial_length = 0.0;
 };
 
 /// Hoisting rope of changing free length; see the file comment.
@@ -155,6 +164,7 @@ class AncfHoistRopeBody final : public Body {
   double FreeLength(const double* q) const { return q[nL_]; }
   /// Mass of the hanging span rho A L and of the stored rope
   /// rho A (L_total - L) [kg] at q: they always add up to rho A L_total.
+  /// Without the drum in the body the stored rope is not the body's: 0.
   std::pair<double, double> RopeMasses(const double* q) const;
   /// World position [m] of the material point at arc length sigma [m] from
   /// the hook end (clamped to the span).

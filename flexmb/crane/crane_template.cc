@@ -163,7 +163,8 @@ void AddWinchCylinderBoom(const CraneData& d, const CraneGeometry& c, Entries& e
 // and swing together), fed over the head sheave by `rope` (now the lead
 // span from the drum to the head) and hung on the head and the hook by
 // spherical joints. Free lengths: the lead's and the span's share of the
-// rope at the start, each stretched by the static tension of one fall.
+// rope at the start, each stretched by its static tension; the span's nodes
+// start on the stretched line from the head to the hook (initial_length).
 void AddAncfSpan(const CraneData& d, const CraneGeometry& c, double g, YAML::Node& rope, Entries& e) {
   const double n = d.falls;
   const double lead = (c.head_W - c.winch_exit_W).norm(), span = c.hook_drop;
@@ -183,6 +184,7 @@ void AddAncfSpan(const CraneData& d, const CraneGeometry& c, double g, YAML::Nod
   body["section"] = Map({{"area", D(1.0)}, {"inertia", D(d.rope_bending_stiffness / d.rope_ea)}});
   body["material"] = Map({{"E", D(n * d.rope_ea)}, {"rho", D(n * d.rope_mass_per_length)}});
   body["damping"] = D(d.rope_damping_time);
+  body["initial_length"] = D(span);  // stretched to the hook
   body["start"] = V(head);
   body["direction"] = V(hook - head);
   body["markers"] = YAML::Node(YAML::NodeType::Sequence);

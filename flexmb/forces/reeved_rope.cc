@@ -22,8 +22,8 @@ ReevedRope::ReevedRope(std::string name, RopeLaw law, int path_markers, RopeDrum
   const ErrorContext ctx{"", 0, "force '" + this->name() + "'"};
   if (path_ < 2) throw InputError("a rope path needs at least two markers, got " + std::to_string(path_), ctx);
   if (span_.present && (law_.law().hoist_speed || law_.law().free_length_function))
-    throw InputError("with a span the winch is the drum or the span's own winch: give neither hoist_speed nor a "
-                     "free-length function",
+    throw InputError("with a span the rope is paid out by its drum: give neither hoist_speed nor a free-length "
+                     "function",
                      ctx);
   if (span_.present && !(span_.free_length > 0.0))
     throw InputError(fmt::format("the span's free length must be > 0, got {:g} m", span_.free_length), ctx);

@@ -19,6 +19,8 @@
 #include "flexmb/ancf/ancf_hoist_rope_body.h"
 #include "flexmb/common/error.h"
 #include "flexmb/common/text.h"
+#include "flexmb/forces/reeved_rope.h"
+#include "flexmb/joints/winch_driver.h"
 #include "flexmb/model/model.h"
 
 namespace flexmb {
@@ -150,7 +152,7 @@ void ParseHoistRope(const YAML::Node& node, ParseContext& ctx, std::map<std::str
   const std::string name =
       BeginBody(node, ctx,
                 {"name", "type", "free_length", "stored_length", "elements", "section", "material", "start",
-                 "direction", "damping", "axial_strain", "drum", "payout_speed", "markers"});
+                 "direction", "damping", "axial_strain", "drum", "payout_speed", "initial_length", "markers"});
   const std::string entity = "body '" + name + "'";
   ancf::HoistRopeData d;
   d.free_length = ctx.Positive(node, "free_length");
@@ -161,7 +163,8 @@ void ParseHoistRope(const YAML::Node& node, ParseContext& ctx, std::map<std::str
   d.direction_W = ctx.Vector3(node, "direction", -Vec3::UnitZ());
   if (!(d.direction_W.norm() > 0.0)) ctx.Fail(node["direction"], "'direction' must not be zero");
   // without 'drum' the span is fed over a sheave by a rope force element
-  // with a 'span' (its lead span and drum): checked when the model is complete
+  // with a 'span' (its lead span and drum) or paid out by a winch driver:
+  // CheckHoistRopeFeeds, once the forces are read
   const YAML::Node drum = node["drum"];
   d.drum_in_body = static_cast<bool>(drum);
   if (drum) {
@@ -173,6 +176,7 @@ void ParseHoistRope(const YAML::Node& node, ParseContext& ctx, std::map<std::str
     if (d.drum_inertia < 0.0) ctx.Fail(drum["inertia"], "the drum 'inertia' must not be negative");
   }
   d.payout_speed = ctx.Double(node, "payout_speed", 0.0);
+  if (node["initial_length"]) d.initial_length = ctx.Positive(node, "initial_length");
   auto body = ctx.Guard(node, [&] { return std::make_unique<ancf::AncfHoistRopeBody>(name, d); });
   const int nodes = body->elements() + 1, payout = body->PayoutNode();
   const int b = ctx.Guard(node["name"], [&] { return ctx.model().AddBody(std::move(body)); });
@@ -276,6 +280,33 @@ void ParseAncfBody(const YAML::Node& node, ParseContext& ctx, std::map<std::stri
   const int b = ctx.Guard(node["name"], [&] { return ctx.model().AddBody(std::move(body)); });
   lines[entity] = ParseContext::Line(node);
   ParseNodeMarkers(node, b, nodes, ctx, lines);
+}
+
+
+void CheckHoistRopeFeeds(ParseContext& ctx) {
+  const Model& model = ctx.model();
+  for (const auto& body : model.bodies) {
+    const auto* rope = dynamic_cast<const ancf::AncfHoistRopeBody*>(body.get());
+    if (!rope || rope->data().drum_in_body) continue;
+    const int payout = model.FindMarker(rope->name() + ".payout");
+    std::vector<std::string> feeds;
+    for (const auto& f : model.forces) {
+      const auto* r = dynamic_cast<const ReevedRope*>(f.get());
+      if (r && r->span().present && r->MarkerAt(r->NumMarkers() - 1) == payout) feeds.push_back("rope '" + r->name() + "'");
+    }
+    for (const auto& j : model.joints)
+      if (dynamic_cast<const WinchDriver*>(j.get()) && j->marker_i == payout)
+        feeds.push_back("winch driver '" + j->name() + "'");
+    if (feeds.size() == 1) continue;
+    const std::string entity = "body '" + rope->name() + "'";
+    const auto it = ctx.lines().find(entity);
+    std::string list;
+    for (const std::string& f : feeds) list += (list.empty() ? "" : " and ") + f;
+    throw InputError(feeds.empty() ? "the hoist rope has no 'drum' and nothing pays it out: give it a 'drum', feed it "
+                                     "from a rope with 'span: " + rope->name() + "', or drive it with a winch driver"
+                                   : "the hoist rope is paid out by " + list + ": one of them must do it",
+                     {ctx.file(), it == ctx.lines().end() ? 0 : it->second, entity});
+  }
 }
 
 }  // namespace flexmb

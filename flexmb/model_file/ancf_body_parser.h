@@ -20,4 +20,9 @@ namespace flexmb {
 /// count; a marker on a node that does not exist).
 void ParseAncfBody(const YAML::Node& node, ParseContext& ctx, std::map<std::string, int>& lines);
 
+/// Once the forces are read: every ancf_hoist_rope without its own drum is
+/// fed by exactly one thing, a reeved rope's `span` or a `winch` driver.
+/// Throws InputError naming the body's file and line otherwise.
+void CheckHoistRopeFeeds(ParseContext& ctx);
+
 }  // namespace flexmb

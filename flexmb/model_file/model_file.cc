@@ -16,6 +16,7 @@
 #include "flexmb/crane/crane_template.h"
 #include "flexmb/model/model.h"
 #include "flexmb/model_file/body_entry.h"
+#include "flexmb/model_file/ancf_body_parser.h"
 #include "flexmb/model_file/element_registry.h"
 #include "flexmb/model_file/parse_context.h"
 #include "flexmb/model_file/solver_section.h"
@@ -211,6 +212,7 @@ void BuildSections(const YAML::Node& root, ParseContext& ctx, const SolverOverri
   ParseList(root, "joints", ElementKind::kJoint, ctx);
   ParseList(root, "drivers", ElementKind::kDriver, ctx);
   ParseList(root, "forces", ElementKind::kForce, ctx);
+  CheckHoistRopeFeeds(ctx);
   ParseList(root, "sensors", ElementKind::kSensor, ctx);
   if (root["solver"]) ParseSolver(root["solver"], ctx);
   if (root["output"]) ParseOutput(root["output"], ctx);

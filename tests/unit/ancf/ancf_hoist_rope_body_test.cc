@@ -173,6 +173,110 @@ TEST(AncfHoistRopeBody, VelocityTermsAreLagrangesEquations) {
   EXPECT_LT((Qv - expected).norm(), 1e-6 * expected.norm());
 }
 
+// Without the drum in the body (fed over the sheave by a rope's span): no
+// drum, no stored rope; the rope enters at node 0's height.
+HoistRopeData FedRopeData() {
+  HoistRopeData d = RopeData();
+  d.drum_in_body = false;
+  d.drum_radius = 0.0;  // not used
+  d.drum_inertia = 0.0;
+  return d;
+}
+
+TEST(AncfHoistRopeBody, FedSpanTangentsMassAndVelocityTerms) {
+  const HoistRopeData d = FedRopeData();
+  const AncfHoistRopeBody b("rope", d);
+  VecX q, v;
+  State(b, q, v);
+  test_util::ExpectBodyForceTangentsMatchCentralDifferences(b, q, v, Vec3(0.3, -0.2, -9.81));
+  // the mass: that of the span alone (drum and stored rope take no part)
+  const int n = b.nv();
+  MatX M, Mdrum;
+  b.MassMatrix(q.data(), M);
+  const AncfHoistRopeBody with_drum("drum", RopeData());
+  with_drum.MassMatrix(q.data(), Mdrum);
+  const double L = b.FreeLength(q.data());
+  const double m_stored = d.section.rho * d.section.A * (d.free_length + d.stored_length - L);
+  EXPECT_NEAR(Mdrum(n - 1, n - 1) - M(n - 1, n - 1), m_stored + 4.0 / (0.25 * 0.25), 1e-9 * M.norm());
+  EXPECT_LT((Mdrum.topLeftCorner(n - 1, n) - M.topLeftCorner(n - 1, n)).norm(), 1e-14 * M.norm());
+  const auto [span, stored] = b.RopeMasses(q.data());
+  EXPECT_NEAR(span, d.section.rho * d.section.A * L, 1e-12);
+  EXPECT_EQ(stored, 0.0);
+  // M(q) vdot = Q: the velocity part of Q is dT/dq - (dM/dq v) v
+  const HoistRopeData u = [&] {
+    HoistRopeData x = d;
+    x.section.damping = 0.0;
+    return x;
+  }();
+  const AncfHoistRopeBody ub("rope", u);
+  auto forces = [&](const VecX& vv) {
+    VecX Q = VecX::Zero(n);
+    MatX K = MatX::Zero(n, n), C = MatX::Zero(n, n);
+    ub.AddForces(q.data(), vv.data(), Vec3::Zero(), Q, K, C);
+    return Q;
+  };
+  const VecX Qv = forces(v) - forces(VecX::Zero(n));
+  const double h = 1e-6;
+  MatX Mp, Mm;
+  ub.MassMatrix((q + h * v).eval().data(), Mp);
+  ub.MassMatrix((q - h * v).eval().data(), Mm);
+  const VecX Mdot_v = (Mp - Mm) * v / (2 * h);
+  VecX expected(n);
+  for (int j = 0; j < n; ++j) {
+    VecX qp = q, qm = q;
+    qp(j) += h;
+    qm(j) -= h;
+    expected(j) =
+        (ub.KineticEnergy(qp.data(), v.data()) - ub.KineticEnergy(qm.data(), v.data())) / (2 * h) - Mdot_v(j);
+  }
+  EXPECT_LT((Qv - expected).norm(), 1e-6 * expected.norm());
+}
+
+// The fed span's gravity: the span's weight relative to node 0 is the
+// potential of every applied force but node 0's (the rope's mass appears at
+// the sheave, so the span's weight carried with a moving sheave is not
+// applied there: exactly rho A L g is missing at node 0, documented).
+TEST(AncfHoistRopeBody, FedSpanGravityIsTheSpansWeightRelativeToNodeZero) {
+  HoistRopeData d = FedRopeData();
+  d.section.damping = 0.0;
+  const AncfHoistRopeBody b("rope", d);
+  VecX q, v;
+  State(b, q, v);
+  const int n = b.nv();
+  const Vec3 g(0.3, -0.2, -9.81);
+  VecX Qg = VecX::Zero(n), Q0 = VecX::Zero(n);
+  MatX K = MatX::Zero(n, n), C = MatX::Zero(n, n);
+  const VecX v0 = VecX::Zero(n);
+  b.AddForces(q.data(), v0.data(), g, Qg, K, C);
+  b.AddForces(q.data(), v0.data(), Vec3::Zero(), Q0, K, C);
+  const double h = 1e-6, L = b.FreeLength(q.data());
+  for (int j = 0; j < n; ++j) {
+    VecX qp = q, qm = q;
+    qp(j) += h;
+    qm(j) -= h;
+    const double dV = (b.GravityPotential(qp.data(), g) - b.GravityPotential(qm.data(), g)) / (2 * h);
+    const double missing = j < 3 ? d.section.rho * d.section.A * L * g(j) : 0.0;
+    EXPECT_NEAR(Qg(j) - Q0(j), -dV + missing, 1e-6 * (1.0 + Qg.norm())) << j;
+  }
+  // at the free length's coordinate: the weight of the span relative to the
+  // sheave pulls rope in, rho A g . (r_0 - mean r) per metre in the mesh
+  EXPECT_GT(std::abs(Qg(n - 1) - Q0(n - 1)), 1.0);
+}
+
+TEST(AncfHoistRopeBody, InitialLengthStartsTheSpanStretched) {
+  HoistRopeData d = FedRopeData();
+  d.initial_length = 6.3;  // 5 % stretch
+  const AncfHoistRopeBody b("rope", d);
+  VecX q(b.nq()), v(b.nv());
+  b.InitialCoordinates(q.data(), v.data());
+  const Vec3 t0 = d.direction_W.normalized();
+  EXPECT_LT((q.segment<3>(6 * d.elements) - (d.start_W + 6.3 * t0)).norm(), 1e-14);
+  EXPECT_EQ(b.FreeLength(q.data()), 6.0);
+  EXPECT_NEAR(b.AxialForce(q.data(), 1), d.section.E * d.section.A * 0.05, 1e-9 * d.section.E * d.section.A);
+  d.initial_length = -1.0;
+  EXPECT_THROW(AncfHoistRopeBody("bad", d), InputError);
+}
+
 TEST(AncfHoistRopeBody, MarkersAndMassBookkeeping) {
   const HoistRopeData d = RopeData();
   const AncfHoistRopeBody b("rope", d);
