@@ -281,6 +281,7 @@ TEST_F(CraneFile, AncfRopeAtRestCarriesTheLoadAndItsOwnWeight) {
   }
   const int line = Edit("clearance: 1.0", "clearance: 0.0");
   std::string text = ReadFile(dir_ / "edited.yaml");
+  ASSERT_NE(text.find("slack: 0.02"), std::string::npos);
   text.replace(text.find("slack: 0.02"), 11, "model: ancf, mass_per_length: 2.5, bending_stiffness: 50");
   std::ofstream(dir_ / "edited.yaml") << text;
   const auto r = RunCli(dir_, "statics edited.yaml --out g --quiet");
@@ -293,10 +294,11 @@ TEST_F(CraneFile, AncfRopeAtRestCarriesTheLoadAndItsOwnWeight) {
 // of its 2000 kg at 0.5 s, the rope rebounds slack and snaps taut again.
 // The tension-only lead takes the slack while the span slides back over the
 // sheave: no Newton failure at the file's step (5 ms), the first slack
-// interval equals the massless rope's to 20 ms (measured 5 ms), the snap's
-// peak converges with the step (5, 2.5, 1.25 ms: the last two within 1 %,
-// measured 0.05 %) and equals the massless rope's to 2 % (measured 0.4 %:
-// the span's 8 kg against the 400 kg left on the hook).
+// interval equals the massless rope's to 10 ms (measured 5 ms), the snap's
+// peak exceeds twice the static load of what is left on the hook, converges
+// with the step (5, 2.5, 1.25 ms: the last two within 0.5 %, measured
+// 0.11 %) and equals the massless rope's to 1 % (measured 0.37 %: the
+// span's 9 kg against the 400 kg left on the hook).
 TEST_F(CraneFile, AncfRopeGoesSlackAndSnapsTautWithoutNewtonFailure) {
   const std::string src = FLEXMB_SOURCE_DIR;
   std::string text = ReadFile(src + "/tests/data/crane/pedestal_crane.yaml");
@@ -314,8 +316,12 @@ TEST_F(CraneFile, AncfRopeGoesSlackAndSnapsTautWithoutNewtonFailure) {
   auto run = [&](bool ancf, const char* dt) {
     std::string t = text;
     for (size_t at; (at = t.find("DT")) != std::string::npos;) t.replace(at, 2, dt);
-    if (ancf)
-      t.replace(t.find("slack: 0.02}"), 12, "model: ancf, elements: 6, mass_per_length: 1.2, bending_stiffness: 50}");
+    if (ancf) {
+      const size_t at = t.find("slack: 0.02}");
+      EXPECT_NE(at, std::string::npos);
+      if (at == std::string::npos) return Snap{};
+      t.replace(at, 12, "model: ancf, elements: 6, mass_per_length: 1.2, bending_stiffness: 50}");
+    }
     const std::string name = std::string(ancf ? "ancf_" : "massless_") + dt;
     std::ofstream(dir_ / (name + ".yaml")) << t;
     const auto r = RunCli(dir_, "run " + name + ".yaml --out " + name + " --quiet");
@@ -338,12 +344,12 @@ TEST_F(CraneFile, AncfRopeGoesSlackAndSnapsTautWithoutNewtonFailure) {
   const Snap m = run(false, "0.005"), a5 = run(true, "0.005"), a2 = run(true, "0.0025"), a1 = run(true, "0.00125");
   ASSERT_GT(m.slack_from, 0.5) << "the massless rope never went slack";
   ASSERT_GT(a5.slack_from, 0.5) << "the ANCF rope never went slack";
-  EXPECT_NEAR(a5.slack_from, m.slack_from, 0.02);
-  EXPECT_NEAR(a5.slack_to, m.slack_to, 0.02);
+  EXPECT_NEAR(a5.slack_from, m.slack_from, 0.01);
+  EXPECT_NEAR(a5.slack_to, m.slack_to, 0.01);
   const double g = 9.81;
-  for (const Snap* s : {&a5, &a2, &a1}) EXPECT_GT(s->peak, 400 * g) << "no snap after the slack";
-  EXPECT_NEAR(a2.peak, a1.peak, 0.01 * a1.peak);
-  EXPECT_NEAR(a5.peak, m.peak, 0.02 * m.peak);
+  for (const Snap* s : {&a5, &a2, &a1}) EXPECT_GT(s->peak, 2 * 400 * g) << "no snap after the slack";
+  EXPECT_NEAR(a2.peak, a1.peak, 0.005 * a1.peak);
+  EXPECT_NEAR(a5.peak, m.peak, 0.01 * m.peak);
   std::printf("slack massless %.4f..%.4f s, ANCF %.4f..%.4f s; snap peak massless %.1f N, ANCF %.1f / %.1f / %.1f N\n",
               m.slack_from, m.slack_to, a5.slack_from, a5.slack_to, m.peak, a5.peak, a2.peak, a1.peak);
 }

@@ -43,8 +43,6 @@ struct ResultsCsv {
   }
 };
 
-/// Reads the file `p` (an empty table if it cannot be read).
-
 /// A cell's number: strtod, which (unlike std::stod) also takes subnormal
 /// values such as 4.9e-324 (a force that is zero to round-off); throws on
 /// text that is not a number.
@@ -54,6 +52,8 @@ inline double ParseCell(const std::string& cell) {
   if (end == cell.c_str()) throw std::invalid_argument("results.csv: not a number: '" + cell + "'");
   return x;
 }
+
+/// Reads the file `p` (an empty table if it cannot be read).
 inline ResultsCsv ReadResultsCsv(const std::filesystem::path& p) {
   ResultsCsv t;
   std::istringstream in(ReadFile(p));

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -115,6 +116,66 @@ TEST(ReevedRopeSpan, WrenchIsMinusTheEnergyGradientAndTangentsMatchFiniteDiffere
     }
 }
 
+// with damping, the rope's power on its markers (drum and span included)
+// is -dV/dt - beta EA L0 eps_dot^2 (the dissipation function's rate)
+TEST(ReevedRopeSpan, DampingOnlyDissipates) {
+  std::mt19937 rng(7);
+  RevoluteJoint joint("winch");
+  std::vector<MarkerState> ms = {testing::RandomMarker(rng), testing::RandomMarker(rng)};
+  ms.resize(4);
+  ms[2] = testing::RandomMarker(rng);
+  ms[3] = testing::RandomMarker(rng);
+  ms[3].p_WM = ms[2].p_WM;
+  ms[3].R_WM = ms[2].R_WM * ExpSO3(Vec3(0, 0, 0.8));
+  ms.push_back(Payout(5.2, 0.37));
+  const double l = (ms[1].p_WM - ms[0].p_WM).norm(), beta = 0.01, EA = 1e5, R = 0.25, n = 2;
+  const double L0 = l / 1.03 - R * 0.8 + n * (5.2 - 5.0);  // free length at theta = 0, span at its start
+  const ReevedRope rope("d", testing::TestRopeLaw(EA, 2, beta, L0), 2, RopeDrum{&joint, R}, RopeSpan{true, 5.0});
+  const ForceEval e = SpanEval(rope, ms);
+  double power = 0.0;
+  for (int k = 0; k < 5; ++k)
+    power += e.wrench_n.segment<3>(6 * k).dot(ms[k].v_WM) + e.wrench_n.segment<3>(6 * k + 3).dot(ms[k].w_WM);
+  auto moved = [&](double s) {
+    std::vector<MarkerState> r = ms;
+    for (MarkerState& m : r) {
+      m.p_WM += s * m.v_WM;
+      m.R_WM = ExpSO3(s * m.w_WM) * m.R_WM;
+    }
+    return r;
+  };
+  const double dt = 1e-6;
+  const double Vdot = (SpanEnergy(rope, moved(dt)) - SpanEnergy(rope, moved(-dt))) / (2 * dt);
+  // eps_dot from the rates: path, drum and span
+  const Vec3 u = (ms[1].p_WM - ms[0].p_WM) / l;
+  const double ldot = u.dot(ms[1].v_WM - ms[0].v_WM);
+  const double thdot = ms[2].R_WM.col(2).dot(ms[3].w_WM - ms[2].w_WM);
+  const double L0now = L0 + R * 0.8 - n * (5.2 - 5.0), L0dot = R * thdot - n * 0.37;
+  const double eps_dot = ldot / L0now - l * L0dot / (L0now * L0now);
+  const double dissipation = beta * EA * L0now * eps_dot * eps_dot;
+  EXPECT_GT(dissipation, 1e-3);
+  EXPECT_NEAR(power, -Vdot - dissipation, 1e-6 * (std::abs(Vdot) + dissipation));
+}
+
+TEST(ReevedRopeSpan, BadSpanInputIsNamed) {
+  const auto message = [](auto&& make) {
+    try {
+      make();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message([] { ReevedRope("hoist", testing::TestRopeLaw(1e6, 2, 0.0, 10.0), 2, RopeDrum{}, RopeSpan{true, 0.0}); })
+                .find("span's free length must be > 0"),
+            std::string::npos);
+  // the span took more than the path holds
+  const ReevedRope rope("hoist", testing::TestRopeLaw(1e6, 2, 0.0, 1.0), 2, RopeDrum{}, RopeSpan{true, 5.0});
+  std::vector<MarkerState> ms(3);
+  ms[1].p_WM = Vec3(0, 0, 2.0);
+  ms[2] = Payout(5.6, 0.0);
+  EXPECT_NE(message([&] { SpanEval(rope, ms); }).find("after what the span took"), std::string::npos);
+}
+
 constexpr const char* kSpanModel =
     "ground:\n"
     "  markers:\n"
@@ -158,6 +219,31 @@ TEST(ReevedRopeSpan, ModelFileEntryAndBadInput) {
   expect_error("  - {name: r, type: rope, path: [ground.exit, ground.sheave], span: span, hoist_speed: 0.1,\n"
                "     axial_stiffness: 1e7}\n",
                "neither 'hoist_speed'");
+  expect_error("  - {name: r, type: rope, path: [ground.exit, ground.sheave], span: span,\n"
+               "     free_length: {expression: '30 - t'}, axial_stiffness: 1e7}\n",
+               "neither 'hoist_speed'");
+
+  // who pays the drum-less span out: exactly one rope or winch
+  auto expect_feed_error = [](const std::string& rest, const char* part) {
+    try {
+      LoadModelString(std::string(kSpanModel) + rest, "s.yaml");
+      ADD_FAILURE() << "no error for " << rest;
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind("s.yaml:6: body 'span': ", 0), 0u) << what;
+      EXPECT_NE(what.find(part), std::string::npos) << what;
+    }
+  };
+  expect_feed_error("  []\n", "nothing pays it out");
+  expect_feed_error("  - {name: r, type: rope, path: [ground.exit, ground.sheave], span: span, axial_stiffness: 1e7}\n"
+                    "  - {name: q, type: rope, path: [ground.exit, ground.sheave], span: span, axial_stiffness: 1e7}\n",
+                    "rope 'r' and rope 'q'");
+  expect_feed_error("  - {name: r, type: rope, path: [ground.exit, ground.sheave], span: span, axial_stiffness: 1e7}\n"
+                    "drivers:\n  - {name: w, type: winch, rope: span}\n",
+                    "rope 'r' and winch driver 'w'");
+  // a winch alone pays it out
+  EXPECT_NO_THROW(LoadModelString(std::string(kSpanModel) + "  []\ndrivers:\n  - {name: w, type: winch, rope: span}\n",
+                                  "s.yaml"));
 }
 
 }  // namespace
