@@ -143,12 +143,9 @@ TEST(AncfHoistRopeBody, KineticEnergyIsThatOfTheMaterialPointsDrumAndStoredRope)
   EXPECT_LT((p.head<3>() - d.section.rho * d.section.A * d.free_length * d.payout_speed * t0).norm(), 1e-12);
 }
 
-TEST(AncfHoistRopeBody, VelocityTermsAreLagrangesEquations) {
-  // M(q) vdot = Q: the velocity part of Q must be dT/dq - (dM/dq v) v
-  const HoistRopeData d = UndampedRopeData();
-  const AncfHoistRopeBody b("rope", d);
-  VecX q, v;
-  State(b, q, v);
+// M(q) vdot = Q: the velocity part of Q (no gravity, no damping in b) must
+// be dT/dq - (dM/dq v) v
+void ExpectVelocityTermsAreLagrangesEquations(const AncfHoistRopeBody& b, const VecX& q, const VecX& v) {
   const int n = b.nv();
   auto forces = [&](const VecX& vv) {
     VecX Q = VecX::Zero(n);
@@ -171,6 +168,13 @@ TEST(AncfHoistRopeBody, VelocityTermsAreLagrangesEquations) {
                   Mdot_v(j);
   }
   EXPECT_LT((Qv - expected).norm(), 1e-6 * expected.norm());
+}
+
+TEST(AncfHoistRopeBody, VelocityTermsAreLagrangesEquations) {
+  const AncfHoistRopeBody b("rope", UndampedRopeData());
+  VecX q, v;
+  State(b, q, v);
+  ExpectVelocityTermsAreLagrangesEquations(b, q, v);
 }
 
 // Without the drum in the body (fed over the sheave by a rope's span): no
@@ -202,34 +206,10 @@ TEST(AncfHoistRopeBody, FedSpanTangentsMassAndVelocityTerms) {
   const auto [span, stored] = b.RopeMasses(q.data());
   EXPECT_NEAR(span, d.section.rho * d.section.A * L, 1e-12);
   EXPECT_EQ(stored, 0.0);
-  // M(q) vdot = Q: the velocity part of Q is dT/dq - (dM/dq v) v
-  const HoistRopeData u = [&] {
-    HoistRopeData x = d;
-    x.section.damping = 0.0;
-    return x;
-  }();
-  const AncfHoistRopeBody ub("rope", u);
-  auto forces = [&](const VecX& vv) {
-    VecX Q = VecX::Zero(n);
-    MatX K = MatX::Zero(n, n), C = MatX::Zero(n, n);
-    ub.AddForces(q.data(), vv.data(), Vec3::Zero(), Q, K, C);
-    return Q;
-  };
-  const VecX Qv = forces(v) - forces(VecX::Zero(n));
-  const double h = 1e-6;
-  MatX Mp, Mm;
-  ub.MassMatrix((q + h * v).eval().data(), Mp);
-  ub.MassMatrix((q - h * v).eval().data(), Mm);
-  const VecX Mdot_v = (Mp - Mm) * v / (2 * h);
-  VecX expected(n);
-  for (int j = 0; j < n; ++j) {
-    VecX qp = q, qm = q;
-    qp(j) += h;
-    qm(j) -= h;
-    expected(j) =
-        (ub.KineticEnergy(qp.data(), v.data()) - ub.KineticEnergy(qm.data(), v.data())) / (2 * h) - Mdot_v(j);
-  }
-  EXPECT_LT((Qv - expected).norm(), 1e-6 * expected.norm());
+  // the velocity terms: Lagrange's equations of its kinetic energy
+  HoistRopeData u = d;
+  u.section.damping = 0.0;
+  ExpectVelocityTermsAreLagrangesEquations(AncfHoistRopeBody("rope", u), q, v);
 }
 
 // The fed span's gravity: the span's weight relative to node 0 is the

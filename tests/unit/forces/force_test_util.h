@@ -6,12 +6,14 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <string>
 #include <vector>
 
 #include "flexmb/common/error.h"
 #include "flexmb/forces/force_element.h"
 #include "flexmb/forces/rope.h"
 #include "flexmb/joints/motion_driver.h"
+#include "flexmb/math/rotation.h"
 
 namespace flexmb::testing {
 
@@ -144,6 +146,36 @@ void MarkerFiniteDifferences(Eval&& eval, const std::vector<MarkerState>& ms, do
       m[mk] = twist ? TwistPerturbed(ms[mk], k, -h) : Perturbed(ms[mk], k, -h);
       (twist ? Cfd : Kfd).col(c) = (eval(p) - eval(m)) / (2 * h);
     }
+}
+
+/// The message of the InputError that make() throws, or "no error".
+template <class Make>
+std::string InputErrorMessage(Make&& make) {
+  try {
+    make();
+  } catch (const InputError& e) {
+    return std::string(e.what());
+  }
+  return std::string("no error");
+}
+
+/// The power [W] of the wrenches `wrench_n` (6 n) on markers moving with
+/// their twists.
+inline double MarkerPower(const VecX& wrench_n, const std::vector<MarkerState>& ms) {
+  double power = 0.0;
+  for (size_t k = 0; k < ms.size(); ++k)
+    power += wrench_n.segment<3>(6 * k).dot(ms[k].v_WM) + wrench_n.segment<3>(6 * k + 3).dot(ms[k].w_WM);
+  return power;
+}
+
+/// The markers moved on by their twists for the time s [s] (first order).
+inline std::vector<MarkerState> MarkersMoved(const std::vector<MarkerState>& ms, double s) {
+  std::vector<MarkerState> r = ms;
+  for (MarkerState& m : r) {
+    m.p_WM += s * m.v_WM;
+    m.R_WM = ExpSO3(s * m.w_WM) * m.R_WM;
+  }
+  return r;
 }
 
 }  // namespace flexmb::testing

@@ -132,19 +132,10 @@ TEST(ReevedRopeSpan, DampingOnlyDissipates) {
   const double L0 = l / 1.03 - R * 0.8 + n * (5.2 - 5.0);  // free length at theta = 0, span at its start
   const ReevedRope rope("d", testing::TestRopeLaw(EA, 2, beta, L0), 2, RopeDrum{&joint, R}, RopeSpan{true, 5.0});
   const ForceEval e = SpanEval(rope, ms);
-  double power = 0.0;
-  for (int k = 0; k < 5; ++k)
-    power += e.wrench_n.segment<3>(6 * k).dot(ms[k].v_WM) + e.wrench_n.segment<3>(6 * k + 3).dot(ms[k].w_WM);
-  auto moved = [&](double s) {
-    std::vector<MarkerState> r = ms;
-    for (MarkerState& m : r) {
-      m.p_WM += s * m.v_WM;
-      m.R_WM = ExpSO3(s * m.w_WM) * m.R_WM;
-    }
-    return r;
-  };
+  const double power = testing::MarkerPower(e.wrench_n, ms);
   const double dt = 1e-6;
-  const double Vdot = (SpanEnergy(rope, moved(dt)) - SpanEnergy(rope, moved(-dt))) / (2 * dt);
+  const double Vdot =
+      (SpanEnergy(rope, testing::MarkersMoved(ms, dt)) - SpanEnergy(rope, testing::MarkersMoved(ms, -dt))) / (2 * dt);
   // eps_dot from the rates: path, drum and span
   const Vec3 u = (ms[1].p_WM - ms[0].p_WM) / l;
   const double ldot = u.dot(ms[1].v_WM - ms[0].v_WM);
@@ -157,14 +148,7 @@ TEST(ReevedRopeSpan, DampingOnlyDissipates) {
 }
 
 TEST(ReevedRopeSpan, BadSpanInputIsNamed) {
-  const auto message = [](auto&& make) {
-    try {
-      make();
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
+  const auto message = [](auto&& make) { return testing::InputErrorMessage(make); };
   EXPECT_NE(message([] { ReevedRope("hoist", testing::TestRopeLaw(1e6, 2, 0.0, 10.0), 2, RopeDrum{}, RopeSpan{true, 0.0}); })
                 .find("span's free length must be > 0"),
             std::string::npos);

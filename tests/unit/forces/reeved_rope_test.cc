@@ -141,20 +141,13 @@ TEST(ReevedRope, ElasticWrenchIsMinusTheEnergyGradientAndDampingDissipates) {
   const double beta = 0.01;
   const ReevedRope damped("d", testing::TestRopeLaw(1e5, 2, beta, L0), 3, RopeDrum{&joint, 0.25});
   const ForceEval ed = ReevedEval(damped, ms, 0.0);
-  double power = 0.0, ldot = 0.0;
-  for (int k = 0; k < 5; ++k) power += ed.wrench_n.segment<3>(6 * k).dot(ms[k].v_WM) +
-                                       ed.wrench_n.segment<3>(6 * k + 3).dot(ms[k].w_WM);
+  const double power = testing::MarkerPower(ed.wrench_n, ms);
+  double ldot = 0.0;
   // dV/dt along the motion from central differences in time
   const double dt = 1e-6;
-  auto moved = [&](double s) {
-    std::vector<MarkerState> r = ms;
-    for (MarkerState& m : r) {
-      m.p_WM += s * m.v_WM;
-      m.R_WM = ExpSO3(s * m.w_WM) * m.R_WM;
-    }
-    return r;
-  };
-  const double Vdot = (ReevedEnergy(damped, moved(dt), 0.0) - ReevedEnergy(damped, moved(-dt), 0.0)) / (2 * dt);
+  const double Vdot = (ReevedEnergy(damped, testing::MarkersMoved(ms, dt), 0.0) -
+                       ReevedEnergy(damped, testing::MarkersMoved(ms, -dt), 0.0)) /
+                      (2 * dt);
   const Vec3 a = ms[3].R_WM.col(2);
   const double thdot = a.dot(ms[4].w_WM - ms[3].w_WM);
   for (int s = 0; s < 2; ++s) {
@@ -187,14 +180,7 @@ TEST(ReevedRope, DrumAngleIsUnwrappedOverTurns) {
 
 TEST(ReevedRope, BadInputIsNamed) {
   RevoluteJoint joint("winch");
-  const auto message = [](auto&& make) {
-    try {
-      make();
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
+  const auto message = [](auto&& make) { return testing::InputErrorMessage(make); };
   EXPECT_NE(message([&] { ReevedRope("hoist", testing::TestRopeLaw(1e6, 1, 0.0, 10.0), 2, RopeDrum{&joint, 0.0}); })
                 .find("drum radius"), std::string::npos);
   EXPECT_NE(message([&] { ReevedRope("hoist", testing::TestRopeLaw(1e6, 1, 0.0, 10.0), 2, RopeDrum{&joint, -0.1}); })
