@@ -154,17 +154,18 @@ void ReadWinchAndRope(const YAML::Node& crane, CraneData& d, YamlContext& ctx) {
   if (d.falls < 1) ctx.Fail(r["falls"], "'falls' must be a whole number >= 1");
   d.rope_slack = ctx.Double(r, "slack", 0.0);
   if (d.rope_slack < 0) ctx.Fail(r["slack"], "'slack' must not be negative [m]");
-  if (r["model"]) d.rope_model = r["model"].as<std::string>();
-  if (d.rope_model == "ancf") {
+  const std::string model = r["model"] ? r["model"].as<std::string>() : std::string("massless");
+  if (model == "ancf") {
+    d.rope_model = CraneData::RopeModel::kAncf;
     d.rope_elements = ctx.Integer(r, "elements", 10);
     if (d.rope_elements < 1) ctx.Fail(r["elements"], "'elements' must be a whole number >= 1");
     d.rope_mass_per_length = ctx.Positive(r, "mass_per_length");
     d.rope_bending_stiffness = ctx.Positive(r, "bending_stiffness");
-  } else if (d.rope_model == "massless") {
+  } else if (model == "massless") {
     for (const char* k : {"elements", "mass_per_length", "bending_stiffness"})
       if (r[k]) ctx.Fail(r[k], std::string("'") + k + "' is for the ANCF rope only (model: ancf); the massless rope has none");
   } else {
-    ctx.Fail(r["model"], "unknown rope model '" + d.rope_model + "' (massless or ancf)");
+    ctx.Fail(r["model"], "unknown rope model '" + model + "' (massless or ancf)");
   }
 }
 
@@ -206,7 +207,7 @@ CraneData ReadCraneData(const YAML::Node& crane, YamlContext& ctx) {
   ReadCylinder(crane, d, ctx);
   ReadWinchAndRope(crane, d, ctx);
   ReadPayload(crane, d, ctx);
-  if (d.rope_model == "ancf" && !(d.clearance > 0)) {
+  if (d.rope_model == CraneData::RopeModel::kAncf && !(d.clearance > 0)) {
     ctx.SetEntity("crane.rope");
     ctx.Fail(crane["rope"]["model"],
              "the ANCF rope needs the load hanging (payload 'clearance' > 0): its span carries compression, so it "

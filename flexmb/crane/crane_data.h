@@ -89,7 +89,8 @@ struct CraneData {
   /// (the tension-only `rope` element all the way) or "ancf" (an
   /// `ancf_hoist_rope` span of `rope_elements` elements, the n falls as one
   /// span of n times the section, fed by the massless lead span from the drum).
-  std::string rope_model = "massless";
+  enum class RopeModel { kMassless, kAncf };
+  RopeModel rope_model = RopeModel::kMassless;
   int rope_elements = 10;
   double rope_mass_per_length = 0;    ///< one fall [kg/m] (ancf)
   double rope_bending_stiffness = 0;  ///< one fall, EI [N m^2] (ancf)

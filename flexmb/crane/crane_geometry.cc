@@ -115,6 +115,12 @@ CraneGeometry PlaceCrane(const CraneData& d, const BoomPoints& b, double g, Yaml
   // the rope: slack on a grounded load, stretched by the load's weight on a hanging one
   const double path = (c.head_W - c.winch_exit_W).norm() + d.falls * c.hook_drop;
   c.free_length = d.clearance > 0 ? path / (1.0 + m * g / (d.falls * d.rope_ea)) : path + d.rope_slack;
+  if (d.rope_model == CraneData::RopeModel::kAncf) {
+    // the (hanging) load and the falls' own weight on n falls
+    const double n = d.falls, W_span = n * d.rope_mass_per_length * c.hook_drop * g;
+    c.lead_free_length = (c.head_W - c.winch_exit_W).norm() / (1.0 + (m * g + W_span) / (n * d.rope_ea));
+    c.span_free_length = c.hook_drop / (1.0 + (m * g + 0.5 * W_span) / (n * d.rope_ea));
+  }
   return c;
 }
 

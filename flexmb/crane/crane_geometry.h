@@ -36,6 +36,10 @@ struct CraneGeometry {
   double upper_height = 0, lower_height = 0;  ///< heights of the payload bodies [m]
   double hook_drop = 0;              ///< boom head above the hook [m]
   double free_length = 0;            ///< rope from the drum to the hook, all falls [m]
+  /// With the ANCF rope: the lead span's free length from the drum to the
+  /// head, and the hanging span's (the falls as one) [m], each stretched by
+  /// its static tension (the span by its mean: the load plus half its weight).
+  double lead_free_length = 0, span_free_length = 0;
   double pad_penetration = 0;        ///< the pads' start into their contacts [m]
   double crane_mass = 0;             ///< without the payload [kg]
 };

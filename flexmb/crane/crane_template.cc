@@ -162,29 +162,22 @@ void AddWinchCylinderBoom(const CraneData& d, const CraneGeometry& c, Entries& e
 // as one span of n times one fall's section (they hang side by side, stretch
 // and swing together), fed over the head sheave by `rope` (now the lead
 // span from the drum to the head) and hung on the head and the hook by
-// spherical joints. Free lengths: the lead's and the span's share of the
-// rope at the start, each stretched by its static tension; the span's nodes
-// start on the stretched line from the head to the hook (initial_length).
-void AddAncfSpan(const CraneData& d, const CraneGeometry& c, double g, YAML::Node& rope, Entries& e) {
+// spherical joints; free lengths from the geometry, the span's nodes on the
+// stretched line from the head to the hook (initial_length)
+void AddAncfSpan(const CraneData& d, const CraneGeometry& c, YAML::Node& rope, Entries& e) {
   const double n = d.falls;
-  const double lead = (c.head_W - c.winch_exit_W).norm(), span = c.hook_drop;
-  // tension of one fall at the head: the (hanging) load's weight plus the span's
-  const double W_span = n * d.rope_mass_per_length * span * g;
-  const double W_load = d.payload_mass * g;
-  const double T_fall = (W_load + W_span) / n;
-  rope["free_length"] = D(lead / (1.0 + T_fall / d.rope_ea));
-  // the span's mean tension (all falls) is the load plus half its own weight
-  const double span_free = span / (1.0 + (W_load + 0.5 * W_span) / (n * d.rope_ea));
+  rope["free_length"] = D(c.lead_free_length);
   rope["span"] = "hoist_span";
-  const Vec3 head = c.head_W, hook = c.head_W - Vec3(0, 0, span);
-  YAML::Node body = Map({{"name", S("hoist_span")}, {"type", S("ancf_hoist_rope")}, {"free_length", D(span_free)},
+  const Vec3 head = c.head_W, hook = c.head_W - Vec3(0, 0, c.hook_drop);
+  YAML::Node body = Map({{"name", S("hoist_span")}, {"type", S("ancf_hoist_rope")},
+                         {"free_length", D(c.span_free_length)},
                          {"stored_length", D(d.rope_on_drum > 0 ? d.rope_on_drum / n : 1e6)},
                          {"elements", YAML::Node(d.rope_elements)}});
   // the section of n falls with a unit area: E A = n EA, rho A = n m', E I = n EI
   body["section"] = Map({{"area", D(1.0)}, {"inertia", D(d.rope_bending_stiffness / d.rope_ea)}});
   body["material"] = Map({{"E", D(n * d.rope_ea)}, {"rho", D(n * d.rope_mass_per_length)}});
   body["damping"] = D(d.rope_damping_time);
-  body["initial_length"] = D(span);  // stretched to the hook
+  body["initial_length"] = D(c.hook_drop);  // stretched to the hook
   body["start"] = V(head);
   body["direction"] = V(hook - head);
   body["markers"] = YAML::Node(YAML::NodeType::Sequence);
@@ -199,7 +192,7 @@ void AddAncfSpan(const CraneData& d, const CraneGeometry& c, double g, YAML::Nod
   e.sensors.push_back(sensor);
 }
 
-void AddPayloadAndRope(const CraneData& d, const CraneGeometry& c, double g, Entries& e) {
+void AddPayloadAndRope(const CraneData& d, const CraneGeometry& c, Entries& e) {
   const Vec3& size = d.payload_size;
   const bool split = d.release_mass > 0;
   const double m_upper = d.payload_mass - d.release_mass;
@@ -234,14 +227,15 @@ void AddPayloadAndRope(const CraneData& d, const CraneGeometry& c, double g, Ent
   path.SetStyle(YAML::EmitterStyle::Flow);
   path.push_back("platform.winch_exit");
   path.push_back("boom.head");
-  if (d.rope_model != "ancf") path.push_back("load.hook");
+  const bool ancf = d.rope_model == CraneData::RopeModel::kAncf;
+  if (!ancf) path.push_back("load.hook");
   rope["path"] = path;
   rope["falls"] = d.falls;
   rope["axial_stiffness"] = D(d.rope_ea);
   rope["damping_time"] = D(d.rope_damping_time);
   rope["drum"] = Map({{"joint", S("winch")}, {"radius", D(d.drum_radius)}});
   rope["free_length"] = D(c.free_length);
-  if (d.rope_model == "ancf") AddAncfSpan(d, c, g, rope, e);
+  if (ancf) AddAncfSpan(d, c, rope, e);
   e.rope = rope;
 }
 
@@ -301,7 +295,7 @@ void ExpandCraneFile(YAML::Node& root, const std::string& requested, YamlContext
   Entries e;
   AddCarrierAndPlatform(d, c, e);
   AddWinchCylinderBoom(d, c, e);
-  AddPayloadAndRope(d, c, g, e);
+  AddPayloadAndRope(d, c, e);
   // the drives: the cylinder's length, the drum's angle, the slew angle
   auto driver = [&](const char* name, const char* joint, const std::string& expr) {
     e.drivers.push_back(Map({{"name", S(name)}, {"joint", S(joint)}, {"function", Map({{"expression", S(expr)}})}}));
