@@ -14,6 +14,7 @@
 #include "flexmb/forces/rope.h"
 #include "flexmb/joints/motion_driver.h"
 #include "flexmb/math/rotation.h"
+#include "flexmb/model_file/model_file.h"
 
 namespace flexmb::testing {
 
@@ -157,6 +158,21 @@ std::string InputErrorMessage(Make&& make) {
     return std::string(e.what());
   }
   return std::string("no error");
+}
+
+/// Expects loading the model text `text` as file `file` to throw an
+/// InputError whose message starts with `prefix` (file, line, entity) and
+/// contains `part`.
+inline void ExpectModelError(const std::string& text, const char* file, const std::string& prefix,
+                             const char* part) {
+  try {
+    LoadModelString(text, file);
+    ADD_FAILURE() << "no error for " << text;
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind(prefix, 0), 0u) << what;
+    EXPECT_NE(what.find(part), std::string::npos) << what;
+  }
 }
 
 /// The power [W] of the wrenches `wrench_n` (6 n) on markers moving with

@@ -186,15 +186,9 @@ TEST(ReevedRopeSpan, ModelFileEntryAndBadInput) {
   EXPECT_EQ(r.MarkerAt(2), m->FindMarker("span.payout"));
   EXPECT_NEAR(r.law().free_length, std::sqrt(800.0), 1e-12);  // the path unstretched, once (not on the falls)
 
-  auto expect_error = [](const std::string& force, const char* part) {
-    try {
-      LoadModelString(std::string(kSpanModel) + force, "s.yaml");
-      ADD_FAILURE() << "no error for " << force;
-    } catch (const InputError& e) {
-      const std::string what = e.what();
-      EXPECT_EQ(what.rfind("s.yaml:13: ", 0), 0u) << what;
-      EXPECT_NE(what.find(part), std::string::npos) << what;
-    }
+  // errors at the rope (line 13) or at the span body (line 6)
+  auto expect_error = [](const std::string& forces, const char* part, const char* at = "s.yaml:13: ") {
+    testing::ExpectModelError(std::string(kSpanModel) + forces, "s.yaml", at, part);
   };
   expect_error("  - {name: r, type: rope, path: [ground.exit, ground.sheave], span: hooked, axial_stiffness: 1e7}\n",
                "has a 'drum' of its own");
@@ -208,23 +202,14 @@ TEST(ReevedRopeSpan, ModelFileEntryAndBadInput) {
                "neither 'hoist_speed'");
 
   // who pays the drum-less span out: exactly one rope or winch
-  auto expect_feed_error = [](const std::string& rest, const char* part) {
-    try {
-      LoadModelString(std::string(kSpanModel) + rest, "s.yaml");
-      ADD_FAILURE() << "no error for " << rest;
-    } catch (const InputError& e) {
-      const std::string what = e.what();
-      EXPECT_EQ(what.rfind("s.yaml:6: body 'span': ", 0), 0u) << what;
-      EXPECT_NE(what.find(part), std::string::npos) << what;
-    }
-  };
-  expect_feed_error("  []\n", "nothing pays it out");
-  expect_feed_error("  - {name: r, type: rope, path: [ground.exit, ground.sheave], span: span, axial_stiffness: 1e7}\n"
+  const char* at_span = "s.yaml:6: body 'span': ";
+  expect_error("  []\n", "nothing pays it out", at_span);
+  expect_error("  - {name: r, type: rope, path: [ground.exit, ground.sheave], span: span, axial_stiffness: 1e7}\n"
                     "  - {name: q, type: rope, path: [ground.exit, ground.sheave], span: span, axial_stiffness: 1e7}\n",
-                    "rope 'r' and rope 'q'");
-  expect_feed_error("  - {name: r, type: rope, path: [ground.exit, ground.sheave], span: span, axial_stiffness: 1e7}\n"
+                    "rope 'r' and rope 'q'", at_span);
+  expect_error("  - {name: r, type: rope, path: [ground.exit, ground.sheave], span: span, axial_stiffness: 1e7}\n"
                     "drivers:\n  - {name: w, type: winch, rope: span}\n",
-                    "rope 'r' and winch driver 'w'");
+                    "rope 'r' and winch driver 'w'", at_span);
   // a winch alone pays it out
   EXPECT_NO_THROW(LoadModelString(std::string(kSpanModel) + "  []\ndrivers:\n  - {name: w, type: winch, rope: span}\n",
                                   "s.yaml"));
