@@ -73,6 +73,19 @@ void ReadColumns(const hdf5::Reader& r, const std::string& group, std::vector<T>
   }
 }
 
+// the material index a section is written with: a laminated shell section
+// (a PCOMP, a generalized PSHELL, a membrane) is written with -1, since the
+// body file does not hold the laminate; re-assembling such a mesh is then
+// an error naming the element, never a plain shell of MID1's material
+template <class T>
+int WrittenMaterial(const T& s) {
+  return s.material;
+}
+template <>
+int WrittenMaterial(const fe::ShellSection& s) {
+  return s.laminate ? -1 : s.material;
+}
+
 // a section table: ids, material indices, then the columns
 template <class T>
 void WriteSections(hdf5::Writer& w, const std::string& group, const std::vector<T>& sections,
@@ -81,7 +94,7 @@ void WriteSections(hdf5::Writer& w, const std::string& group, const std::vector<
   std::vector<int> ids, mats;
   for (const T& s : sections) {
     ids.push_back(s.id);
-    mats.push_back(s.material);
+    mats.push_back(WrittenMaterial(s));
   }
   w.Ints(group + "/ids", ids);
   w.Ints(group + "/materials", mats);
