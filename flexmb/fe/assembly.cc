@@ -22,6 +22,16 @@ std::string Where(const Origin& o) {
   return " (" + o.file + (o.line > 0 ? ":" + std::to_string(o.line) : std::string()) + ")";
 }
 
+// an element that acts on its nodes' translations only: a rod, or a shell
+// of a membrane section (ShellLaminate::membrane_only)
+bool TranslationsOnly(const Mesh& mesh, const Element& e) {
+  if (Traits(e.type).translations_only) return true;
+  if (Traits(e.type).family != ElementFamily::kShell) return false;
+  if (e.property < 0 || e.property >= static_cast<int>(mesh.shell_sections.size())) return false;
+  const ShellSection& s = mesh.shell_sections[static_cast<size_t>(e.property)];
+  return s.laminate != nullptr && s.laminate->membrane_only;
+}
+
 std::string ElementName(const Element& e) {
   return std::string(TypeName(e.type)) + " element " + std::to_string(e.id);
 }
@@ -245,7 +255,7 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
   // active slots from elements and masses
   std::vector<uint8_t> active(nn, 0);
   for (const Element& e : mesh.elements) {
-    const uint8_t mask = DofsPerNode(e.type) == 6 && !Traits(e.type).translations_only ? 0b111111 : 0b000111;
+    const uint8_t mask = DofsPerNode(e.type) == 6 && !TranslationsOnly(mesh, e) ? 0b111111 : 0b000111;
     for (int n : e.nodes) active[n] |= mask;
   }
   for (size_t k = 0; k < mesh.point_masses.size(); ++k) {
@@ -476,9 +486,9 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
   for (int e = 0; e < ne; ++e) {
     const Element& el = mesh.elements[e];
     const int dpn = DofsPerNode(el.type);
-    // rods: rotational terms only where all rotations of all its nodes are active
+    // rods, membranes: rotational terms only where all rotations of all its nodes are active
     bool rotations = true;
-    if (Traits(el.type).translations_only)
+    if (TranslationsOnly(mesh, el))
       for (int n : el.nodes)
         for (int c = 3; c < 6; ++c) rotations = rotations && dm.full[n][c] >= 0;
     for (int n : el.nodes) {

@@ -64,8 +64,9 @@ constexpr const char* kTraitsCpenta[] = {"CPENTA"};
 constexpr const char* kTraitsCrod[] = {"CROD", "CONROD", "CTUBE"};
 
 // Abaqus names
-constexpr AbaqusName kTraitsS4[] = {{"S4"}, {"S4R"}, {"S4R5"}};
-constexpr AbaqusName kTraitsS3[] = {{"S3"}, {"S3R"}, {"STRI3"}};
+constexpr AbaqusName kTraitsS4[] = {
+    {"S4"}, {"S4R"}, {"S4R5"}, {"M3D4", AbaqusVariant::kMembrane}, {"M3D4R", AbaqusVariant::kMembrane}};
+constexpr AbaqusName kTraitsS3[] = {{"S3"}, {"S3R"}, {"STRI3"}, {"M3D3", AbaqusVariant::kMembrane}};
 constexpr AbaqusName kTraitsB31[] = {{"B31"},
                                      {"B31H"},
                                      {"B31R"},
@@ -84,8 +85,9 @@ constexpr AbaqusName kTraitsC3D20[] = {{"C3D20"}};
 constexpr AbaqusName kTraitsC3D20R[] = {{"C3D20R"}};
 constexpr AbaqusName kTraitsT3D2[] = {{"T3D2"}};
 constexpr AbaqusName kTraitsB32[] = {{"B32"}, {"B32R"}, {"B32H"}};
-constexpr AbaqusName kTraitsS8[] = {{"S8R"}, {"S8"}, {"S8R5"}};
-constexpr AbaqusName kTraitsS6[] = {{"STRI65"}, {"S6"}};
+constexpr AbaqusName kTraitsS8[] = {
+    {"S8R"}, {"S8"}, {"S8R5"}, {"M3D8", AbaqusVariant::kMembrane}, {"M3D8R", AbaqusVariant::kMembrane}};
+constexpr AbaqusName kTraitsS6[] = {{"STRI65"}, {"S6"}, {"M3D6", AbaqusVariant::kMembrane}};
 
 // Abaqus faces (element-based surfaces); a shell's both sides are all its nodes
 constexpr AbaqusFace kTraitsQuadFaces[] = {

@@ -42,6 +42,11 @@ struct ShellLaminate {
   Eigen::Matrix3d qb_bottom = Eigen::Matrix3d::Zero();
   Eigen::Matrix3d qb_top = Eigen::Matrix3d::Zero();  ///< as qb_bottom, at z_top [Pa]
   std::string card;                             ///< where it came from, for messages ("PCOMP 7")
+  /// A membrane (a PSHELL without MID2): only A and the mass act; the
+  /// section has no bending, transverse shear or drilling stiffness and no
+  /// rotary inertia, and its elements act on their nodes' translations only
+  /// (the rotations stay free unless another element uses them).
+  bool membrane_only = false;
 };
 
 /// q of an isotropic ply: E / (1 - nu^2) [1 nu 0; nu 1 0; 0 0 (1 - nu) / 2].

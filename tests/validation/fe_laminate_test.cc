@@ -239,6 +239,42 @@ TEST(LaminatedPlate, UnsymmetricCrossPlyConvergesToTheNavierSolution) {
   EXPECT_GT(sym[0] / meshes[1][0], 1.1);
 }
 
+// the [0/90] plate's section written as Nastran's generalized PSHELL: MAT2
+// cards from the hand formulas of AntisymmetricNavierFrequencies, MID1 =
+// A / T, MID2 = 12 D / T^3 (the same matrix here), MID4 = B / T^2 (Nastran:
+// N = T G1 eps + T^2 G4 kappa), MID3 a MAT1 of shear modulus G12 (TS/T
+// 5/6): the same frequencies as the PCOMP plate on the same mesh, and the
+// Navier limit
+TEST(LaminatedPlate, PshellWithMid4EqualsTheUnsymmetricLaminate) {
+  const Eigen::Matrix3d q = OrthotropicPlaneStress(kE1, kE2, kNu12, kG);
+  const double g11 = (q(0, 0) + q(1, 1)) / 2, b11 = (q(1, 1) - q(0, 0)) / 8;
+  std::ostringstream p;
+  p.precision(17);
+  p << "PSHELL,1,1," << kT << ",1,,3\n,,,4\n"
+    << "MAT2,1," << g11 << "," << q(0, 1) << ",0.," << g11 << ",0.," << q(2, 2) << "," << kRho << "\n"
+    << "MAT2,4," << b11 << ",0.,0.," << -b11 << ",0.,0.\n"
+    << "MAT1,3," << 2 * kG * 1.3 << "," << kG << "\n";
+  const std::string pcomp = "PCOMP,1\n,10,0.005,0.,,10,0.005,90.\n";
+  const std::vector<double> laminate = DeckFrequencies(PlateDeck(10, "", pcomp, true), "l", 6);
+  const std::vector<double> pshell = DeckFrequencies(PlateDeck(10, "", p.str(), true), "m", 6);
+  for (size_t m = 0; m < 6; ++m) {
+    std::printf("  10 x 10 mode %zu: PCOMP [0/90] %.9f Hz, PSHELL with MID4 %.9f Hz\n", m + 1, laminate[m], pshell[m]);
+    EXPECT_NEAR(pshell[m], laminate[m], 1e-9 * laminate[m]) << "mode " << m;
+  }
+  const std::vector<double> exact = Distinct(AntisymmetricNavierFrequencies(6), 3);
+  std::vector<std::vector<double>> meshes;
+  for (int n : {20, 40}) meshes.push_back(Distinct(DeckFrequencies(PlateDeck(n, "", p.str(), true), "r", 6), 3));
+  for (size_t m = 0; m < 3; ++m) {
+    const double extrapolated = (4 * meshes[1][m] - meshes[0][m]) / 3;
+    EXPECT_LT(std::abs(extrapolated / exact[m] - 1), 3e-4) << "mode " << m;
+  }
+  // without MID4 (no coupling) the plate is clearly another one
+  std::string uncoupled = p.str();
+  uncoupled.replace(uncoupled.find(",,,4\n"), 5, "");
+  const std::vector<double> plain = DeckFrequencies(PlateDeck(10, "", uncoupled, true), "n", 6);
+  EXPECT_GT(plain[0] / laminate[0], 1.1);
+}
+
 TEST(LaminatedPlate, PshellBendingRatioAndShearThicknessFollowTheirNavierSolution) {
   // steel, t = 10 mm, 12I/T^3 = 2 (D doubled), MID3 = MID1 with TS/T = 1
   // (S = G t instead of 5/6 G t): Nastran's generalized PSHELL

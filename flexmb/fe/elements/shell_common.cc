@@ -35,6 +35,10 @@ ShellData CheckShellInput(const ElementInput& in, int n_nodes) {
   if (!(s.rho >= 0.0) || !(s.nsm >= 0.0) || !std::isfinite(s.rho) || !std::isfinite(s.nsm))
     throw InputError("negative or non-finite density or non-structural mass", ctx);
   if (!std::isfinite(s.offset)) throw InputError("non-finite shell offset", ctx);
+  if (s.laminate && s.laminate->membrane_only && s.offset != 0.0)
+    throw InputError("an offset membrane (" + s.laminate->card +
+                         " has no bending material) is not supported: its offset needs the nodes' rotations",
+                     ctx);
   return s;
 }
 
@@ -52,6 +56,7 @@ SectionConstants Constants(const ShellData& s) {
     c.shear = s.laminate->S;
     c.m0 = s.laminate->mass + s.nsm;
     c.m2 = s.laminate->rotary;
+    if (s.laminate->membrane_only) c.drilling_tie = c.drilling_stabilization = c.m2 = 0.0;
   }
   return c;
 }

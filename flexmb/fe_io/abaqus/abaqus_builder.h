@@ -81,6 +81,7 @@ class Builder {
   std::map<int, fe::Origin> element_origin_;        // id -> first definition
   std::map<int, ElementRecord> elements_;           // id -> record
   std::vector<bool> euler_;                         // per mesh element: B33
+  std::vector<bool> membrane_;                      // per mesh element: a membrane name (M3D4)
   std::vector<MassElement> masses_;
   std::map<std::string, NamedSet> nsets_, elsets_;  // upper-case name -> set
   std::map<std::string, std::vector<int>> surfaces_;

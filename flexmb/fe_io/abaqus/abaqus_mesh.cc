@@ -18,6 +18,7 @@ struct TypeInfo {
   Kind kind = Kind::kStructural;
   ElementType type = ElementType::kQuad4;
   bool euler_bernoulli = false;  // B33: no shear flexibility
+  bool membrane = false;         // M3D4: a shell under a *MEMBRANE SECTION
   const char* note = nullptr;    // another formulation, read as `type`: the warning's text
   int nodes = 0;
 };
@@ -28,13 +29,14 @@ bool LookupType(const std::string& t, TypeInfo& info) {
     for (const fe::AbaqusName& a : row.abaqus)
       if (t == a.name) {
         info = {Kind::kStructural, row.type, a.variant == fe::AbaqusVariant::kEulerBernoulli,
-                a.variant == fe::AbaqusVariant::kOther ? a.note : nullptr, row.nodes};
+                a.variant == fe::AbaqusVariant::kMembrane, a.variant == fe::AbaqusVariant::kOther ? a.note : nullptr,
+                row.nodes};
         return true;
       }
-  if (t == "MASS") info = {Kind::kMass, ElementType::kQuad4, false, nullptr, 1};
-  if (t == "ROTARYI") info = {Kind::kRotaryInertia, ElementType::kQuad4, false, nullptr, 1};
-  if (t == "SPRING1") info = {Kind::kSpring, ElementType::kQuad4, false, nullptr, 1};
-  if (t == "SPRING2" || t == "SPRINGA") info = {Kind::kSpring, ElementType::kQuad4, false, nullptr, 2};
+  if (t == "MASS") info = {Kind::kMass, ElementType::kQuad4, false, false, nullptr, 1};
+  if (t == "ROTARYI") info = {Kind::kRotaryInertia, ElementType::kQuad4, false, false, nullptr, 1};
+  if (t == "SPRING1") info = {Kind::kSpring, ElementType::kQuad4, false, false, nullptr, 1};
+  if (t == "SPRING2" || t == "SPRINGA") info = {Kind::kSpring, ElementType::kQuad4, false, false, nullptr, 2};
   return t == "MASS" || t == "ROTARYI" || t == "SPRING1" || t == "SPRING2" || t == "SPRINGA";
 }
 
@@ -145,6 +147,7 @@ void Builder::Elements(const Card& c) {
       rec = {Kind::kStructural, static_cast<int>(mesh_.elements.size())};
       mesh_.elements.push_back(std::move(e));
       euler_.push_back(info.euler_bernoulli);
+      membrane_.push_back(info.membrane);
       section_origin_.push_back(Origin{});
     } else {
       MassElement m;

@@ -40,7 +40,7 @@ fe::Mesh Builder::Build(std::vector<Card>& cards) {
   for (int i : order) {
     const Card& c = cards[i];
     if (c.key == "SOLIDSECTION") SolidSection(c);
-    if (c.key == "SHELLSECTION") ShellSection(c);
+    if (c.key == "SHELLSECTION" || c.key == "MEMBRANESECTION") ShellSection(c);
     if (c.key == "BEAMSECTION" || c.key == "BEAMGENERALSECTION") BeamSection(cards, order, i);
     if (c.key == "MASS" || c.key == "ROTARYINERTIA") MassCard(c);
     if (c.key == "SPRING") SpringCard(c);
@@ -67,7 +67,7 @@ void Builder::WarnOnce(const std::string& key, const std::string& message) {
 std::vector<int> Builder::Filter(std::vector<Card>& cards) {
   static const std::set<std::string> kModel = {
       "NODE", "ELEMENT", "NSET", "ELSET", "SURFACE", "MATERIAL", "SOLIDSECTION", "SHELLSECTION",
-      "BEAMSECTION", "BEAMGENERALSECTION", "MASS", "ROTARYINERTIA", "BOUNDARY", "RIGIDBODY",
+      "MEMBRANESECTION", "BEAMSECTION", "BEAMGENERALSECTION", "MASS", "ROTARYINERTIA", "BOUNDARY", "RIGIDBODY",
       "COUPLING", "SYSTEM", "EQUATION", "TIE", "SPRING"};
   static const std::set<std::string> kMaterialSub = {
       "ELASTIC", "DENSITY", "EXPANSION", "CONDUCTIVITY", "SPECIFICHEAT", "PLASTIC", "DAMPING", "CREEP"};
@@ -80,7 +80,7 @@ std::vector<int> Builder::Filter(std::vector<Card>& cards) {
   // them would give a different model (docs/formats.md)
   static const std::set<std::string> kUnsupported = {
       "MPC", "DASHPOT", "KINEMATICCOUPLING", "DISTRIBUTINGCOUPLING",
-      "SHELLGENERALSECTION", "MEMBRANESECTION", "CONNECTORSECTION", "CONNECTORBEHAVIOR", "CONNECTORELASTICITY",
+      "SHELLGENERALSECTION", "CONNECTORSECTION", "CONNECTORBEHAVIOR", "CONNECTORELASTICITY",
       "GAP", "TRANSFORM", "NONSTRUCTURALMASS", "EMBEDDEDELEMENT", "MATRIXINPUT", "MATRIXASSEMBLE",
       "SUBSTRUCTUREPROPERTY", "GASKETSECTION", "COHESIVESECTION", "FRAMESECTION", "USERELEMENT", "UELPROPERTY",
       "SHELLTOSOLIDCOUPLING", "PRETENSIONSECTION", "ELASTICFOUNDATION"};

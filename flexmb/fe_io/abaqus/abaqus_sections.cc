@@ -220,10 +220,22 @@ void Builder::SolidSection(const Card& c) {
   AssignSection(c, entity, "solid", IsSolid, [&](fe::Element& e, int) { e.property = index; });
 }
 
+// *SHELL SECTION, and *MEMBRANE SECTION (the same syntax) for the membrane
+// elements (M3D4): a membrane section has no bending (ShellLaminate::membrane_only)
 void Builder::ShellSection(const Card& c) {
   const std::string entity = SectionEntity(c);
+  const bool membrane = c.key == "MEMBRANESECTION";
   for (const char* unsupported : {"COMPOSITE", "NODALTHICKNESS", "ORIENTATION"})
     if (c.Find(unsupported)) Fail(c.origin, entity, std::string(unsupported) + " is not supported");
+  for (int id : SectionSet(c, entity).items) {
+    const ElementRecord& r = elements_.at(id);
+    if (r.kind != Kind::kStructural || !IsShell(mesh_.elements[r.index].type) || membrane_[r.index] == membrane)
+      continue;
+    Fail(c.origin, entity,
+         ElementName(id) + (membrane ? " is a shell, not a membrane element (M3D3, M3D4, M3D4R, M3D6, M3D8, "
+                                       "M3D8R): give it a *SHELL SECTION"
+                                     : " is a membrane element: give it a *MEMBRANE SECTION"));
+  }
   fe::ShellSection s;
   s.id = static_cast<int>(mesh_.shell_sections.size()) + 1;
   s.material = MaterialRef(c, entity);
@@ -244,10 +256,24 @@ void Builder::ShellSection(const Card& c) {
       offset = Real(p->value, c.origin, entity, "OFFSET");
     }
   }
+  if (membrane) {
+    if (offset != 0.0) Fail(c.origin, entity, "OFFSET must be 0 (a membrane has no bending to offset)");
+    const fe::Material& m = mesh_.materials[s.material];
+    auto l = std::make_shared<fe::ShellLaminate>();
+    l->A = fe::IsotropicPlaneStress(m.E, m.nu) * s.thickness;
+    l->mass = m.rho * s.thickness;
+    l->thickness = s.thickness;
+    l->z_bottom = -0.5 * s.thickness;
+    l->z_top = 0.5 * s.thickness;
+    l->q_bottom = l->q_top = fe::IsotropicPlaneStress(m.E, m.nu);
+    l->card = "*MEMBRANE SECTION at " + At(c.origin);
+    l->membrane_only = true;
+    s.laminate = std::move(l);
+  }
   int index = 0;
   for (; index < static_cast<int>(mesh_.shell_sections.size()); ++index) {
     const fe::ShellSection& o = mesh_.shell_sections[index];
-    if (o.material == s.material && o.thickness == s.thickness) break;
+    if (o.material == s.material && o.thickness == s.thickness && (o.laminate != nullptr) == membrane) break;
   }
   if (index == static_cast<int>(mesh_.shell_sections.size())) mesh_.shell_sections.push_back(s);
   AssignSection(c, entity, "shell", IsShell, [&](fe::Element& e, int) {

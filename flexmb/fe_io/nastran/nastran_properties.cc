@@ -72,7 +72,32 @@ int Builder::AddPshell(const Entry& e, int pid) {
   if (e.Blank(2)) e.Fail(2, "MID1 is blank: shells without membrane stiffness are not supported");
   const int mid1 = e.Id(2, "MID1");
   s.thickness = Positive(e, 3, "thickness T", e.Real(3, "T"));
-  if (e.Blank(4)) e.Fail(4, "MID2 is blank: membrane-only shells are not supported");
+  const double t = s.thickness;
+  s.nsm = NonNegative(e, 8, "NSM", e.Real(8, "NSM", 0.0));
+  e.Real(9, "Z1", 0.0);
+  e.Real(10, "Z2", 0.0);
+  s.origin = OriginOf(e);
+  const ShellMaterial m1 = ShellMaterialOf(e, 2, mid1);
+  if (m1.q.llt().info() != Eigen::Success || !m1.q.allFinite())
+    e.Fail(2, "the plane-stress matrix of MID1 = " + std::to_string(mid1) + " is not positive definite");
+  if (e.Blank(4)) {
+    // a membrane: no bending, transverse shear or coupling (Nastran ignores
+    // 12I/T**3 and TS/T then; MID3 and MID4 must be blank)
+    if (!e.Blank(6)) e.Fail(6, "MID3 is given but MID2 is blank (a membrane has no transverse shear)");
+    if (!e.Blank(11)) e.Fail(11, "MID4 is given but MID2 is blank (a membrane has no bending)");
+    auto l = std::make_shared<fe::ShellLaminate>();
+    l->A = m1.q * t;
+    l->mass = m1.rho * t;
+    l->thickness = t;
+    l->z_bottom = -0.5 * t;
+    l->z_top = 0.5 * t;
+    l->q_bottom = l->q_top = m1.q;
+    l->card = "PSHELL " + std::to_string(pid);
+    l->membrane_only = true;
+    s.laminate = std::move(l);
+    mesh_.shell_sections.push_back(s);
+    return static_cast<int>(mesh_.shell_sections.size()) - 1;
+  }
   const int mid2 = e.Int(4, "MID2");
   if (mid2 <= 0)
     e.Fail(4, "MID2 = " + std::to_string(mid2) + " (plane strain or no bending) is not supported");
@@ -82,22 +107,22 @@ int Builder::AddPshell(const Entry& e, int pid) {
   // makes no difference for thin shells; a MID3 gives its shear times TS/T T
   const int mid3 = e.Blank(6) ? -1 : e.Id(6, "MID3");
   const double ts = Positive(e, 7, "TS/T", e.Real(7, "TS/T", 5.0 / 6.0));
+  const int mid4 = e.Blank(11) ? -1 : e.Id(11, "MID4");
   const bool isotropic1 = materials_.count(mid1) != 0;
   if (isotropic1) s.material = MaterialIndex(e, 2, mid1);
-  const bool plain = isotropic1 && mid2 == mid1 && std::abs(ratio - 1.0) <= 1e-6 &&
+  const bool plain = isotropic1 && mid2 == mid1 && std::abs(ratio - 1.0) <= 1e-6 && mid4 < 0 &&
                      (mid3 < 0 || (mid3 == mid1 && std::abs(ts - 5.0 / 6.0) <= 1e-4));
   if (!plain) {
     // MID1 and MID2 of other materials (MAT2, MAT8, another MAT1), a
-    // bending ratio or another shear stiffness: the section as an
-    // equivalent single layer (fe/laminate.h), A = T q1, D = 12I/T^3 T^3 / 12
-    // q2, S = TS/T T G3, no coupling; mass and rotary inertia of MID1's rho
-    const double t = s.thickness;
-    const ShellMaterial m1 = ShellMaterialOf(e, 2, mid1), m2 = ShellMaterialOf(e, 4, mid2);
+    // bending ratio, another shear stiffness or a coupling: the section as
+    // an equivalent single layer (fe/laminate.h), A = T q1, D = 12I/T^3 T^3
+    // / 12 q2, S = TS/T T G3, B = T^2 q4 (Nastran's resultants: N = T G1
+    // eps + T^2 G4 kappa, M = T^2 G4 eps + 12I/T^3 T^3/12 G2 kappa); mass
+    // and rotary inertia of MID1's rho
+    const ShellMaterial m2 = ShellMaterialOf(e, 4, mid2);
     // a MAT2's upper block is in-plane: without MID3, its G33 stands for the transverse shear
     Eigen::Matrix2d g3 = mat2_.count(mid2) != 0 ? Eigen::Matrix2d(Eigen::Matrix2d::Identity() * m2.q(2, 2)) : m2.shear;
     if (mid3 >= 0) g3 = ShellMaterialOf(e, 6, mid3).shear;
-    if (m1.q.llt().info() != Eigen::Success || !m1.q.allFinite())
-      e.Fail(2, "the plane-stress matrix of MID1 = " + std::to_string(mid1) + " is not positive definite");
     if (m2.q.llt().info() != Eigen::Success || !m2.q.allFinite())
       e.Fail(4, "the plane-stress matrix of MID2 = " + std::to_string(mid2) + " is not positive definite");
     if (g3.llt().info() != Eigen::Success || !g3.allFinite())
@@ -109,6 +134,15 @@ int Builder::AddPshell(const Entry& e, int pid) {
     l->A = m1.q * t;
     l->D = m2.q * (ratio * t * t * t / 12.0);
     l->S = g3 * ((mid3 < 0 ? 5.0 / 6.0 : ts) * t);
+    if (mid4 >= 0) {
+      l->B = ShellMaterialOf(e, 11, mid4).q * (t * t);
+      // the section's stiffness [A B; B D] must stay positive definite
+      Eigen::Matrix<double, 6, 6> abd;
+      abd << l->A, l->B, l->B, l->D;
+      if (abd.llt().info() != Eigen::Success || !abd.allFinite())
+        e.Fail(11, "the membrane-bending coupling of MID4 = " + std::to_string(mid4) +
+                       " makes the section's stiffness [A B; B D] indefinite");
+    }
     l->mass = m1.rho * t;
     l->rotary = m1.rho * t * t * t / 12.0;
     l->thickness = t;
@@ -119,11 +153,6 @@ int Builder::AddPshell(const Entry& e, int pid) {
     l->card = "PSHELL " + std::to_string(pid);
     s.laminate = std::move(l);
   }
-  s.nsm = NonNegative(e, 8, "NSM", e.Real(8, "NSM", 0.0));
-  e.Real(9, "Z1", 0.0);
-  e.Real(10, "Z2", 0.0);
-  if (!e.Blank(11)) e.Fail(11, "MID4 (membrane-bending coupling) is not supported");
-  s.origin = OriginOf(e);
   mesh_.shell_sections.push_back(s);
   return static_cast<int>(mesh_.shell_sections.size()) - 1;
 }
