@@ -74,9 +74,11 @@ void ReadColumns(const hdf5::Reader& r, const std::string& group, std::vector<T>
 }
 
 // the material index a section is written with: a laminated shell section
-// (a PCOMP, a generalized PSHELL, a membrane) is written with -1, since the
-// body file does not hold the laminate; re-assembling such a mesh is then
-// an error naming the element, never a plain shell of MID1's material
+// (a PCOMP, a generalized PSHELL, a membrane) and a beam section with a
+// neutral axis or non-structural mass off its axis are written with -1,
+// since the body file does not hold the laminate or the offsets;
+// re-assembling such a mesh is then an error naming the element, never a
+// different model
 template <class T>
 int WrittenMaterial(const T& s) {
   return s.material;
@@ -84,6 +86,12 @@ int WrittenMaterial(const T& s) {
 template <>
 int WrittenMaterial(const fe::ShellSection& s) {
   return s.laminate ? -1 : s.material;
+}
+template <>
+int WrittenMaterial(const fe::BeamSection& s) {
+  const bool offsets = s.neutral_axis[0] != 0.0 || s.neutral_axis[1] != 0.0 || s.nsm_offset[0] != 0.0 ||
+                       s.nsm_offset[1] != 0.0 || s.nsm_inertia != 0.0;
+  return offsets ? -1 : s.material;
 }
 
 // a section table: ids, material indices, then the columns

@@ -98,6 +98,17 @@ struct BeamSection {
   double J = 0.0;             ///< torsion constant [m^4]
   double ky = 0.0, kz = 0.0;  ///< shear factors (area ratio); 0 = no shear flexibility
   double nsm = 0.0;           ///< non-structural mass per length [kg/m]
+  /// The neutral axis (y, z) from the beam's axis, element frame [m]
+  /// (Nastran PBEAM N1, N2): the beam axis (the nodes' line plus end offsets)
+  /// is the shear centre's; axial force and bending act about the neutral
+  /// axis, which carries the structural mass; A, Iy, Iz, Iyz are about it.
+  std::array<double, 2> neutral_axis{};
+  /// The centre of the non-structural mass (y, z) from the beam's axis,
+  /// element frame [m] (PBEAM M1, M2).
+  std::array<double, 2> nsm_offset{};
+  /// Polar moment of inertia of the non-structural mass about its centre,
+  /// per length [kg m] (PBEAM NSI).
+  double nsm_inertia = 0.0;
   /// Stress recovery points of the section, (y, z) in the element frame
   /// from the centroid [m]: Nastran's C, D, E, F of PBAR/PBEAM, the corners
   /// of a library shape (PBARL, Abaqus *BEAM SECTION), points on the outer

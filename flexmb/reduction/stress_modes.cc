@@ -1,6 +1,7 @@
 #include "flexmb/reduction/stress_modes.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -85,6 +86,17 @@ StressTable SolidNodeTable(const fe::Mesh& mesh, const MatX& modes, const std::v
   return t;
 }
 
+// the weights (N, My, Mz) of the normal stress at (y, z) of a bending
+// section (BeamNormalStress): sigma = N / A + z' a - y' b with (y', z') from
+// the neutral axis and (a, b) from the moments about it, (My - ez N, Mz + ey N)
+std::array<double, 3> NormalStressWeights(const fe::BeamSection& s, double y, double z) {
+  const double det = s.Iy * s.Iz - s.Iyz * s.Iyz;
+  const double ey = s.neutral_axis[0], ez = s.neutral_axis[1];
+  const double yy = y - ey, zz = z - ez;
+  const double my = (zz * s.Iz - yy * s.Iyz) / det, mz = (zz * s.Iyz - yy * s.Iy) / det;
+  return {1.0 / s.A - ez * my + ey * mz, my, mz};
+}
+
 // the beam_fibre table from the section forces of the beam table (see
 // StressModes::beam_fibre): sigma = N / A + (z Iz - y Iyz) My / det +
 // (z Iyz - y Iy) Mz / det, det = Iy Iz - Iyz^2 (BeamNormalStress)
@@ -123,10 +135,10 @@ StressTable BeamFibreTable(const fe::Mesh& mesh, const StressTable& beam) {
           t.modes.row(t.Row(static_cast<int>(i), l, 0)) = beam.modes.row(beam.Row(kb, end, 0)) / sec.A;
           continue;
         }
-        t.modes.row(t.Row(static_cast<int>(i), l, 0)) =
-            beam.modes.row(beam.Row(kb, end, 0)) / sec.A +
-            (z * sec.Iz - y * sec.Iyz) / det * beam.modes.row(beam.Row(kb, end, 4)) +
-            (z * sec.Iyz - y * sec.Iy) / det * beam.modes.row(beam.Row(kb, end, 5));
+        const std::array<double, 3> w = NormalStressWeights(sec, y, z);
+        t.modes.row(t.Row(static_cast<int>(i), l, 0)) = w[0] * beam.modes.row(beam.Row(kb, end, 0)) +
+                                                         w[1] * beam.modes.row(beam.Row(kb, end, 4)) +
+                                                         w[2] * beam.modes.row(beam.Row(kb, end, 5));
       }
   }
   return t;
@@ -266,10 +278,8 @@ double BeamNormalStress(const Eigen::Matrix<double, 6, 1>& f, const fe::BeamSect
   if (!(section.A > 0.0) || !(det > 0.0))
     throw InputError("beam normal stress: section " + std::to_string(section.id) +
                      " needs A > 0 and Iy Iz > Iyz^2");
-  // [Iy -Iyz; -Iyz Iz] (a, b) = (My, Mz)
-  const double a = (section.Iz * f(4) + section.Iyz * f(5)) / det;
-  const double b = (section.Iyz * f(4) + section.Iy * f(5)) / det;
-  return f(0) / section.A + z * a - y * b;
+  const std::array<double, 3> w = NormalStressWeights(section, y, z);
+  return w[0] * f(0) + w[1] * f(4) + w[2] * f(5);
 }
 
 }  // namespace flexmb::reduction

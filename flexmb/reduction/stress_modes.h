@@ -78,7 +78,10 @@ void ElementVonMisesOfValues(const StressTable& table, const Eigen::Ref<const Ve
 /// fe/elements/beam2.h), i.e. N / A + My z / Iy - Mz y / Iz for Iyz = 0. Shear stresses of Vy, Vz and
 /// T depend on the section's shape, which the mesh does not store. A rod
 /// section (Iy = Iz = Iyz = 0, fe/elements/rod2.h) gives N / A. Throws
-/// InputError if A <= 0 or Iy Iz <= Iyz^2 (other than a rod section).
+/// InputError if A <= 0 or Iy Iz <= Iyz^2 (other than a rod section). A
+/// neutral axis off the beam axis (BeamSection::neutral_axis, e): y, z are
+/// measured from the beam axis, the moments are taken about the neutral axis
+/// (My - ez N, Mz + ey N) and y - ey, z - ez used above.
 double BeamNormalStress(const Eigen::Matrix<double, 6, 1>& f, const fe::BeamSection& section,
                         double y, double z);
 

@@ -102,6 +102,19 @@ BeamLocal Setup(const ElementInput& in) {
   Eigen::Matrix2d eb;
   eb << sec.Iy, -sec.Iyz, -sec.Iyz, sec.Iz;
   C.block<2, 2>(4, 4) = (mat.E * eb).inverse();
+  // a neutral axis at (ey, ez) off the beam axis (the shear centre's): the
+  // section forces about it are P S, N the same, My - ez N, Mz + ey N, so
+  // the compliance about the beam axis is P^T C P
+  const double na_y = sec.neutral_axis[0], na_z = sec.neutral_axis[1];
+  if (!std::isfinite(na_y) || !std::isfinite(na_z) || !std::isfinite(sec.nsm_offset[0]) ||
+      !std::isfinite(sec.nsm_offset[1]) || !(sec.nsm_inertia >= 0.0) || !std::isfinite(sec.nsm_inertia))
+    throw InputError("non-finite neutral axis or non-structural mass offset, or a negative NSM inertia", ctx);
+  if (na_y != 0.0 || na_z != 0.0) {
+    Mat6 p = Mat6::Identity();
+    p(4, 0) = -na_z;
+    p(5, 0) = na_y;
+    C = (p.transpose() * C * p).eval();
+  }
 
   // section resultants at distance s before end B under an end-B load P:
   // S = (I + s B1) P, B1 = [0 0; skew(e1) 0]
@@ -147,14 +160,29 @@ void Beam2Matrices(const ElementInput& in, MatX& K, MatX& M) {
   const Mat6 &C = b.C, &bc = b.bc, &cb = b.cb, &bcb = b.bcb, &kbb = b.kbb, &gt = b.gt;
   const Mat12 &kl = b.kl, &t = b.t;
 
-  // section mass per length: translations, rotary inertia
+  // section mass per length: translations, rotary inertia; the structural
+  // mass on the neutral axis, the non-structural mass at its own centre
+  // (each moved to the beam axis: a point at e moves by u + theta x e)
   const double m0 = mat.rho * sec.A + sec.nsm;
   Mat6 ms = Mat6::Zero();
   ms.block<3, 3>(0, 0).diagonal().setConstant(m0);
-  ms(3, 3) = mat.rho * (sec.Iy + sec.Iz);
+  ms(3, 3) = mat.rho * (sec.Iy + sec.Iz) + sec.nsm_inertia;
   ms(4, 4) = mat.rho * sec.Iy;
   ms(5, 5) = mat.rho * sec.Iz;
   ms(4, 5) = ms(5, 4) = -mat.rho * sec.Iyz;
+  const Vec3 e_na(0.0, sec.neutral_axis[0], sec.neutral_axis[1]), e_nsm(0.0, sec.nsm_offset[0], sec.nsm_offset[1]);
+  const bool offsets = !e_na.isZero(0.0) || !e_nsm.isZero(0.0);
+  if (offsets) {
+    auto moved = [](const Vec3& e, double m) {  // translational mass m at e, about the axis
+      Mat6 h = Mat6::Identity();
+      h.block<3, 3>(0, 3) = -Skew(e);
+      Mat6 mm = Mat6::Zero();
+      mm.block<3, 3>(0, 0).diagonal().setConstant(m);
+      return Mat6(h.transpose() * mm * h);
+    };
+    ms.block<3, 3>(0, 0).setZero();
+    ms += moved(e_na, mat.rho * sec.A) + moved(e_nsm, sec.nsm);
+  }
 
   Mat12 ml = Mat12::Zero();
   if (in.mass_form == MassForm::kConsistent) {
@@ -174,6 +202,9 @@ void Beam2Matrices(const ElementInput& in, MatX& K, MatX& M) {
       n.block<6, 6>(0, 6) = dk;
       ml += n.transpose() * ms * n * (0.5 * L * kGw[g]);
     }
+  } else if (offsets) {
+    // half the section's mass, with its offsets, at each end
+    for (int end = 0; end < 2; ++end) ml.block<6, 6>(6 * end, 6 * end) = 0.5 * L * ms;
   } else {
     for (int end = 0; end < 2; ++end) {
       for (int a = 0; a < 3; ++a) ml(6 * end + a, 6 * end + a) = 0.5 * L * m0;

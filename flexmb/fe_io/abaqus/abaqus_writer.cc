@@ -101,6 +101,10 @@ std::vector<std::string> CheckWritable(const fe::Mesh& mesh) {
       const fe::BeamSection& s = mesh.beam_sections[e.property];
       const std::string se = "beam section " + std::to_string(s.id);
       if (s.nsm != 0.0) throw InputError("non-structural mass cannot be written to an Abaqus deck", {s.origin.file, s.origin.line, se});
+      if (s.neutral_axis[0] != 0.0 || s.neutral_axis[1] != 0.0 || s.nsm_inertia != 0.0)
+        throw InputError("a neutral axis off the beam axis or a non-structural mass inertia cannot be written to an "
+                         "Abaqus deck",
+                         {s.origin.file, s.origin.line, se});
       if ((s.ky == 0.0) != (s.kz == 0.0))
         throw InputError("shear factors with one of ky, kz zero cannot be written", {s.origin.file, s.origin.line, se});
       if (s.ky == 0.0 && s.kz == 0.0 && !fe::Traits(e.type).translations_only && !HasEulerBernoulliName(e.type))

@@ -266,16 +266,19 @@ void Builder::ReadPbeam(const Entry& e, fe::BeamSection& s) {
   s.kz = e.Real(f + 1, "K2", 1.0);
   e.Real(f + 2, "S1", 0.0);
   e.Real(f + 3, "S2", 0.0);
-  for (int k = 4; k < 16; ++k) {
-    if (k == 6 || k == 7) {
-      e.Real(f + k, "CW", 0.0);  // warping needs SA/SB scalar points, rejected at CBEAM
-      continue;
-    }
-    if (e.Real(f + k, "NSI, M or N", 0.0) != 0.0)
-      e.Fail(f + k, k < 6 ? "non-structural mass inertia NSI is not supported"
-                          : k < 12 ? "offset of the non-structural mass (M1, M2) is not supported"
-                                   : "neutral axis offset (N1, N2) is not supported");
-  }
+  e.Real(f + 6, "CW(A)", 0.0);  // warping needs SA/SB scalar points, rejected at CBEAM
+  e.Real(f + 7, "CW(B)", 0.0);
+  // end A's value of a field pair; end B's (blank: end A's) must equal it
+  auto constant = [&](int field_a, int field_b, const char* name) {
+    const double a_value = e.Real(field_a, (std::string(name) + "(A)").c_str(), 0.0);
+    const double b_value = e.Real(field_b, (std::string(name) + "(B)").c_str(), a_value);
+    if (std::abs(b_value - a_value) > 1e-9 * std::max(std::abs(a_value), std::abs(b_value)))
+      e.Fail(field_b, std::string(name) + "(B) differs from " + name + "(A): a tapered PBEAM is not supported");
+    return a_value;
+  };
+  s.nsm_inertia = constant(f + 4, f + 5, "NSI");
+  s.nsm_offset = {constant(f + 8, f + 10, "M1"), constant(f + 9, f + 11, "M2")};
+  s.neutral_axis = {constant(f + 12, f + 14, "N1"), constant(f + 13, f + 15, "N2")};
   if (e.Size() >= f + 16) e.Fail(f + 16, "unexpected field after the PBEAM footer");
   s.A = a[0];
   s.Iz = a[1];
@@ -291,6 +294,7 @@ void Builder::ReadPbeam(const Entry& e, fe::BeamSection& s) {
   NonNegative(e, 8, "NSM(A)", s.nsm);
   NonNegative(e, f, "K1", s.ky);
   NonNegative(e, f + 1, "K2", s.kz);
+  NonNegative(e, f + 4, "NSI(A)", s.nsm_inertia);
 }
 
 }  // namespace flexmb::io::nastran
