@@ -4,11 +4,13 @@
 
 #include "flexmb/common/error.h"
 #include "flexmb/common/text.h"
+#include "flexmb/fe_io/abaqus/abaqus_matrix.h"
 #include "flexmb/fe_io/abaqus/abaqus_reader.h"
 #include "flexmb/fe_io/calculix_matrices.h"
 #include "flexmb/fe_io/gmsh_reader.h"
 #include "flexmb/fe_io/harwell_boeing.h"
 #include "flexmb/fe_io/matrix_market.h"
+#include "flexmb/fe_io/matrix_text.h"
 #include "flexmb/fe_io/nastran/nastran_reader.h"
 #include "flexmb/fe_io/vtk_mesh.h"
 
@@ -19,7 +21,16 @@ fe::SparseMat HarwellBoeingMatrixOf(const std::string& path, const std::string&,
   return ReadHarwellBoeing(path).A;
 }
 
+// .mtx: Matrix Market, or Abaqus's coordinate format when the banner is
+// missing and the first entry line is "ROW COLUMN VALUE"
 fe::SparseMat MatrixMarketMatrixOf(const std::string& path, const std::string&, int) {
+  const std::string text = ReadWholeFile(path);
+  for (std::string_view line : SplitLines(text)) {
+    const size_t p = line.find_first_not_of(" \t\r");
+    if (p == std::string_view::npos || line.substr(p, 2) == "**") continue;
+    if (line[p] != '%' && LooksLikeAbaqusCoordinateMatrix(line)) return ReadAbaqusCoordinateMatrix(path);
+    break;
+  }
   return ReadMatrixMarket(path).A;
 }
 

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "flexmb/common/error.h"
+#include "flexmb/common/log.h"
 #include "flexmb/common/text.h"
 #include "flexmb/fe_io/calculix_matrices.h"
 #include "flexmb/fe_io/dof_map.h"
@@ -82,6 +83,28 @@ fe::SparseMat CheckMatrix(const fe::SparseMat& A, const std::string& path, const
   return S;
 }
 
+// the DOF map of matrices given without one: 3 or 6 rows per node of the
+// geometry, in its node order (what a package writes for a model of solids,
+// or of shells and beams, without constraints); anything else is an error
+MatrixRowMap DefaultDofMap(int rows, const fe::Mesh& geometry, const ImportedMatricesSpec& spec) {
+  const int nodes = static_cast<int>(geometry.nodes.size());
+  const int per_node = nodes > 0 && rows == 3 * nodes ? 3 : nodes > 0 && rows == 6 * nodes ? 6 : 0;
+  if (per_node == 0)
+    throw InputError("no DOF map is given, and the " + std::to_string(rows) + " rows of the matrices are not 3 or 6 "
+                         "per node of the " + std::to_string(nodes) + " nodes of the geometry " + spec.geometry +
+                         ": give a DOF map (docs/formats.md, \"DOF map\")",
+                     {spec.stiffness, 0, "K"});
+  MatrixRowMap map;
+  map.file = spec.geometry;
+  for (const fe::Node& node : geometry.nodes)
+    for (int c = 1; c <= per_node; ++c) map.rows.push_back({node.id, c, 0});
+  LogWarning(spec.stiffness + ": no DOF map given: its " + std::to_string(rows) + " rows are taken as " +
+             std::to_string(per_node) + " DOF per node (" + (per_node == 3 ? "ux uy uz" : "ux uy uz rx ry rz") +
+             ") of the " + std::to_string(nodes) + " nodes of " + spec.geometry +
+             " in their order there; give a DOF map if the package numbered them otherwise");
+  return map;
+}
+
 }  // namespace
 
 fe::FeModel ReadImportedMatrices(const ImportedMatricesSpec& spec) {
@@ -89,20 +112,27 @@ fe::FeModel ReadImportedMatrices(const ImportedMatricesSpec& spec) {
     throw InputError("imported matrices need a stiffness and a mass matrix file");
   }
 
-  // DOF map: flexmb's format, or a CalculiX job.dof (given, or next to job.sti)
+  // DOF map: flexmb's format, a CalculiX job.dof (given, or next to
+  // job.sti), or none: 3 or 6 rows per node of the geometry (DefaultDofMap)
   std::string dof_path = spec.dof_map;
-  if (dof_path.empty()) {
-    if (LowerExtension(spec.stiffness) != ".sti") {
-      throw InputError("a DOF map file is needed for " + spec.stiffness + " (only CalculiX .sti has its job.dof)",
-                       {spec.stiffness, 0, "stiffness"});
-    }
+  if (dof_path.empty() && LowerExtension(spec.stiffness) == ".sti")
     dof_path = std::filesystem::path(spec.stiffness).replace_extension(".dof").string();
+  MatrixRowMap map;
+  fe::SparseMat K, M;
+  fe::Mesh geometry;
+  const bool default_map = dof_path.empty();
+  if (default_map) {
+    geometry = ReadGeometry(spec.geometry);
+    K = ReadMatrix(spec.stiffness, "K", 0);
+    M = ReadMatrix(spec.mass, "M", 0);
+    map = DefaultDofMap(static_cast<int>(K.rows()), geometry, spec);
+    dof_path = spec.geometry;
+  } else {
+    map = LowerExtension(dof_path) == ".dof" ? ReadCalculixDofs(dof_path) : ReadDofMap(dof_path);
+    K = ReadMatrix(spec.stiffness, "K", static_cast<int>(map.rows.size()));
+    M = ReadMatrix(spec.mass, "M", static_cast<int>(map.rows.size()));
   }
-  const MatrixRowMap map = LowerExtension(dof_path) == ".dof" ? ReadCalculixDofs(dof_path) : ReadDofMap(dof_path);
   const int n_map = static_cast<int>(map.rows.size());
-
-  fe::SparseMat K = ReadMatrix(spec.stiffness, "K", n_map);
-  fe::SparseMat M = ReadMatrix(spec.mass, "M", n_map);
 
   // sizes: K square, M the same, one DOF map row per matrix row
   if (K.rows() != K.cols()) {
@@ -146,7 +176,7 @@ fe::FeModel ReadImportedMatrices(const ImportedMatricesSpec& spec) {
   M = CheckMatrix(M, spec.mass, "M", map);
 
   fe::FeModel model;
-  model.mesh = ReadGeometry(spec.geometry);
+  model.mesh = default_map ? std::move(geometry) : ReadGeometry(spec.geometry);
   model.mesh.IndexNodes();
   // constraints, links and masses of a geometry deck are already in the matrices
   model.mesh.constraints.clear();

@@ -16,7 +16,7 @@ namespace flexmb::io {
 struct ImportedMatricesSpec {
   std::string stiffness;  ///< K file (.hb/.rb/.rsa, .mtx, or CalculiX .sti)
   std::string mass;       ///< M file (same formats, CalculiX .mas)
-  std::string dof_map;    ///< DOF map file; empty for CalculiX (job.dof is used)
+  std::string dof_map;    ///< DOF map file; empty: CalculiX job.dof, else 3 or 6 rows per geometry node in node order
   std::string geometry;   ///< node coordinates: .vtk or any mesh file
 };
 

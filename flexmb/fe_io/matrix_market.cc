@@ -35,7 +35,8 @@ MatrixMarketMatrix ReadMatrixMarket(const std::string& path) {
   if (lines.empty()) throw InputError(std::string("empty file, expected the banner '") + kBanner + "'", {path, 1, "banner"});
   const std::vector<std::string_view> banner = SplitFields(lines[0]);
   if (banner.empty() || AsciiLower(banner[0]) != "%%matrixmarket") {
-    throw InputError(std::string("not a Matrix Market file: the first line must be a banner like '") + kBanner + "'",
+    throw InputError(std::string("not a Matrix Market file: the first line must be a banner like '") + kBanner +
+                         "' (a .mtx file of Abaqus's *MATRIX OUTPUT, FORMAT=COORDINATE has 'ROW COLUMN VALUE' lines)",
                      {path, 1, "banner"});
   }
   if (banner.size() != 5) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cstdio>
 
 #include "flexmb/fe_io/dof_map.h"
 #include "flexmb/fe_io/harwell_boeing.h"
@@ -92,6 +93,61 @@ TEST(ImportedMatrices, CalculixMatrixStorageWithItsDofFile) {
   EXPECT_EQ(model.imported->K.coeff(1, 2), -500.0);
 }
 
+// Abaqus's *MATRIX OUTPUT, FORMAT=COORDINATE (.mtx without a Matrix Market
+// banner): "ROW COLUMN VALUE" lines, both triangles or one (mirrored)
+TEST(ImportedMatrices, ReadsAbaqusCoordinateMatrices) {
+  const Fixture f;
+  const Eigen::MatrixXd k(f.K);
+  std::string both = "** written as Abaqus does\n", lower;
+  char b[120];
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      if (k(i, j) == 0.0) continue;
+      std::snprintf(b, sizeof b, "%d %d  %.17g\n", i + 1, j + 1, k(i, j));
+      both += b;
+      if (i >= j) lower += b;
+    }
+  const std::string kb = WriteScratch("abq_STIF1.mtx", both), kl = WriteScratch("abq_lower_STIF1.mtx", lower);
+  EXPECT_EQ(Eigen::MatrixXd(ReadImportedMatrices({kb, f.m_hb, f.dof_map, f.geometry}).imported->K), k);
+  EXPECT_EQ(Eigen::MatrixXd(ReadImportedMatrices({kl, f.m_hb, f.dof_map, f.geometry}).imported->K), k);
+  // errors name the file, line and entry
+  const std::string twice = WriteScratch("abq_twice.mtx", "1 1 2.\n2 2 3.\n1 1 4.\n");
+  testing::ExpectContains(InputErrorOf([&] { ReadImportedMatrices({twice, f.m_hb, f.dof_map, f.geometry}); }),
+                          {twice + ":3: entry (1, 1)", "given twice (also line 1)"}, "twice");
+  const std::string fields = WriteScratch("abq_fields.mtx", "1 1 2.\n2 2\n");
+  testing::ExpectContains(InputErrorOf([&] { ReadImportedMatrices({fields, f.m_hb, f.dof_map, f.geometry}); }),
+                          {fields + ":2: entry 2", "ROW COLUMN VALUE"}, "fields");
+  // neither format: the Matrix Market message
+  const std::string neither = WriteScratch("abq_neither.mtx", "hello world\n");
+  testing::ExpectContains(InputErrorOf([&] { ReadImportedMatrices({neither, f.m_hb, f.dof_map, f.geometry}); }),
+                          {neither + ":1: banner", "not a Matrix Market file"}, "neither");
+}
+
+// no DOF map: 3 or 6 rows per node of the geometry, in its node order, with
+// a warning that says so
+TEST(ImportedMatrices, WithoutADofMapRowsAreThreeOrSixPerNodeInNodeOrder) {
+  const Fixture f;  // its geometry: nodes 10, 20, 30
+  for (int per_node : {3, 6}) {
+    const int n = 3 * per_node;
+    Eigen::MatrixXd k = Eigen::MatrixXd::Identity(n, n) * 2e5;
+    k(0, 1) = k(1, 0) = -1e4;
+    const fe::SparseMat K = k.sparseView(), M = Eigen::MatrixXd(Eigen::MatrixXd::Identity(n, n)).sparseView();
+    const std::string kp = ScratchPath("imp_default_K.mtx"), mp = ScratchPath("imp_default_M.mtx");
+    WriteMatrixMarket(K, kp);
+    WriteMatrixMarket(M, mp);
+    testing::WarningCapture w;
+    const fe::FeModel model = ReadImportedMatrices({kp, mp, "", f.geometry});
+    EXPECT_EQ(w.Count("no DOF map given"), 1);
+    EXPECT_EQ(w.Count(std::to_string(per_node) + " DOF per node"), 1);
+    const fe::AssembledModel& a = *model.imported;
+    EXPECT_EQ(a.dofs.n_full, n);
+    for (int node = 0; node < 3; ++node)
+      for (int c = 0; c < 6; ++c)
+        EXPECT_EQ(a.dofs.full[model.mesh.NodeIndex(10 * (node + 1))][c], c < per_node ? per_node * node + c : -1);
+    EXPECT_EQ(Eigen::MatrixXd(a.K), k);
+  }
+}
+
 TEST(ImportedMatrices, SymmetrizesRoundOffAsymmetry) {
   const Fixture f;
   const std::string k_mtx = WriteScratch("imp_roundoff.mtx",
@@ -152,7 +208,7 @@ TEST(ImportedMatrices, BadInputNamesFileAndEntity) {
       {"truncated", {truncated, f.m_hb, f.dof_map, f.geometry}, truncated + ":", "file ends early"},
       {"wrong banner", {banner, f.m_hb, f.dof_map, f.geometry}, banner + ":1: banner", "pattern matrices"},
       {"extension", {f.dof_map, f.m_hb, f.dof_map, f.geometry}, f.dof_map + ": K: ", "unknown matrix file type"},
-      {"no dof map", {f.k_hb, f.m_hb, "", f.geometry}, f.k_hb + ": stiffness: ", "a DOF map file is needed"},
+      {"no dof map", {f.k_hb, f.m_hb, "", f.geometry}, f.k_hb + ": K: ", "4 rows of the matrices are not 3 or 6 per node of the 3 nodes"},
   };
   for (const BadCase& c : cases)
     testing::ExpectContains(InputErrorOf([&] { ReadImportedMatrices(c.spec); }), {c.where, c.what}, c.name);
