@@ -89,9 +89,7 @@ int WrittenMaterial(const fe::ShellSection& s) {
 }
 template <>
 int WrittenMaterial(const fe::BeamSection& s) {
-  const bool offsets = s.neutral_axis[0] != 0.0 || s.neutral_axis[1] != 0.0 || s.nsm_offset[0] != 0.0 ||
-                       s.nsm_offset[1] != 0.0 || s.nsm_inertia != 0.0;
-  return offsets ? -1 : s.material;
+  return s.HasAxisOffsets() ? -1 : s.material;
 }
 
 // a section table: ids, material indices, then the columns

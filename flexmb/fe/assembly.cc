@@ -22,10 +22,8 @@ std::string Where(const Origin& o) {
   return " (" + o.file + (o.line > 0 ? ":" + std::to_string(o.line) : std::string()) + ")";
 }
 
-// an element that acts on its nodes' translations only: a rod, or a shell
-// of a membrane section (ShellLaminate::membrane_only)
-bool TranslationsOnly(const Mesh& mesh, const Element& e) {
-  if (Traits(e.type).translations_only) return true;
+// a membrane: a shell of a membrane section
+bool IsMembrane(const Mesh& mesh, const Element& e) {
   if (Traits(e.type).family != ElementFamily::kShell) return false;
   if (e.property < 0 || e.property >= static_cast<int>(mesh.shell_sections.size())) return false;
   const ShellSection& s = mesh.shell_sections[static_cast<size_t>(e.property)];
@@ -118,7 +116,9 @@ Resolved ResolveElement(const Mesh& mesh, const Element& e) {
   }
   if (r.shell != nullptr && r.shell->laminate && material < 0) return r;  // the plies carry the material
   if (material < 0 || material >= static_cast<int>(mesh.materials.size())) {
-    Fail(e.origin, name, "its section has no material");
+    Fail(e.origin, name,
+         "its section has no material (a mesh read back from a body file has none for laminated shells, "
+         "membranes and beams with PBEAM axis offsets: assemble the FE model itself)");
   }
   r.material = &mesh.materials[material];
   return r;
@@ -199,6 +199,10 @@ class FullMassAssembler {
 
 }  // namespace
 
+bool ActsOnTranslationsOnly(const Mesh& mesh, const Element& e) {
+  return Traits(e.type).translations_only || IsMembrane(mesh, e);
+}
+
 AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
   const int nn = static_cast<int>(mesh.nodes.size());
   const int ne = static_cast<int>(mesh.elements.size());
@@ -255,7 +259,7 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
   // active slots from elements and masses
   std::vector<uint8_t> active(nn, 0);
   for (const Element& e : mesh.elements) {
-    const uint8_t mask = DofsPerNode(e.type) == 6 && !TranslationsOnly(mesh, e) ? 0b111111 : 0b000111;
+    const uint8_t mask = DofsPerNode(e.type) == 6 && !ActsOnTranslationsOnly(mesh, e) ? 0b111111 : 0b000111;
     for (int n : e.nodes) active[n] |= mask;
   }
   for (size_t k = 0; k < mesh.point_masses.size(); ++k) {
@@ -486,9 +490,13 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
   for (int e = 0; e < ne; ++e) {
     const Element& el = mesh.elements[e];
     const int dpn = DofsPerNode(el.type);
-    // rods, membranes: rotational terms only where all rotations of all its nodes are active
-    bool rotations = true;
-    if (TranslationsOnly(mesh, el))
+    // rods: their torsion only where all rotations of all its nodes are
+    // active; membranes and shear panels: never (their rotational terms come
+    // only from the rigid offsets of warped corners, which must not depend
+    // on the neighbours)
+    const bool translations = ActsOnTranslationsOnly(mesh, el);
+    bool rotations = !(translations && Traits(el.type).family == ElementFamily::kShell);
+    if (translations)
       for (int n : el.nodes)
         for (int c = 3; c < 6; ++c) rotations = rotations && dm.full[n][c] >= 0;
     for (int n : el.nodes) {

@@ -68,6 +68,12 @@ struct AssemblyOptions {
 /// InputError naming the element or link at fault.
 AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options = {});
 
+/// True for an element that acts on its nodes' translations only: a rod
+/// (ElementTraits::translations_only) or a shell of a membrane section
+/// (ShellLaminate::membrane_only). Its nodes get rotational DOF only from
+/// other elements.
+bool ActsOnTranslationsOnly(const Mesh& mesh, const Element& e);
+
 /// Total mass [kg], centre of mass [m] and inertia about it [kg m^2] from
 /// the assembled (unconstrained) mass matrix and the node positions, via the
 /// six rigid-body modes: exact for consistent and lumped mass alike.

@@ -6,6 +6,7 @@
 #include "flexmb/fe/elements/beam2.h"
 #include "flexmb/fe/elements/beam3.h"
 #include "flexmb/fe/elements/rod2.h"
+#include "flexmb/fe/elements/shear4.h"
 #include "flexmb/fe/elements/shell_quad4.h"
 #include "flexmb/fe/elements/shell_quad8.h"
 #include "flexmb/fe/elements/shell_tria3.h"
@@ -43,6 +44,12 @@ void TraitsRod2Geometric(const ElementInput& in, const Eigen::VectorXd& u, MatX&
 }
 
 void TraitsHex8Matrices(const ElementInput& in, MatX& K, MatX& M) { SolidHex8Matrices(in, K, M); }
+void TraitsHex8FullMatrices(const ElementInput& in, MatX& K, MatX& M) {
+  SolidHex8Matrices(in, K, M, Hex8Formulation::kFullIntegration);
+}
+void TraitsHex8SelectiveMatrices(const ElementInput& in, MatX& K, MatX& M) {
+  SolidHex8Matrices(in, K, M, Hex8Formulation::kSelectiveReduced);
+}
 void TraitsWedge6Matrices(const ElementInput& in, MatX& K, MatX& M) { SolidWedge6Matrices(in, K, M); }
 void TraitsWedge15Matrices(const ElementInput& in, MatX& K, MatX& M) { SolidWedge15Matrices(in, K, M); }
 void TraitsHex20Matrices(const ElementInput& in, MatX& K, MatX& M) {
@@ -62,6 +69,7 @@ constexpr const char* kTraitsCtetra[] = {"CTETRA"};
 constexpr const char* kTraitsChexa[] = {"CHEXA"};
 constexpr const char* kTraitsCpenta[] = {"CPENTA"};
 constexpr const char* kTraitsCrod[] = {"CROD", "CONROD", "CTUBE"};
+constexpr const char* kTraitsCshear[] = {"CSHEAR"};
 
 // Abaqus names
 constexpr AbaqusName kTraitsS4[] = {
@@ -75,19 +83,21 @@ constexpr AbaqusName kTraitsB31[] = {{"B31"},
 constexpr AbaqusName kTraitsC3D4[] = {{"C3D4"}};
 constexpr AbaqusName kTraitsC3D10[] = {{"C3D10"}};
 constexpr const char* kTraitsOtherHexNote =
-    "read as flexmb's 8-node hexahedron with incompatible modes (like C3D8I); the formulation differs";
-constexpr AbaqusName kTraitsC3D8[] = {{"C3D8I"},
-                                      {"C3D8", AbaqusVariant::kOther, kTraitsOtherHexNote},
-                                      {"C3D8R", AbaqusVariant::kOther, kTraitsOtherHexNote}};
+    "read as flexmb's 8-node hexahedron with incompatible modes (like C3D8I): reduced integration with "
+    "hourglass control is not in flexmb, the formulation differs";
+constexpr AbaqusName kTraitsC3D8[] = {{"C3D8I"}, {"C3D8R", AbaqusVariant::kOther, kTraitsOtherHexNote}};
+// C3D8 means plain full integration in CalculiX and selectively reduced
+// integration in Abaqus: the reader picks the row by the deck's author
+// (abaqus_mesh.cc, docs/formats.md); this row is CalculiX's
+constexpr AbaqusName kTraitsC3D8Full[] = {{"C3D8"}};
 constexpr AbaqusName kTraitsC3D6[] = {{"C3D6"}};
 constexpr AbaqusName kTraitsC3D15[] = {{"C3D15"}};
 constexpr AbaqusName kTraitsC3D20[] = {{"C3D20"}};
 constexpr AbaqusName kTraitsC3D20R[] = {{"C3D20R"}};
 constexpr AbaqusName kTraitsT3D2[] = {{"T3D2"}};
 constexpr AbaqusName kTraitsB32[] = {{"B32"}, {"B32R"}, {"B32H"}};
-constexpr AbaqusName kTraitsS8[] = {
-    {"S8R"}, {"S8"}, {"S8R5"}, {"M3D8", AbaqusVariant::kMembrane}, {"M3D8R", AbaqusVariant::kMembrane}};
-constexpr AbaqusName kTraitsS6[] = {{"STRI65"}, {"S6"}, {"M3D6", AbaqusVariant::kMembrane}};
+constexpr AbaqusName kTraitsS8[] = {{"S8R"}, {"S8"}, {"S8R5"}};
+constexpr AbaqusName kTraitsS6[] = {{"STRI65"}, {"S6"}};
 
 // Abaqus faces (element-based surfaces); a shell's both sides are all its nodes
 constexpr AbaqusFace kTraitsQuadFaces[] = {
@@ -374,6 +384,46 @@ constexpr ElementTraits kTraitsRows[] = {
      .matrices = ShellTria6Matrices,
      .stress = ShellTria6Stress,
      .geometric_stiffness = TraitsGeometric<ShellTria6GeometricStiffness>},
+    {.type = kShear4,
+     .name = "shear4",
+     .description = "4-node shear panel",
+     .nodes = 4,
+     .corners = 4,
+     .family = ElementFamily::kShell,
+     .nastran_cards = kTraitsCshear,
+     .vtk_code = 9,
+     .body_file_code = 14,
+     .matrices = Shear4Matrices,
+     .stress = Shear4Stress,
+     .geometric_stiffness = TraitsGeometric<Shear4GeometricStiffness>,
+     .translations_only = true},
+    {.type = kHex8Full,
+     .name = "hex8f",
+     .description = "8-node hexahedron, full integration",
+     .nodes = 8,
+     .corners = 8,
+     .family = ElementFamily::kSolid,
+     .abaqus = kTraitsC3D8Full,
+     .abaqus_faces = kTraitsHexFaces,
+     .vtk_code = 12,
+     .body_file_code = 15,
+     .matrices = TraitsHex8FullMatrices,
+     .stress = TraitsSolidStress<SolidHex8Stress>,
+     .corner_stress = SolidHex8CornerStress,
+     .geometric_stiffness = TraitsGeometric<SolidHex8GeometricStiffness>},
+    {.type = kHex8Selective,
+     .name = "hex8s",
+     .description = "8-node hexahedron, selectively reduced integration",
+     .nodes = 8,
+     .corners = 8,
+     .family = ElementFamily::kSolid,
+     .abaqus_faces = kTraitsHexFaces,
+     .vtk_code = 12,
+     .body_file_code = 16,
+     .matrices = TraitsHex8SelectiveMatrices,
+     .stress = TraitsSolidStress<SolidHex8Stress>,
+     .corner_stress = SolidHex8CornerStress,
+     .geometric_stiffness = TraitsGeometric<SolidHex8GeometricStiffness>},
 };
 
 constexpr bool TraitsRowsInIdOrder() {

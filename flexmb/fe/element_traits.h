@@ -33,7 +33,7 @@ enum class AbaqusVariant {
   kSame,            ///< the same element
   kEulerBernoulli,  ///< a beam without shear flexibility (B33): sections get ky = kz = 0
   kOther,           ///< another formulation, read as this one with a warning (`note`)
-  kMembrane,        ///< a membrane (M3D4): this shell under a *MEMBRANE SECTION, no bending
+  kMembrane,        ///< a membrane (M3D4, M3D3): this shell under a *MEMBRANE SECTION, no bending
 };
 
 /// An Abaqus/CalculiX element name read as a flexmb type.

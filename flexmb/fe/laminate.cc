@@ -61,6 +61,19 @@ ShellLaminate StackPlies(const std::vector<LaminatePly>& plies, double z0) {
   return l;
 }
 
+ShellLaminate MembraneLaminate(const Eigen::Matrix3d& q, double rho, double t, const std::string& card) {
+  ShellLaminate l;
+  l.A = q * t;
+  l.mass = rho * t;
+  l.thickness = t;
+  l.z_bottom = -0.5 * t;
+  l.z_top = 0.5 * t;
+  l.q_bottom = l.q_top = q;
+  l.card = card;
+  l.membrane_only = true;
+  return l;
+}
+
 ShellLaminate InElementAxes(const ShellLaminate& l, double theta) {
   ShellLaminate r = l;
   r.A = RotatePlaneStress(l.A, theta);

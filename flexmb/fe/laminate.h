@@ -71,6 +71,11 @@ Eigen::Matrix2d RotateShear(const Eigen::Matrix2d& s, double theta);
 /// stiffness in laminate axes; S = 5/6 sum t_k [g13, g23] rotated.
 ShellLaminate StackPlies(const std::vector<LaminatePly>& plies, double z0);
 
+/// A membrane (ShellLaminate::membrane_only) of plane-stress stiffness `q`
+/// [Pa], density `rho` [kg/m^3] and thickness `t` [m]: A = q t, mass rho t,
+/// nothing else; `card` names its source for messages.
+ShellLaminate MembraneLaminate(const Eigen::Matrix3d& q, double rho, double t, const std::string& card);
+
 /// The laminate `l` in axes whose x axis is at angle -`theta` from the
 /// laminate's material axis, i.e. the material axis at `theta` from the new
 /// x: every stiffness rotated by RotatePlaneStress / RotateShear.

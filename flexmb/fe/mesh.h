@@ -63,7 +63,7 @@ enum class ElementType {
   kBeam2,   ///< 2-node Timoshenko beam (CBAR, CBEAM, B31), 6 DOF per node
   kTet4,    ///< 4-node tetrahedron (CTETRA, C3D4), 3 DOF per node
   kTet10,   ///< 10-node tetrahedron (CTETRA, C3D10), 3 DOF per node
-  kHex8,    ///< 8-node hexahedron (CHEXA, C3D8), 3 DOF per node
+  kHex8,    ///< 8-node hexahedron with incompatible modes (CHEXA, C3D8I), 3 DOF per node
 };
 
 /// Number of nodes of an element type.
@@ -80,7 +80,8 @@ struct ShellSection {
   double thickness = 0.0;     ///< [m]
   double nsm = 0.0;           ///< non-structural mass per area [kg/m^2]
   /// A laminated or generalized section (PCOMP, PCOMPG; a PSHELL with a
-  /// bending ratio or its own shear stiffness): the equivalent single layer
+  /// bending ratio, its own shear stiffness or a MID4 coupling; a membrane:
+  /// a PSHELL without MID2, an Abaqus *MEMBRANE SECTION): the equivalent single layer
   /// in the section's material axes, used instead of `material` (-1 for
   /// plies) and `thickness` (the total); null for a plain shell.
   std::shared_ptr<const ShellLaminate> laminate;
@@ -109,8 +110,15 @@ struct BeamSection {
   /// Polar moment of inertia of the non-structural mass about its centre,
   /// per length [kg m] (PBEAM NSI).
   double nsm_inertia = 0.0;
+  /// True if the neutral axis or the non-structural mass lies off the beam
+  /// axis, or the non-structural mass has an inertia of its own.
+  bool HasAxisOffsets() const {
+    return neutral_axis[0] != 0.0 || neutral_axis[1] != 0.0 || nsm_offset[0] != 0.0 || nsm_offset[1] != 0.0 ||
+           nsm_inertia != 0.0;
+  }
   /// Stress recovery points of the section, (y, z) in the element frame
-  /// from the centroid [m]: Nastran's C, D, E, F of PBAR/PBEAM, the corners
+  /// from the beam axis [m] (the centroid, unless `neutral_axis` is set:
+  /// then the shear centre, as PBEAM gives them): Nastran's C, D, E, F of PBAR/PBEAM, the corners
   /// of a library shape (PBARL, Abaqus *BEAM SECTION), points on the outer
   /// circle of round shapes; empty when the source gives none. The normal
   /// stress of bending is largest at one of them (reduction/stress_modes.h).

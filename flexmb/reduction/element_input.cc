@@ -43,7 +43,9 @@ fe::ElementInput ResolveElementInput(const fe::Mesh& mesh, const fe::Element& e,
   }
   if (in.shell != nullptr && in.shell->laminate && material < 0) return in;  // the plies carry the material
   if (material < 0 || material >= static_cast<int>(mesh.materials.size()))
-    throw InputError("its section has no material", ctx);
+    throw InputError("its section has no material (a mesh read back from a body file has none for laminated "
+                     "shells, membranes and beams with PBEAM axis offsets: assemble the FE model itself)",
+                     ctx);
   in.material = &mesh.materials[material];
   return in;
 }

@@ -118,7 +118,8 @@ struct StressModes {
   /// 2-node beams. Locations "end_a", "end_b". Components "N", "Vy", "Vz",
   /// "T", "My", "Mz": section forces in the element frame (x from end A to
   /// end B; fe/elements/beam2.h), resultants on the cut face with outward
-  /// normal +x, N > 0 in tension.
+  /// normal +x, N > 0 in tension; the moments about the beam axis (the
+  /// shear centre's line where a PBEAM gives a neutral axis off it).
   StressTable beam;
   /// 2-node beams whose section has stress recovery points
   /// (fe::BeamSection::stress_points): the normal stress of the axial force

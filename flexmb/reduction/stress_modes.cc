@@ -99,7 +99,9 @@ std::array<double, 3> NormalStressWeights(const fe::BeamSection& s, double y, do
 
 // the beam_fibre table from the section forces of the beam table (see
 // StressModes::beam_fibre): sigma = N / A + (z Iz - y Iyz) My / det +
-// (z Iyz - y Iy) Mz / det, det = Iy Iz - Iyz^2 (BeamNormalStress)
+// (z Iyz - y Iy) Mz / det, det = Iy Iz - Iyz^2, with (y, z) and the moments
+// taken about the neutral axis where it lies off the beam axis
+// (NormalStressWeights, BeamNormalStress)
 StressTable BeamFibreTable(const fe::Mesh& mesh, const StressTable& beam) {
   size_t most = 0;
   std::vector<int> with;  // positions in the beam table of beams with points

@@ -153,7 +153,7 @@ TEST(FeCalculixMatrices, ImportedHexModelMatchesCcxAndFlexmbFullIntegrationHex8)
   const fe::Mesh mesh = io::ReadAbaqus((run.dir.path / "mat.inp").string());
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n), M = Eigen::MatrixXd::Zero(n, n);
   for (const fe::Element& e : mesh.elements) {
-    ASSERT_EQ(e.type, fe::ElementType::kHex8);
+    ASSERT_EQ(e.type, fe::kHex8Full);  // C3D8 of a deck not written by Abaqus/CAE: CalculiX's
     std::vector<fe::Vec3> x;
     std::vector<int> rows;
     for (int node : e.nodes) {

@@ -255,6 +255,20 @@ TEST(LaminatedPlate, PshellWithMid4EqualsTheUnsymmetricLaminate) {
     << "MAT2,4," << b11 << ",0.,0.," << -b11 << ",0.,0.\n"
     << "MAT1,3," << 2 * kG * 1.3 << "," << kG << "\n";
   const std::string pcomp = "PCOMP,1\n,10,0.005,0.,,10,0.005,90.\n";
+  // the assembled stiffness, entry by entry: the frequencies cannot see the
+  // sign of B (B -> -B mirrors the plate through its thickness), K can
+  auto stiffness = [](const std::string& deck, const std::string& name) {
+    const std::filesystem::path p = std::filesystem::temp_directory_path() /
+                                    ("flexmb_laminate_" + std::to_string(getpid()) + "_" + name + ".bdf");
+    std::ofstream(p) << deck;
+    const Mesh m = io::ReadNastran(p.string());
+    std::filesystem::remove(p);
+    return Eigen::MatrixXd(Assemble(m).K);
+  };
+  const Eigen::MatrixXd k_pcomp = stiffness(PlateDeck(4, "", pcomp, true), "kl"),
+                        k_pshell = stiffness(PlateDeck(4, "", p.str(), true), "km");
+  ASSERT_EQ(k_pcomp.rows(), k_pshell.rows());
+  EXPECT_LT((k_pcomp - k_pshell).cwiseAbs().maxCoeff(), 1e-9 * k_pcomp.cwiseAbs().maxCoeff());
   const std::vector<double> laminate = DeckFrequencies(PlateDeck(10, "", pcomp, true), "l", 6);
   const std::vector<double> pshell = DeckFrequencies(PlateDeck(10, "", p.str(), true), "m", 6);
   for (size_t m = 0; m < 6; ++m) {

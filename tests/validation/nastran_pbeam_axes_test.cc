@@ -62,10 +62,11 @@ std::string Cantilever(int n, const std::string& pbeam, const std::string& cbeam
 }
 
 // end A only, then the footer: NSI(A), M1(A) M2(A), N1(A) N2(A)
-std::string Pbeam(double n2, double nsm = 0.0, double m1 = 0.0, double m2 = 0.0, double nsi = 0.0) {
+std::string Pbeam(double n2, double nsm = 0.0, double m1 = 0.0, double m2 = 0.0, double nsi = 0.0, double n1 = 0.0) {
   char b[400];
-  std::snprintf(b, sizeof b, "PBEAM,1,1,%.17g,%.17g,%.17g,,%.17g,%.17g\n,,,,,,,,\n,,,,,%.17g\n,%.17g,%.17g,,,0.,%.17g\n",
-                kA, kIz, kIy, kJ, nsm, nsi, m1, m2, n2);
+  std::snprintf(b, sizeof b,
+                "PBEAM,1,1,%.17g,%.17g,%.17g,,%.17g,%.17g\n,,,,,,,,\n,,,,,%.17g\n,%.17g,%.17g,,,%.17g,%.17g\n", kA,
+                kIz, kIy, kJ, nsm, nsi, m1, m2, n1, n2);
   return b;
 }
 
@@ -92,6 +93,17 @@ TEST(PbeamAxes, AxialForceOnTheShearCentreBendsAboutTheNeutralAxis) {
     Mesh plain_fixed = plain;
     testing::AddConstraint(plain_fixed, 0, 0b111111);
     EXPECT_NEAR(SolveStatic(plain_fixed, f)(6 * n + 2), 0.0, 1e-12);
+    // the neutral axis ey beside the axis (N1): the same in the x-y plane,
+    // v = ey P L^2 / (2 E Iz) towards +y, rz = +v', and no w
+    const double ey = -0.03;
+    Mesh side = Read(Cantilever(n, Pbeam(0.0, 0.0, 0.0, 0.0, 0.0, ey)), "side");
+    testing::AddConstraint(side, 0, 0b111111);
+    const Eigen::VectorXd us = SolveStatic(side, f);
+    const double v_exact = ey * p * kL * kL / (2 * kE * kIz), rz_exact = ey * p * kL / (kE * kIz);
+    EXPECT_NEAR(us(6 * n + 1), v_exact, 1e-9 * std::abs(v_exact));
+    EXPECT_NEAR(us(6 * n + 5), rz_exact, 1e-9 * std::abs(rz_exact));
+    EXPECT_NEAR(us(6 * n), p * kL / (kE * kA) + ey * ey * p * kL / (kE * kIz), 1e-9 * u_exact);
+    EXPECT_NEAR(us(6 * n + 2), 0.0, 1e-12);
   }
 }
 

@@ -171,7 +171,7 @@ void Beam2Matrices(const ElementInput& in, MatX& K, MatX& M) {
   ms(5, 5) = mat.rho * sec.Iz;
   ms(4, 5) = ms(5, 4) = -mat.rho * sec.Iyz;
   const Vec3 e_na(0.0, sec.neutral_axis[0], sec.neutral_axis[1]), e_nsm(0.0, sec.nsm_offset[0], sec.nsm_offset[1]);
-  const bool offsets = !e_na.isZero(0.0) || !e_nsm.isZero(0.0);
+  const bool offsets = sec.HasAxisOffsets();
   if (offsets) {
     auto moved = [](const Vec3& e, double m) {  // translational mass m at e, about the axis
       Mat6 h = Mat6::Identity();
@@ -229,6 +229,12 @@ void Beam2SectionForces(const ElementInput& in, MatX& S, Eigen::Matrix3d& axes) 
 
 void Beam2GeometricStiffness(const ElementInput& in, double N, MatX& KG) {
   const BeamLocal b = Setup(in);
+  // the Wagner term and the couplings of a neutral axis off the shear
+  // centre are not in this geometric stiffness
+  if (b.sec->neutral_axis[0] != 0.0 || b.sec->neutral_axis[1] != 0.0)
+    throw InputError("the geometric stiffness of a beam whose neutral axis lies off its axis (PBEAM N1, N2) is not "
+                     "supported",
+                     ElementContext(*in.element));
   const double L = b.L;
   // bending in one plane, dofs (v_a, v'_a, v_b, v'_b)
   Eigen::Matrix4d kb;

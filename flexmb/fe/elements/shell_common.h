@@ -98,6 +98,15 @@ struct LocalFrame {
   Eigen::Matrix<double, 3, N> d;
 };
 
+/// The local frame of a 4-node element (shell, shear panel): e3 along (x3 -
+/// x1) x (x4 - x2), e1 the edge from node 1 to node 2 projected on the mean
+/// plane through the centroid, the nodes projected on that plane, and d the
+/// vector to each node's mid-surface point at `offset` along e3. Throws
+/// InputError naming the element for coincident nodes, zero area, a corner
+/// farther than kMaxWarpRatio sqrt(area) off the mean plane, or a
+/// non-convex or negatively ordered quad.
+LocalFrame<4> QuadFrame(const ElementInput& in, double offset);
+
 /// Plane-stress membrane stiffness A = E t / (1 - nu^2) [...] [N/m]
 /// (a laminate: its A).
 Eigen::Matrix3d MembraneMatrix(const ShellData& s);

@@ -20,7 +20,13 @@ struct MacroPoints {
 };
 
 MacroPoints Points(const ElementInput& in, const MacroLayout& layout) {
-  CheckElementNodes(in, layout.nodes, "shell");
+  const Element& e = CheckElementNodes(in, layout.nodes, "shell");
+  // the centre points of a membrane have no normal or rotational stiffness
+  // to condense: second-order membranes are refused
+  if (in.shell != nullptr && in.shell->laminate && in.shell->laminate->membrane_only)
+    throw InputError("a second-order membrane (" + in.shell->laminate->card +
+                         " has no bending material) is not supported: mesh the membrane with 4- or 3-node elements",
+                     ElementContext(e));
   const int n = layout.nodes;
   MacroPoints p;
   p.x.assign(in.x, in.x + n);

@@ -25,42 +25,7 @@ void Shape(double xi, double eta, Eigen::Vector4d& n, Mat2x4& dn) {
 }
 
 // mean-plane frame, projected coordinates and rigid offsets of the nodes
-shell::LocalFrame<4> Frame(const ElementInput& in, const shell::ShellData& s) {
-  const ErrorContext ctx = ElementContext(*in.element);
-  const Vec3* x = in.x;
-  const double max_edge = shell::LongestEdge(x, 4, ctx);
-  const Vec3 c = 0.25 * (x[0] + x[1] + x[2] + x[3]);
-  const Vec3 n_raw = (x[2] - x[0]).cross(x[3] - x[1]);
-  const double area = 0.5 * n_raw.norm();
-  if (!(area > 1e-10 * max_edge * max_edge)) throw InputError("zero area", ctx);
-  const Vec3 e3 = n_raw.normalized();
-  const Vec3 e1 = ((x[1] - x[0]) - e3 * e3.dot(x[1] - x[0])).normalized();
-  const Vec3 e2 = e3.cross(e1);
-  shell::LocalFrame<4> f;
-  f.R = shell::FrameAxes(e1, e3);
-  double warp = 0.0;
-  for (int i = 0; i < 4; ++i) {
-    const Vec3 r = x[i] - c;
-    const double h = e3.dot(r);
-    warp = std::max(warp, std::abs(h));
-    f.xy(i, 0) = e1.dot(r);
-    f.xy(i, 1) = e2.dot(r);
-    f.d.col(i) = (s.offset - h) * e3;
-  }
-  if (warp > shell::kMaxWarpRatio * std::sqrt(area))
-    throw InputError("badly warped quad: corner " + std::to_string(warp) +
-                         " off the mean plane, limit " + std::to_string(shell::kMaxWarpRatio) +
-                         " * sqrt(area)",
-                     ctx);
-  // convex, positively ordered: every corner turns the same way
-  for (int i = 0; i < 4; ++i) {
-    const Eigen::Vector2d a = f.xy.row((i + 1) % 4) - f.xy.row(i);
-    const Eigen::Vector2d b = f.xy.row((i + 3) % 4) - f.xy.row(i);
-    if (!(a.x() * b.y() - a.y() * b.x() > 1e-6 * area))
-      throw InputError("non-convex or degenerate quad at its node " + std::to_string(i + 1), ctx);
-  }
-  return f;
-}
+shell::LocalFrame<4> Frame(const ElementInput& in, const shell::ShellData& s) { return shell::QuadFrame(in, s.offset); }
 
 }  // namespace
 

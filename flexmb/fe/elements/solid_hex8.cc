@@ -40,6 +40,28 @@ void SolidHex8Matrices(const ElementInput& in, MatX& K, MatX& M, Hex8Formulation
   Mat24 k = Mat24::Zero();
   if (formulation == Hex8Formulation::kFullIntegration) {
     solid::AddStiffness<8>(g2, 8, Hex8Shape, in.x, s, e, k);
+  } else if (formulation == Hex8Formulation::kSelectiveReduced) {
+    // the mean of the shape functions' gradients: the mean dilatation
+    Eigen::Matrix<double, 3, 8> mean = Eigen::Matrix<double, 3, 8>::Zero();
+    double volume = 0.0;
+    for (const solid::QuadPoint& p : g2) {
+      Hex8Shape(p, n, dn);
+      const double det = solid::CartesianDerivatives<8>(dn, in.x, s, e, dx);
+      mean += dx * (det * p.w);
+      volume += det * p.w;
+    }
+    mean /= volume;
+    const Eigen::Matrix<double, 6, 6> d = solid::ElasticityMatrix(s);
+    for (const solid::QuadPoint& p : g2) {
+      Hex8Shape(p, n, dn);
+      const double det = solid::CartesianDerivatives<8>(dn, in.x, s, e, dx);
+      Eigen::Matrix<double, 6, 24> b = solid::StrainMatrix<8>(dx);
+      // normal strains: eps_ii + (mean dilatation - dilatation) / 3
+      for (int a = 0; a < 8; ++a)
+        for (int j = 0; j < 3; ++j)
+          for (int i = 0; i < 3; ++i) b(i, 3 * a + j) += (mean(j, a) - dx(j, a)) / 3.0;
+      k += b.transpose() * d * b * (det * p.w);
+    }
   } else {
     // centre Jacobian for Taylor's correction
     Hex8Shape({0.0, 0.0, 0.0, 0.0}, n, dn);

@@ -20,9 +20,24 @@ enum class Hex8Formulation {
   /// the centre Jacobian J0, scaled by det J0 / det J) so that the patch test
   /// passes on distorted elements; the modes are condensed out (C3D8I-like).
   kIncompatibleModes,
-  /// Plain full 2x2x2 integration (C3D8-like); locks in bending.
+  /// Plain full 2x2x2 integration (CalculiX's C3D8); locks in bending.
   kFullIntegration,
+  /// Selectively reduced integration (Abaqus's C3D8): 2x2x2 points with the
+  /// volumetric strain replaced by its mean over the element (Hughes's
+  /// B-bar, mean dilatation).
+  kSelectiveReduced,
 };
+
+/// Type id of the 8-node hexahedron with plain full integration (Abaqus
+/// C3D8; its row: fe/element_traits.cc). The default row, ElementType::kHex8,
+/// has the incompatible modes (Nastran CHEXA, Abaqus C3D8I).
+inline constexpr ElementType kHex8Full{15};
+
+/// Type id of the 8-node hexahedron with selectively reduced integration
+/// (Abaqus's C3D8, read from decks written by Abaqus/CAE; its row:
+/// fe/element_traits.cc). It has no Abaqus name of its own: the writer
+/// writes it as C3D8 under an Abaqus/CAE header line.
+inline constexpr ElementType kHex8Selective{16};
 
 /// Fills K [N/m] and M [kg] (24 x 24, basic frame, node by node ux uy uz) of
 /// an 8-node hexahedron; consistent mass by 3x3x3 Gauss (exact for any

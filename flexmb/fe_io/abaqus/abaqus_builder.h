@@ -68,7 +68,9 @@ struct SurfaceFace {
 class Builder {
  public:
   /// `path` becomes mesh.source.
-  explicit Builder(const std::string& path) { mesh_.source = path; }
+  /// `abaqus_cae`: the deck was written by Abaqus/CAE, so its C3D8 are
+  /// Abaqus's (selectively reduced integration), not CalculiX's.
+  Builder(const std::string& path, bool abaqus_cae) : abaqus_cae_(abaqus_cae) { mesh_.source = path; }
 
   /// Interprets `cards` (sub-options get their parent set) in the order
   /// nodes, elements, sets, materials, sections, constraints; throws
@@ -77,6 +79,7 @@ class Builder {
 
  private:
   fe::Mesh mesh_;
+  bool abaqus_cae_ = false;
   std::map<int, fe::Origin> node_origin_;           // id -> first definition
   std::map<int, fe::Origin> element_origin_;        // id -> first definition
   std::map<int, ElementRecord> elements_;           // id -> record

@@ -4,7 +4,9 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <set>
+#include <string>
 
 #include "flexmb/common/error.h"
 #include "flexmb/fe_io/text_scanner.h"
@@ -183,6 +185,14 @@ std::vector<Card> ReadCards(const std::string& path) {
   DeckLexer lexer;
   lexer.ReadFile(path, 0, nullptr);
   return std::move(lexer.cards);
+}
+
+bool WrittenByAbaqusCae(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  for (int k = 0; k < 200 && std::getline(in, line); ++k)
+    if (line.rfind("**", 0) == 0 && Upper(line).find("ABAQUS/CAE") != std::string::npos) return true;
+  return false;
 }
 
 [[noreturn]] void Fail(const Origin& o, const std::string& entity, const std::string& message) {

@@ -219,7 +219,7 @@ void Builder::Finish() {
 
 fe::Mesh ReadAbaqus(const std::string& path) {
   std::vector<abaqus::Card> cards = abaqus::ReadCards(path);
-  abaqus::Builder b(path);
+  abaqus::Builder b(path, abaqus::WrittenByAbaqusCae(path));
   return b.Build(cards);
 }
 

@@ -232,8 +232,8 @@ void Builder::ShellSection(const Card& c) {
     if (r.kind != Kind::kStructural || !IsShell(mesh_.elements[r.index].type) || membrane_[r.index] == membrane)
       continue;
     Fail(c.origin, entity,
-         ElementName(id) + (membrane ? " is a shell, not a membrane element (M3D3, M3D4, M3D4R, M3D6, M3D8, "
-                                       "M3D8R): give it a *SHELL SECTION"
+         ElementName(id) + (membrane ? " is a shell, not a membrane element (M3D3, M3D4, M3D4R): give it a "
+                                       "*SHELL SECTION"
                                      : " is a membrane element: give it a *MEMBRANE SECTION"));
   }
   fe::ShellSection s;
@@ -259,16 +259,8 @@ void Builder::ShellSection(const Card& c) {
   if (membrane) {
     if (offset != 0.0) Fail(c.origin, entity, "OFFSET must be 0 (a membrane has no bending to offset)");
     const fe::Material& m = mesh_.materials[s.material];
-    auto l = std::make_shared<fe::ShellLaminate>();
-    l->A = fe::IsotropicPlaneStress(m.E, m.nu) * s.thickness;
-    l->mass = m.rho * s.thickness;
-    l->thickness = s.thickness;
-    l->z_bottom = -0.5 * s.thickness;
-    l->z_top = 0.5 * s.thickness;
-    l->q_bottom = l->q_top = fe::IsotropicPlaneStress(m.E, m.nu);
-    l->card = "*MEMBRANE SECTION at " + At(c.origin);
-    l->membrane_only = true;
-    s.laminate = std::move(l);
+    s.laminate = std::make_shared<fe::ShellLaminate>(fe::MembraneLaminate(
+        fe::IsotropicPlaneStress(m.E, m.nu), m.rho, s.thickness, "*MEMBRANE SECTION at " + At(c.origin)));
   }
   int index = 0;
   for (; index < static_cast<int>(mesh_.shell_sections.size()); ++index) {

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "flexmb/common/log.h"
+#include "flexmb/fe/assembly.h"
 #include "flexmb/fe/face_projection.h"
 #include "flexmb/fe/linear_constraint.h"
 #include "flexmb/fe_io/abaqus/abaqus_builder.h"
@@ -143,10 +144,11 @@ void Builder::Tie(const Card& c) {
   if (tol < 0.0) Fail(c.origin, entity, "POSITION TOLERANCE must not be negative");
   if (tol < 1e-10) tol = 0.025 * TieTypicalSize(mesh_, faces);  // CalculiX's default
 
-  // which nodes carry rotations (used by a shell or beam element)
+  // which nodes carry rotations (used by a shell or beam element that acts
+  // on rotations: not a truss or a membrane)
   std::vector<bool> rotational(mesh_.nodes.size(), false);
   for (const fe::Element& e : mesh_.elements)
-    if (fe::Traits(e.type).DofsPerNode() == 6)
+    if (fe::Traits(e.type).DofsPerNode() == 6 && !fe::ActsOnTranslationsOnly(mesh_, e))
       for (int n : e.nodes) rotational[n] = true;
   std::set<int> master_nodes;
   for (const SurfaceFace& f : faces) master_nodes.insert(f.nodes.begin(), f.nodes.end());

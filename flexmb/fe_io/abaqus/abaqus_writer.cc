@@ -13,6 +13,7 @@
 #include "flexmb/common/error.h"
 #include "flexmb/common/log.h"
 #include "flexmb/fe/element_traits.h"
+#include "flexmb/fe/elements/solid_hex8.h"
 #include "flexmb/fe_io/abaqus/abaqus_deck.h"
 #include "flexmb/fe_io/text_scanner.h"
 
@@ -68,12 +69,24 @@ const char* AbaqusType(const fe::Mesh& mesh, const fe::Element& e) {
       for (const fe::AbaqusName& a : t.abaqus)
         if (a.variant == fe::AbaqusVariant::kEulerBernoulli) return a.name;
   }
+  if (e.type == fe::kHex8Selective) return "C3D8";  // Abaqus's C3D8, under the Abaqus/CAE line
   return t.abaqus.empty() ? "?" : t.abaqus.front().name;
 }
 
 // checks the mesh before anything is written, so that nothing half-written
 // is left for a bad mesh; returns the material names for the deck
 std::vector<std::string> CheckWritable(const fe::Mesh& mesh) {
+  // C3D8 means Abaqus's or CalculiX's element by the deck's header line:
+  // one deck cannot carry both
+  bool calculix_c3d8 = false, abaqus_c3d8 = false;
+  for (const fe::Element& e : mesh.elements) {
+    calculix_c3d8 = calculix_c3d8 || e.type == fe::kHex8Full;
+    abaqus_c3d8 = abaqus_c3d8 || e.type == fe::kHex8Selective;
+  }
+  if (calculix_c3d8 && abaqus_c3d8)
+    throw InputError("the mesh has both CalculiX's C3D8 (plain integration) and Abaqus's (selectively reduced): one "
+                     "Abaqus deck cannot carry both",
+                     {mesh.source, 0, "FE model"});
   const int nn = static_cast<int>(mesh.nodes.size());
   auto element_entity = [](const fe::Element& e) {
     return std::string(fe::TypeName(e.type)) + " element " + std::to_string(e.id);
@@ -84,6 +97,9 @@ std::vector<std::string> CheckWritable(const fe::Mesh& mesh) {
       if (n < 0 || n >= nn) throw InputError("refers to a node that does not exist", {e.origin.file, e.origin.line, element_entity(e)});
     if (static_cast<int>(e.nodes.size()) != fe::NodeCount(e.type))
       throw InputError("wrong number of nodes", {e.origin.file, e.origin.line, element_entity(e)});
+    if (fe::Traits(e.type).abaqus.empty() && e.type != fe::kHex8Selective)
+      throw InputError(std::string("a ") + fe::Traits(e.type).description + " has no Abaqus element to be written as",
+                       {e.origin.file, e.origin.line, element_entity(e)});
     int material = -1;
     if (IsShell(e.type)) {
       if (e.property < 0 || e.property >= static_cast<int>(mesh.shell_sections.size()))
@@ -101,9 +117,9 @@ std::vector<std::string> CheckWritable(const fe::Mesh& mesh) {
       const fe::BeamSection& s = mesh.beam_sections[e.property];
       const std::string se = "beam section " + std::to_string(s.id);
       if (s.nsm != 0.0) throw InputError("non-structural mass cannot be written to an Abaqus deck", {s.origin.file, s.origin.line, se});
-      if (s.neutral_axis[0] != 0.0 || s.neutral_axis[1] != 0.0 || s.nsm_inertia != 0.0)
-        throw InputError("a neutral axis off the beam axis or a non-structural mass inertia cannot be written to an "
-                         "Abaqus deck",
+      if (s.HasAxisOffsets())
+        throw InputError("a neutral axis or a non-structural mass off the beam axis (PBEAM N, M, NSI) cannot be "
+                         "written to an Abaqus deck",
                          {s.origin.file, s.origin.line, se});
       if ((s.ky == 0.0) != (s.kz == 0.0))
         throw InputError("shear factors with one of ky, kz zero cannot be written", {s.origin.file, s.origin.line, se});
@@ -180,6 +196,11 @@ void WriteAbaqus(const fe::Mesh& mesh, const std::string& path) {
   std::FILE* f = std::fopen(path.c_str(), "w");
   if (f == nullptr) throw InputError("cannot open for writing", {path, 0, ""});
   std::fprintf(f, "** written by flexmb from %s\n", mesh.source.empty() ? "a mesh built in memory" : mesh.source.c_str());
+  // Abaqus's C3D8 (selectively reduced): the reader takes C3D8 as Abaqus's
+  // under this line (WrittenByAbaqusCae), as CalculiX's without it
+  if (std::any_of(mesh.elements.begin(), mesh.elements.end(),
+                  [](const fe::Element& e) { return e.type == fe::kHex8Selective; }))
+    std::fprintf(f, "** C3D8 as in decks written by Abaqus/CAE: Abaqus's selectively reduced hexahedron\n");
   std::fprintf(f, "*NODE\n");
   for (const fe::Node& n : mesh.nodes)
     std::fprintf(f, "%d, %s, %s, %s\n", n.id, Num(n.x.x()).c_str(), Num(n.x.y()).c_str(), Num(n.x.z()).c_str());

@@ -181,6 +181,8 @@ class Builder {
   fe::Element NewElement(const Entry& e, fe::ElementType type);
   void ReadNodes(const Entry& e, fe::Element& el, int first, int count);
   void AddShell(const Entry& e);
+  void AddShear(const Entry& e);
+  int AddPshear(const Entry& e, int pid);
   void AddSolid(const Entry& e);
   void AddBeam(const Entry& e);
   fe::Vec3 Offset(const Entry& e, char how, const fe::Vec3& w, int node, const fe::Vec3& xa, const fe::Vec3& xb,

@@ -95,6 +95,26 @@ void Builder::AddShell(const Entry& e) {
   mesh_.elements.push_back(std::move(el));
 }
 
+// CSHEAR EID PID G1 G2 G3 G4 on a PSHEAR (fe/elements/shear4.h); a panel
+// that is not a parallelogram gets one warning: flexmb's panel is exact
+// for parallelograms, Nastran's formulation differs for other shapes
+void Builder::AddShear(const Entry& e) {
+  fe::Element el = NewElement(e, NastranRows(e.name()).front()->type);
+  el.property = PropertyIndex(e, 2, e.Int(2, "PID", el.id), {"PSHEAR"});
+  ReadNodes(e, el, 3, 4);
+  if (e.Size() > 7) e.Fail(7, "unexpected field");
+  const Vec3 &a = mesh_.nodes[el.nodes[0]].x, &b = mesh_.nodes[el.nodes[1]].x, &c = mesh_.nodes[el.nodes[2]].x,
+             &d = mesh_.nodes[el.nodes[3]].x;
+  const double size = std::max((c - a).norm(), (d - b).norm());
+  if ((a - b + c - d).norm() > 1e-3 * size)
+    Warn(e,
+         "CSHEAR panels that are not parallelograms are read with flexmb's shear panel (uniform shear along the "
+         "mean directions of the edge pairs, exact for parallelograms); Nastran's formulation differs for such "
+         "shapes",
+         "CSHEAR shape");
+  mesh_.elements.push_back(std::move(el));
+}
+
 // a solid card is the row whose node count it gives; its grid points in the
 // row's Nastran order
 void Builder::AddSolid(const Entry& e) {

@@ -40,6 +40,8 @@ void Builder::AddProperty(const Entry& e) {
     index = AddPshell(e, pid);
   } else if (n == "PCOMP" || n == "PCOMPG") {
     index = AddPcomp(e, pid);
+  } else if (n == "PSHEAR") {
+    index = AddPshear(e, pid);
   } else if (n == "PSOLID") {
     fe::SolidSection s;
     s.id = pid;
@@ -82,19 +84,12 @@ int Builder::AddPshell(const Entry& e, int pid) {
     e.Fail(2, "the plane-stress matrix of MID1 = " + std::to_string(mid1) + " is not positive definite");
   if (e.Blank(4)) {
     // a membrane: no bending, transverse shear or coupling (Nastran ignores
-    // 12I/T**3 and TS/T then; MID3 and MID4 must be blank)
+    // 12I/T**3 and TS/T then, read for their form; MID3 and MID4 must be blank)
+    e.Real(5, "12I/T**3", 1.0);
+    e.Real(7, "TS/T", 5.0 / 6.0);
     if (!e.Blank(6)) e.Fail(6, "MID3 is given but MID2 is blank (a membrane has no transverse shear)");
     if (!e.Blank(11)) e.Fail(11, "MID4 is given but MID2 is blank (a membrane has no bending)");
-    auto l = std::make_shared<fe::ShellLaminate>();
-    l->A = m1.q * t;
-    l->mass = m1.rho * t;
-    l->thickness = t;
-    l->z_bottom = -0.5 * t;
-    l->z_top = 0.5 * t;
-    l->q_bottom = l->q_top = m1.q;
-    l->card = "PSHELL " + std::to_string(pid);
-    l->membrane_only = true;
-    s.laminate = std::move(l);
+    s.laminate = std::make_shared<fe::ShellLaminate>(fe::MembraneLaminate(m1.q, m1.rho, t, "PSHELL " + std::to_string(pid)));
     mesh_.shell_sections.push_back(s);
     return static_cast<int>(mesh_.shell_sections.size()) - 1;
   }
@@ -153,6 +148,26 @@ int Builder::AddPshell(const Entry& e, int pid) {
     l->card = "PSHELL " + std::to_string(pid);
     s.laminate = std::move(l);
   }
+  mesh_.shell_sections.push_back(s);
+  return static_cast<int>(mesh_.shell_sections.size()) - 1;
+}
+
+// PSHEAR PID MID T NSM F1 F2: the shear panel's thickness, MAT1 and
+// non-structural mass; the extensional effectiveness F1, F2 (rods along the
+// edges) is not supported
+int Builder::AddPshear(const Entry& e, int pid) {
+  fe::ShellSection s;
+  s.id = pid;
+  s.material = MaterialIndex(e, 2, e.Id(2, "MID"));
+  s.thickness = Positive(e, 3, "thickness T", e.Real(3, "T"));
+  s.nsm = NonNegative(e, 4, "NSM", e.Real(4, "NSM", 0.0));
+  for (int f : {5, 6})
+    if (e.Real(f, f == 5 ? "F1" : "F2", 0.0) != 0.0)
+      e.Fail(f, std::string(f == 5 ? "F1" : "F2") +
+                    " != 0 (extensional stiffness of the panel's edges) is not supported: model the edge "
+                    "members as CRODs");
+  if (e.Size() > 7) e.Fail(7, "unexpected field");
+  s.origin = OriginOf(e);
   mesh_.shell_sections.push_back(s);
   return static_cast<int>(mesh_.shell_sections.size()) - 1;
 }

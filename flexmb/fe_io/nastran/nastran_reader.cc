@@ -32,7 +32,7 @@ const std::map<std::string, Phase>& Phases() {
         {Phase::kMaterials, {"MAT1", "MAT2", "MAT3", "MAT8", "MAT9", "MAT10", "MAT11"}},
         {Phase::kGrids, {"GRID", "SPOINT"}},
         {Phase::kProperties, {"PSHELL", "PCOMP", "PCOMPG", "PBAR", "PBARL", "PBEAM", "PBEAML", "PSOLID", "PELAS", "PROD", "PTUBE",
-                                 "PBUSH", "PMASS"}},
+                                 "PBUSH", "PMASS", "PSHEAR"}},
         {Phase::kLinks, {"RBE2", "RBAR", "RBAR1", "RBE3", "CONM2", "CONM1", "CELAS1", "CELAS2", "CBUSH",
                            "CMASS1", "CMASS2"}},
         {Phase::kSets, {"SPC1", "SPC", "MPC", "ASET", "ASET1", "BSET", "BSET1", "SET1"}}};
@@ -55,12 +55,12 @@ const std::set<std::string> kSilent = {"PARAM", "EIGRL", "EIGR", "SPCADD", "MPCA
 const std::set<std::string> kUnsupported = {
     "CBUSH1D", "CBUSH2D",
     "CELAS3", "CELAS4", "CGAP",    "CQUAD",
-    "CPYRAM", "CSHEAR",  "CBEND",   "CBEAM3",  "CWELD",   "CFAST",  "CSEAM",
+    "CPYRAM", "CBEND",   "CBEAM3",  "CWELD",   "CFAST",  "CSEAM",
     "CTRIAX", "CTRIAX6", "CQUADX", "CMASS3",  "CMASS4",
     "GENEL",  "CRAC2D", "CRAC3D",  "RBE1",    "RROD",
     "RTRPLT", "RTRPLT1", "RSPLINE", "RJOINT", "RSSCON",
     "PBUSH1D", "PBUSH2D", "PGAP",    "PCOMPLS",
-    "PSHEAR", "PBCOMP", "PBEND",   "PBEAM3",  "PWELD",   "PFAST",  "PSEAM",
+    "PBCOMP", "PBEND",   "PBEAM3",  "PWELD",   "PFAST",  "PSEAM",
     "PLPLANE", "PLSOLID", "PSHLN1", "PSHLN2", "PSLDN1",  "PBRSECT", "PBMSECT", "PCONEAX"};
 
 // design optimisation cards (SOL 200): they change properties only in an
@@ -141,6 +141,7 @@ void Builder::Dispatch(const Entry& e) {
   if (n == "GRID") return AddGrid(e);
   if (n == "SPOINT") return AddSpoint(e);
   if (n == "CROD" || n == "CONROD" || n == "CTUBE") return AddRod(e);
+  if (n == "CSHEAR") return AddShear(e);
   for (const fe::ElementTraits& t : fe::AllElementTraits())
     for (const char* card : t.nastran_cards)
       if (n == card) {

@@ -383,6 +383,26 @@ TEST(SolidElements, Hex8IncompatibleModesBendWithoutLocking) {
   full.Compute(K, M);
   // shear energy (G / E) (a / c)^2 = 12.5 times the bending energy
   EXPECT_NEAR(0.5 * u.dot(K * u), 13.5 * exact, 1e-10 * exact);
+  // selectively reduced (Abaqus's C3D8): the normal strains at the points
+  // become eps_ii + (mean dilatation - dilatation) / 3; here the dilatation
+  // kappa z has mean 0, so (eps_xx, eps_yy, eps_zz) = kappa z (2/3, -1/3,
+  // -1/3), whose energy at nu = 0 is 2/3 of the bending energy; the
+  // parasitic shear stays
+  Solid sel = im;
+  sel.hex = Hex8Formulation::kSelectiveReduced;
+  sel.Compute(K, M);
+  EXPECT_NEAR(0.5 * u.dot(K * u), (2.0 / 3.0 + 12.5) * exact, 1e-10 * exact);
+  ExpectSixRigidModes(K, x);
+  // a homogeneous strain (any nu) stores the same energy as with full integration
+  Eigen::VectorXd h(24);
+  for (int i = 0; i < 8; ++i) h.segment<3>(3 * i) << 1e-3 * x[i].x() + 2e-4 * x[i].y(), -5e-4 * x[i].y(), 3e-4 * x[i].z();
+  Solid sel3(ElementType::kHex8, x, E, 0.3), full3 = sel3;
+  sel3.hex = Hex8Formulation::kSelectiveReduced;
+  full3.hex = Hex8Formulation::kFullIntegration;
+  MatX Ks, Kf;
+  sel3.Compute(Ks, M);
+  full3.Compute(Kf, M);
+  EXPECT_NEAR(h.dot(Ks * h), h.dot(Kf * h), 1e-12 * h.dot(Kf * h));
 }
 
 void ExpectInputError(const Solid& s, const std::string& what, const Material* mat = nullptr) {

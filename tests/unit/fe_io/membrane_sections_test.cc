@@ -1,5 +1,5 @@
 // Membranes: a Nastran PSHELL without MID2 and an Abaqus/CalculiX
-// *MEMBRANE SECTION (M3D3, M3D4, M3D4R, M3D6, M3D8, M3D8R) are read as a
+// *MEMBRANE SECTION (M3D3, M3D4, M3D4R) are read as a
 // membrane section (fe::ShellLaminate::membrane_only). Checked here: the
 // section is the hand-computed one (A = T q1, mass rho T, nothing else);
 // the elements activate their nodes' translations only (3 DOF per node
@@ -26,7 +26,7 @@
 #include "mesh_io_test_util.h"
 
 namespace flexmb::io {
-namespace {
+namespace membrane_sections_test {
 
 // two CQUAD4 on a 2 x 1 m strip, skewed out of the x-y plane by a fold along
 // x = 1 (so that the membrane has stiffness in every direction at the fold)
@@ -152,7 +152,8 @@ TEST(MembraneSection, BodyFileMeshOfAMembraneCannotBeReassembledAsAShell) {
   WriteBody(body, path);
   const reduction::ReducedBody back = ReadBody(path);
   EXPECT_EQ(back.mesh.shell_sections[0].material, -1);
-  testing::ExpectContains(testing::InputErrorOf([&] { fe::Assemble(back.mesh); }), {"shell", "1"}, "reassembly");
+  testing::ExpectContains(testing::InputErrorOf([&] { fe::Assemble(back.mesh); }),
+                          {"shell", "1", "no material", "body file"}, "reassembly");
 }
 
 TEST(MembraneSection, MisusedMembranesAreErrorsNamingTheCard) {
@@ -163,7 +164,12 @@ TEST(MembraneSection, MisusedMembranesAreErrorsNamingTheCard) {
        {"mem_mid4.bdf", kGrids + "MAT1,1,2.1+11,,0.3,7850.\nPSHELL,1,1,0.002\n,,,1\n" + quad, ":9: PSHELL 1: ",
         {"MID4 is given but MID2 is blank"}},
        {"mem_offset.bdf", kGrids + kMembrane + "CQUAD4,1,1,1,2,3,4,,0.001\n", "",
-        {"4-node shell 1", "offset membrane", "PSHELL 1"}}},
+        {"4-node shell 1", "offset membrane", "PSHELL 1"}},
+       {"mem_quad8.bdf",
+        kGrids + kMembrane +
+            "GRID,11,,0.5,0.,0.\nGRID,12,,1.,0.5,0.\nGRID,13,,0.5,1.,0.\nGRID,14,,0.,0.5,0.\n"
+            "CQUAD8,1,1,1,2,3,4,11,12\n,13,14\n",
+        "", {"8-node shell 1", "second-order membrane", "PSHELL 1"}}},
       [](const std::string& p) { fe::Assemble(ReadNastran(p)); });
   const std::string nodes = "*NODE\n1,0.,0.,0.\n2,1.,0.,0.\n3,1.,1.,0.\n4,0.,1.,0.\n";
   const std::string material = "*MATERIAL, NAME=STEEL\n*ELASTIC\n2.1e11, 0.3\n";
@@ -177,6 +183,7 @@ TEST(MembraneSection, MisusedMembranesAreErrorsNamingTheCard) {
        {"membrane_offset.inp", nodes + "*ELEMENT, TYPE=M3D4, ELSET=E1\n1,1,2,3,4\n" + material +
                                    "*MEMBRANE SECTION, ELSET=E1, MATERIAL=STEEL, OFFSET=SPOS\n0.002\n",
         ":11: ", {"OFFSET must be 0"}},
+       {"m3d8.inp", nodes + "*ELEMENT, TYPE=M3D8R, ELSET=E1\n1,1,2,3,4\n", ":6: ", {"M3D8R", "unsupported"}},
        {"membrane_param.inp", nodes + "*ELEMENT, TYPE=M3D4, ELSET=E1\n1,1,2,3,4\n" + material +
                                   "*MEMBRANE SECTION, ELSET=E1, MATERIAL=STEEL, THICK=2\n0.002\n",
         ":11: ", {"THICK"}}},
@@ -202,5 +209,5 @@ TEST(MembraneSection, Mid4IsTheCouplingTimesTSquared) {
       [](const std::string& p) { ReadNastran(p); });
 }
 
-}  // namespace
+}  // namespace membrane_sections_test
 }  // namespace flexmb::io
