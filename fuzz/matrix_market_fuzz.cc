@@ -1,18 +1,27 @@
-// libFuzzer target for io::ReadMatrixMarket: any input must give a matrix
-// or a flexmb::Error, never a crash, hang or sanitizer report. A matrix that
-// was read is written back ("general", so any matrix can be) and read
-// again, and must come back bit for bit. Seeds: fuzz/corpus/matrix_market/.
+// libFuzzer target for the .mtx readers, io::ReadMatrixMarket and
+// io::ReadAbaqusCoordinateMatrix (Abaqus's *MATRIX OUTPUT): any input must
+// give a matrix or a flexmb::Error, never a crash, hang or sanitizer report.
+// A Matrix Market matrix that was read is written back ("general", so any
+// matrix can be) and read again, and must come back bit for bit. Seeds:
+// fuzz/corpus/matrix_market/.
 
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
 
+#include "flexmb/common/error.h"
+#include "flexmb/fe_io/abaqus/abaqus_matrix.h"
 #include "flexmb/fe_io/matrix_market.h"
 #include "fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   flexmb::fuzz::ReadScratchFile(data, size, ".mtx", [](const std::string& path) {
+    try {
+      const flexmb::fe::SparseMat a = flexmb::io::ReadAbaqusCoordinateMatrix(path);
+      if (a.rows() != a.cols()) std::abort();
+    } catch (const flexmb::Error&) {
+    }
     const flexmb::io::MatrixMarketMatrix m = flexmb::io::ReadMatrixMarket(path);
     if (m.A.nonZeros() > 20000) return;
     const std::string copy = path + ".copy.mtx";
