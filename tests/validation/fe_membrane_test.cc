@@ -53,15 +53,6 @@ std::string BoxDeck(int n, const std::string& pshell) {
   return d.str();
 }
 
-Mesh Read(const std::string& text, const std::string& name, bool abaqus = false) {
-  const std::filesystem::path p = std::filesystem::temp_directory_path() /
-                                  ("flexmb_membrane_" + std::to_string(getpid()) + "_" + name);
-  std::ofstream(p) << text;
-  Mesh m = abaqus ? io::ReadAbaqus(p.string()) : io::ReadNastran(p.string());
-  std::filesystem::remove(p);
-  return m;
-}
-
 // the tip's mean vertical deflection under P shared by the four tip corners [m]
 double TipDeflection(const Mesh& m, int n) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(6 * static_cast<Eigen::Index>(m.nodes.size()));
@@ -80,7 +71,7 @@ TEST(Membranes, ThinWalledBoxOfMembranesBendsAsTimoshenkoBeam) {
   double w[3];
   int k = 0;
   for (int n : {10, 20, 40}) {
-    const Mesh m = Read(BoxDeck(n, membrane), "box.bdf");
+    const Mesh m = ReadDeckText(BoxDeck(n, membrane), "box.bdf");
     // membranes only: three DOF per node
     EXPECT_EQ(Assemble(m).dofs.n_full, 3 * 4 * (n + 1));
     w[k] = TipDeflection(m, n);
@@ -104,7 +95,7 @@ TEST(Membranes, ThinWalledBoxOfMembranesBendsAsTimoshenkoBeam) {
 // PSHELL with MID2) is not the same model
 TEST(Membranes, AbaqusM3D4BoxEqualsTheNastranMembraneBox) {
   const int n = 10;
-  const Mesh nas = Read(BoxDeck(n, "PSHELL,1,1," + std::to_string(kT) + "\n"), "box10.bdf");
+  const Mesh nas = ReadDeckText(BoxDeck(n, "PSHELL,1,1," + std::to_string(kT) + "\n"), "box10.bdf");
   std::ostringstream d;
   d.precision(17);
   d << "*NODE\n";
@@ -115,10 +106,10 @@ TEST(Membranes, AbaqusM3D4BoxEqualsTheNastranMembraneBox) {
       << nas.nodes[e.nodes[2]].id << "," << nas.nodes[e.nodes[3]].id << "\n";
   d << "*MATERIAL, NAME=STEEL\n*ELASTIC\n" << kE << "," << kNu << "\n*DENSITY\n7850.\n"
     << "*MEMBRANE SECTION, ELSET=WALLS, MATERIAL=STEEL\n" << kT << "\n*BOUNDARY\n1,1,3\n2,1,3\n3,1,3\n4,1,3\n";
-  const Mesh abq = Read(d.str(), "box10.inp", true);
+  const Mesh abq = ReadDeckText(d.str(), "box10.inp", true);
   const double w_nas = TipDeflection(nas, n), w_abq = TipDeflection(abq, n);
   EXPECT_NEAR(w_abq, w_nas, 1e-12 * w_nas);
-  const Mesh shells = Read(BoxDeck(n, "PSHELL,1,1," + std::to_string(kT) + ",1\n"), "box10s.bdf");
+  const Mesh shells = ReadDeckText(BoxDeck(n, "PSHELL,1,1," + std::to_string(kT) + ",1\n"), "box10s.bdf");
   const double w_shell = TipDeflection(shells, n);
   std::printf("  10 along: membranes %.7e m, bending shells %.7e m\n", w_nas, w_shell);
   EXPECT_GT(std::abs(w_shell / w_nas - 1), 1e-3);

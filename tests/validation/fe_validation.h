@@ -8,11 +8,14 @@
 /// "FE: shells (obstacle course and plates)" and "FE: beams and solids".
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <Eigen/SparseCholesky>
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <functional>
 #include <initializer_list>
 #include <string>
@@ -20,6 +23,8 @@
 
 #include "flexmb/fe/assembly.h"
 #include "flexmb/fe/modal.h"
+#include "flexmb/fe_io/abaqus/abaqus_reader.h"
+#include "flexmb/fe_io/nastran/nastran_reader.h"
 #include "tests/unit/fe/fe_test_models.h"
 
 namespace flexmb::fe::validation {
@@ -87,6 +92,18 @@ struct ShellGrid {
     return f;
   }
 };
+
+/// The mesh of a deck given as text: written to a temporary file `name`
+/// (unique per process), read as Nastran bulk data or, if `abaqus`, as an
+/// Abaqus/CalculiX deck, and removed.
+inline Mesh ReadDeckText(const std::string& text, const std::string& name, bool abaqus = false) {
+  const std::filesystem::path p =
+      std::filesystem::temp_directory_path() / ("flexmb_deck_" + std::to_string(getpid()) + "_" + name);
+  std::ofstream(p) << text;
+  Mesh m = abaqus ? io::ReadAbaqus(p.string()) : io::ReadNastran(p.string());
+  std::filesystem::remove(p);
+  return m;
+}
 
 /// Static solution of the mesh under nodal loads f (6 per node, basic
 /// frame): fe::Assemble, then a sparse LDL^T solve on the free DOF. Returns

@@ -42,15 +42,6 @@ namespace nastran_pbeam_axes_test {
 constexpr double kE = 2.1e11, kRho = 7850.0, kA = 1e-3, kIy = 2e-6, kIz = 3e-6, kJ = 4e-6, kL = 2.0;
 constexpr double kEz = 0.05, kNsm = 10.0, kNsmZ = 0.1, kNsmY = -0.04, kNsi = 0.5;
 
-Mesh Read(const std::string& text, const std::string& name) {
-  const std::filesystem::path p = std::filesystem::temp_directory_path() /
-                                  ("flexmb_pbeam_axes_" + std::to_string(getpid()) + "_" + name + ".bdf");
-  std::ofstream(p) << text;
-  Mesh m = io::ReadNastran(p.string());
-  std::filesystem::remove(p);
-  return m;
-}
-
 // n CBEAMs along x from 0 to L (element z = basic z), on `pbeam`
 std::string Cantilever(int n, const std::string& pbeam, const std::string& cbeam_tail = "") {
   std::string d = "BEGIN BULK\nMAT1,1,2.1e11,,0.3,7850.\n" + pbeam;
@@ -73,7 +64,7 @@ std::string Pbeam(double n2, double nsm = 0.0, double m1 = 0.0, double m2 = 0.0,
 TEST(PbeamAxes, AxialForceOnTheShearCentreBendsAboutTheNeutralAxis) {
   const double p = 1e4;
   for (int n : {1, 10}) {
-    const Mesh m = Read(Cantilever(n, Pbeam(kEz)), "pull");
+    const Mesh m = ReadDeckText(Cantilever(n, Pbeam(kEz)), "pull.bdf");
     ASSERT_EQ(m.beam_sections[0].neutral_axis[1], kEz);
     Mesh fixed = m;
     testing::AddConstraint(fixed, 0, 0b111111);
@@ -89,14 +80,14 @@ TEST(PbeamAxes, AxialForceOnTheShearCentreBendsAboutTheNeutralAxis) {
     EXPECT_NEAR(u(6 * n + 4), -r_exact, 1e-9 * r_exact);  // ry = -dw/dx
     EXPECT_NEAR(u(6 * n + 1), 0.0, 1e-12);
     // contrast: without the neutral axis offset, no bending at all
-    const Mesh plain = Read(Cantilever(n, Pbeam(0.0)), "plain");
+    const Mesh plain = ReadDeckText(Cantilever(n, Pbeam(0.0)), "plain");
     Mesh plain_fixed = plain;
     testing::AddConstraint(plain_fixed, 0, 0b111111);
     EXPECT_NEAR(SolveStatic(plain_fixed, f)(6 * n + 2), 0.0, 1e-12);
     // the neutral axis ey beside the axis (N1): the same in the x-y plane,
     // v = ey P L^2 / (2 E Iz) towards +y, rz = +v', and no w
     const double ey = -0.03;
-    Mesh side = Read(Cantilever(n, Pbeam(0.0, 0.0, 0.0, 0.0, 0.0, ey)), "side");
+    Mesh side = ReadDeckText(Cantilever(n, Pbeam(0.0, 0.0, 0.0, 0.0, 0.0, ey)), "side");
     testing::AddConstraint(side, 0, 0b111111);
     const Eigen::VectorXd us = SolveStatic(side, f);
     const double v_exact = ey * p * kL * kL / (2 * kE * kIz), rz_exact = ey * p * kL / (kE * kIz);
@@ -118,8 +109,8 @@ void Matrices(const Mesh& m, MatX& K, MatX& M, MassForm form = MassForm::kConsis
 TEST(PbeamAxes, InThePlaneOfTheOffsetEqualsTheBeamOnRigidEndOffsets) {
   // the neutral-axis beam; the offset beam has its axis on the neutral axis
   // (WA = WB = (0, 0, ez) in basic axes, the default OFFT GGG)
-  const Mesh na = Read(Cantilever(1, Pbeam(kEz)), "na");
-  const Mesh off = Read(Cantilever(1, Pbeam(0.0), ",\n,,,0.,0.," + std::to_string(kEz) + ",0.,0.," +
+  const Mesh na = ReadDeckText(Cantilever(1, Pbeam(kEz)), "na");
+  const Mesh off = ReadDeckText(Cantilever(1, Pbeam(0.0), ",\n,,,0.,0.," + std::to_string(kEz) + ",0.,0.," +
                                                       std::to_string(kEz)),
                         "off");
   ASSERT_EQ(off.elements[0].offset_a.z(), kEz);
@@ -140,7 +131,7 @@ TEST(PbeamAxes, InThePlaneOfTheOffsetEqualsTheBeamOnRigidEndOffsets) {
 }
 
 TEST(PbeamAxes, RigidBodyMassPropertiesHoldBothOffsetsAndTheNsmInertia) {
-  const Mesh m = Read(Cantilever(1, Pbeam(kEz, kNsm, kNsmY, kNsmZ, kNsi)), "mass");
+  const Mesh m = ReadDeckText(Cantilever(1, Pbeam(kEz, kNsm, kNsmY, kNsmZ, kNsi)), "mass");
   const BeamSection& s = m.beam_sections[0];
   EXPECT_EQ(s.nsm_offset[0], kNsmY);
   EXPECT_EQ(s.nsm_offset[1], kNsmZ);
@@ -173,7 +164,7 @@ TEST(PbeamAxes, RigidBodyMassPropertiesHoldBothOffsetsAndTheNsmInertia) {
 }
 
 TEST(PbeamAxes, FibreStressOfAnAxialForceIsNOverAOnTheNeutralAxis) {
-  const Mesh m = Read(Cantilever(1, Pbeam(kEz)), "fibre");
+  const Mesh m = ReadDeckText(Cantilever(1, Pbeam(kEz)), "fibre");
   Eigen::Matrix<double, 6, 1> f = Eigen::Matrix<double, 6, 1>::Zero();
   f(0) = 1e4;
   EXPECT_NEAR(reduction::BeamNormalStress(f, m.beam_sections[0], 0.0, kEz), 1e4 / kA, 1e-9);

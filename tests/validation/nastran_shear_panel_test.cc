@@ -29,15 +29,6 @@ namespace nastran_shear_panel_test {
 
 constexpr double kA = 0.6, kB = 0.4, kT = 0.002, kRod = 1e-4, kE = 7e10, kNu = 0.33, kH = 1000.0;
 
-Mesh Read(const std::string& text, const std::string& name) {
-  const std::filesystem::path p = std::filesystem::temp_directory_path() /
-                                  ("flexmb_shear_panel_" + std::to_string(getpid()) + "_" + name + ".bdf");
-  std::ofstream(p) << text;
-  Mesh m = io::ReadNastran(p.string());
-  std::filesystem::remove(p);
-  return m;
-}
-
 std::string Bay(const std::string& panel) {
   char b[1200];
   std::snprintf(b, sizeof b,
@@ -56,7 +47,7 @@ Eigen::VectorXd Solve(const Mesh& m) {
 }
 
 TEST(ShearPanel, RackedBayOfRodsEqualsTheHandSolution) {
-  const Mesh m = Read(Bay("PSHEAR,5,1," + std::to_string(kT) + "\nCSHEAR,5,5,1,2,3,4\n"), "bay");
+  const Mesh m = ReadDeckText(Bay("PSHEAR,5,1," + std::to_string(kT) + "\nCSHEAR,5,5,1,2,3,4\n"), "bay");
   const Eigen::VectorXd u = Solve(m);
   const double g = kE / (2 * (1 + kNu)), ea = kE * kRod;
   const double u4 = kH * kB / (g * kT * kA) + kH * kA / (2 * ea) + kH * kB * kB * kB / (2 * kA * kA * ea);
@@ -70,7 +61,7 @@ TEST(ShearPanel, RackedBayOfRodsEqualsTheHandSolution) {
   EXPECT_NEAR(u(6 * n3 + 1), -v4, 1e-12 * u4);
   EXPECT_NEAR(u(6 * n3) - u(6 * n4), -kH / (2 * ea / kA), 1e-12 * u4);
   // a membrane in place of the panel: another structure
-  const Mesh mem = Read(Bay("PSHELL,5,1," + std::to_string(kT) + "\nCQUAD4,5,5,1,2,3,4\n"), "membrane");
+  const Mesh mem = ReadDeckText(Bay("PSHELL,5,1," + std::to_string(kT) + "\nCQUAD4,5,5,1,2,3,4\n"), "membrane");
   const double u4_membrane = Solve(mem)(6 * mem.NodeIndex(4));
   std::printf("  the bay with a membrane CQUAD4: u4 %.6e m\n", u4_membrane);
   EXPECT_GT(std::abs(u4_membrane / u4 - 1), 0.01);
