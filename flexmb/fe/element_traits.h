@@ -86,9 +86,10 @@ struct ElementTraits {
   void (*geometric_stiffness)(const ElementInput& in, const Eigen::VectorXd& u, MatX& KG,
                               double* axial_force) = nullptr;
 
-  /// Rods (fe/elements/rod2.h): 6 DOF per node, but only the translations
-  /// of its nodes are activated by it; its rotational terms are assembled
-  /// only where both nodes' rotations are all active (fe/assembly.h).
+  /// Rods (fe/elements/rod2.h) and the shear panel (fe/elements/shear4.h):
+  /// 6 DOF per node, but only the translations of its nodes are activated
+  /// by it; a rod's torsion is assembled only where both nodes' rotations
+  /// are all active, a panel's rotational terms never (fe/assembly.cc).
   bool translations_only = false;
 
   /// Nodal DOF: 6 for shells and beams, 3 for solids.

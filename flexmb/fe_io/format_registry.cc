@@ -23,12 +23,18 @@ fe::SparseMat HarwellBoeingMatrixOf(const std::string& path, const std::string&,
 
 // .mtx: Matrix Market, or Abaqus's coordinate format when the banner is
 // missing and the first entry line is "ROW COLUMN VALUE"
-fe::SparseMat MatrixMarketMatrixOf(const std::string& path, const std::string&, int) {
+fe::SparseMat MatrixMarketMatrixOf(const std::string& path, const std::string&, int n) {
   const std::string text = ReadWholeFile(path);
   for (std::string_view line : SplitLines(text)) {
     const size_t p = line.find_first_not_of(" \t\r");
     if (p == std::string_view::npos || line.substr(p, 2) == "**") continue;
-    if (line[p] != '%' && LooksLikeAbaqusCoordinateMatrix(line)) return ReadAbaqusCoordinateMatrix(path);
+    if (line[p] != '%' && LooksLikeAbaqusCoordinateMatrix(line)) {
+      // equations after the last stored entry (no stiffness, no mass) come
+      // back when the DOF map says how many there are
+      fe::SparseMat a = ReadAbaqusCoordinateMatrix(path);
+      if (n > a.rows()) a.conservativeResize(n, n);
+      return a;
+    }
     break;
   }
   return ReadMatrixMarket(path).A;

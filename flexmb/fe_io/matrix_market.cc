@@ -36,7 +36,8 @@ MatrixMarketMatrix ReadMatrixMarket(const std::string& path) {
   const std::vector<std::string_view> banner = SplitFields(lines[0]);
   if (banner.empty() || AsciiLower(banner[0]) != "%%matrixmarket") {
     throw InputError(std::string("not a Matrix Market file: the first line must be a banner like '") + kBanner +
-                         "' (a .mtx file of Abaqus's *MATRIX OUTPUT, FORMAT=COORDINATE has 'ROW COLUMN VALUE' lines)",
+                         "' (a .mtx file of Abaqus's *MATRIX OUTPUT, FORMAT=COORDINATE has 'ROW COLUMN VALUE' lines; "
+                         "its FORMAT=MATRIX INPUT, 'node, dof, node, dof, value', is not read)",
                      {path, 1, "banner"});
   }
   if (banner.size() != 5) {

@@ -13,12 +13,9 @@
 // differs by more than 1 %. Sources: docs/validation.md, "Shear panels".
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "flexmb/fe_io/nastran/nastran_reader.h"

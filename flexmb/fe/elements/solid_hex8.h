@@ -28,7 +28,7 @@ enum class Hex8Formulation {
   kSelectiveReduced,
 };
 
-/// Type id of the 8-node hexahedron with plain full integration (Abaqus
+/// Type id of the 8-node hexahedron with plain full integration (CalculiX's
 /// C3D8; its row: fe/element_traits.cc). The default row, ElementType::kHex8,
 /// has the incompatible modes (Nastran CHEXA, Abaqus C3D8I).
 inline constexpr ElementType kHex8Full{15};

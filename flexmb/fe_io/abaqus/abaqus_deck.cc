@@ -191,7 +191,7 @@ bool WrittenByAbaqusCae(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
   for (int k = 0; k < 200 && std::getline(in, line); ++k)
-    if (line.rfind("**", 0) == 0 && Upper(line).find("ABAQUS/CAE") != std::string::npos) return true;
+    if (NoBlanks(Upper(line)).rfind("**GENERATEDBY:ABAQUS/CAE", 0) == 0) return true;
   return false;
 }
 

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <utility>
 #include <vector>
 
 #include "flexmb/common/error.h"
@@ -79,17 +77,25 @@ fe::SparseMat ReadAbaqusCoordinateMatrix(const std::string& path) {
     entries.push_back(e);
   }
   if (entries.empty()) throw InputError("no entries (expected 'ROW COLUMN VALUE' lines)", {path, 0, "matrix"});
-  // each position once; one triangle only is mirrored
+  // each position once (sorted: neighbours; no per-entry map for models of
+  // millions of entries); one triangle only is mirrored
   const bool mirror = !(lower && upper);
-  std::map<std::pair<long long, long long>, int> seen;
+  std::vector<size_t> order(entries.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    const Entry &x = entries[a], &y = entries[b];
+    return x.row != y.row ? x.row < y.row : x.col != y.col ? x.col < y.col : x.line < y.line;
+  });
+  for (size_t k = 1; k < order.size(); ++k) {
+    const Entry &a = entries[order[k - 1]], &e = entries[order[k]];
+    if (a.row == e.row && a.col == e.col)
+      throw InputError("position (" + std::to_string(e.row) + ", " + std::to_string(e.col) +
+                           ") given twice (also line " + std::to_string(a.line) + ")",
+                       {path, e.line, "entry (" + std::to_string(e.row) + ", " + std::to_string(e.col) + ")"});
+  }
   std::vector<Eigen::Triplet<double>> t;
   t.reserve(entries.size() * (mirror ? 2 : 1));
   for (const Entry& e : entries) {
-    const auto [it, fresh] = seen.emplace(std::make_pair(e.row, e.col), e.line);
-    if (!fresh)
-      throw InputError("position (" + std::to_string(e.row) + ", " + std::to_string(e.col) +
-                           ") given twice (also line " + std::to_string(it->second) + ")",
-                       {path, e.line, "entry (" + std::to_string(e.row) + ", " + std::to_string(e.col) + ")"});
     t.emplace_back(static_cast<int>(e.row - 1), static_cast<int>(e.col - 1), e.value);
     if (mirror && e.row != e.col) t.emplace_back(static_cast<int>(e.col - 1), static_cast<int>(e.row - 1), e.value);
   }

@@ -140,8 +140,13 @@ TEST(Shear4, ParallelogramStoresTheEdgeShearEnergyOfAnyUniformStrain) {
   const Eigen::Matrix2d s = da * db.transpose() + db * da.transpose();
   Eigen::Matrix3d compliance;
   compliance << 1 / kE, -kNu / kE, 0, -kNu / kE, 1 / kE, 0, 0, 0, 1 / kG;
+  // the compliance of the edge-shear stress by hand: with S = d_a d_b^T +
+  // d_b d_a^T, S : C^-1 : S = (2 / E) ((1 + nu) + (1 - nu) cos^2 theta),
+  // theta the angle between the edges (1 / G for a rectangle); checked
+  // against the Voigt product
   const Eigen::Vector3d sv(s(0, 0), s(1, 1), s(0, 1));
-  const double c = sv.dot(compliance * sv), area = a * b * std::sin(skew);
+  const double c = 2.0 / kE * ((1 + kNu) + (1 - kNu) * std::cos(skew) * std::cos(skew)), area = a * b * std::sin(skew);
+  EXPECT_NEAR(sv.dot(compliance * sv), c, 1e-12 * c);
   for (const Eigen::Matrix2d& eps : {Eigen::Matrix2d((Eigen::Matrix2d() << 1e-3, 2e-4, 2e-4, -5e-4).finished()),
                                      Eigen::Matrix2d((Eigen::Matrix2d() << 0, 1e-3, 1e-3, 0).finished())}) {
     const Eigen::VectorXd v = Field(m, [&](const Vec3& x) {

@@ -424,6 +424,14 @@ TEST(AbaqusReader, OtherHexFormulationsWarnOncePerType) {
   const std::string again = testing::ScratchPath("c3d8_cae_again.inp");
   WriteAbaqus(mc, again);
   EXPECT_EQ(ReadAbaqus(again).elements[2].type, fe::kHex8Selective);
+  // CalculiX's and Abaqus's C3D8 in one mesh cannot be written
+  Mesh mixed = mc;
+  mixed.elements[1].type = fe::kHex8Full;
+  testing::ExpectContains(InputErrorOf([&] { WriteAbaqus(mixed, testing::ScratchPath("mixed.inp")); }),
+                          {"both CalculiX's C3D8", "Abaqus's"}, "mixed");
+  // a path or another comment naming Abaqus/CAE is no Abaqus/CAE header
+  const std::string other = WriteScratch("c3d8_other.inp", "** from abaqus/cae_models/x.inp\n" + testing::ReadText(path));
+  EXPECT_EQ(ReadAbaqus(other).elements[2].type, fe::kHex8Full);
 }
 
 TEST(AbaqusReader, KinematicCouplingOnAnElementSurface) {
