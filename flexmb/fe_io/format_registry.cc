@@ -10,7 +10,6 @@
 #include "flexmb/fe_io/gmsh_reader.h"
 #include "flexmb/fe_io/harwell_boeing.h"
 #include "flexmb/fe_io/matrix_market.h"
-#include "flexmb/fe_io/matrix_text.h"
 #include "flexmb/fe_io/nastran/nastran_reader.h"
 #include "flexmb/fe_io/vtk_mesh.h"
 
@@ -24,20 +23,12 @@ fe::SparseMat HarwellBoeingMatrixOf(const std::string& path, const std::string&,
 // .mtx: Matrix Market, or Abaqus's coordinate format when the banner is
 // missing and the first entry line is "ROW COLUMN VALUE"
 fe::SparseMat MatrixMarketMatrixOf(const std::string& path, const std::string&, int n) {
-  const std::string text = ReadWholeFile(path);
-  for (std::string_view line : SplitLines(text)) {
-    const size_t p = line.find_first_not_of(" \t\r");
-    if (p == std::string_view::npos || line.substr(p, 2) == "**") continue;
-    if (line[p] != '%' && LooksLikeAbaqusCoordinateMatrix(line)) {
-      // equations after the last stored entry (no stiffness, no mass) come
-      // back when the DOF map says how many there are
-      fe::SparseMat a = ReadAbaqusCoordinateMatrix(path);
-      if (n > a.rows()) a.conservativeResize(n, n);
-      return a;
-    }
-    break;
-  }
-  return ReadMatrixMarket(path).A;
+  if (!IsAbaqusCoordinateMatrixFile(path)) return ReadMatrixMarket(path).A;
+  // equations after the last stored entry (no stiffness, no mass) come back
+  // when the DOF map says how many there are
+  fe::SparseMat a = ReadAbaqusCoordinateMatrix(path);
+  if (n > a.rows()) a.conservativeResize(n, n);
+  return a;
 }
 
 fe::SparseMat CalculixMatrixOf(const std::string& path, const std::string& what, int n_dof) {

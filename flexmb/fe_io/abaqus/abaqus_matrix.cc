@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <string>
 #include <vector>
 
 #include "flexmb/common/error.h"
@@ -39,6 +41,16 @@ bool LooksLikeAbaqusCoordinateMatrix(std::string_view first_line) {
   double v = 0.0;
   return f.size() == 3 && ParseIntegerToken(f[0], i) && ParseIntegerToken(f[1], j) && ParseDoubleToken(f[2], v) &&
          i >= 1 && j >= 1;
+}
+
+bool IsAbaqusCoordinateMatrixFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (Skipped(line)) continue;
+    return LooksLikeAbaqusCoordinateMatrix(line);  // a banner or anything else is not
+  }
+  return false;
 }
 
 fe::SparseMat ReadAbaqusCoordinateMatrix(const std::string& path) {

@@ -22,6 +22,12 @@ namespace flexmb::io {
 /// fields, two positive integers and a number.
 bool LooksLikeAbaqusCoordinateMatrix(std::string_view first_line);
 
+/// True if the file at `path` is in Abaqus's coordinate format by its first
+/// line that is neither blank nor a "**" comment (LooksLikeAbaqusCoordinateMatrix;
+/// a Matrix Market banner is not); reads only up to that line. False for a
+/// file that cannot be opened (the reader then names the problem).
+bool IsAbaqusCoordinateMatrixFile(const std::string& path);
+
 /// Reads an Abaqus coordinate-format matrix; its size is the largest index.
 /// Throws InputError naming the file, line and entry for a malformed line,
 /// an index < 1 or too large, a non-finite value, a position given twice
