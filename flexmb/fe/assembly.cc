@@ -203,9 +203,54 @@ bool ActsOnTranslationsOnly(const Mesh& mesh, const Element& e) {
   return Traits(e.type).translations_only || IsMembrane(mesh, e);
 }
 
-AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
+namespace {
+
+// adds imported matrices (rows named by base.dofs.full) to an assembled
+// model: K += Tb^T K_b Tb and M likewise, with Tb the rows of T (the
+// expansion x) of the imported rows, and M_full += S M_b S^T with S the
+// imported rows' places in the full numbering
+void AddImported(const AssembledModel& base, const Expansion& x, AssembledModel& out) {
+  const DofMap& dm = out.dofs;
+  const int nb = static_cast<int>(base.K.rows());
+  std::vector<int> full_of_row(static_cast<size_t>(nb), -1);
+  for (size_t n = 0; n < base.dofs.full.size(); ++n)
+    for (int c = 0; c < 6; ++c)
+      if (base.dofs.full[n][c] >= 0) full_of_row[static_cast<size_t>(base.dofs.full[n][c])] = dm.full[n][c];
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (int r = 0; r < nb; ++r) {
+    const int f = full_of_row[static_cast<size_t>(r)];
+    for (int k = x.ptr[f]; k < x.ptr[f + 1]; ++k) t.emplace_back(r, x.idx[k], x.coef[k]);
+  }
+  SparseMat Tb(nb, dm.n_free);
+  Tb.setFromTriplets(t.begin(), t.end());
+  const SparseMat Tbt = Tb.transpose();
+  const bool full_is_free = dm.n_full == dm.n_free;
+  SparseMat K = Tbt * (base.K * Tb), M = Tbt * (base.M * Tb);
+  out.K = out.K + K;
+  out.M = out.M + M;
+  out.K.makeCompressed();
+  out.M.makeCompressed();
+  if (full_is_free) {
+    out.M_full = out.M;
+    return;
+  }
+  t.clear();
+  t.reserve(static_cast<size_t>(base.M.nonZeros()));
+  for (int j = 0; j < base.M.outerSize(); ++j)
+    for (SparseMat::InnerIterator it(base.M, j); it; ++it)
+      t.emplace_back(full_of_row[static_cast<size_t>(it.row())], full_of_row[static_cast<size_t>(j)], it.value());
+  SparseMat Mb(dm.n_full, dm.n_full);
+  Mb.setFromTriplets(t.begin(), t.end());
+  out.M_full = out.M_full + Mb;
+  out.M_full.makeCompressed();
+}
+
+// Assemble and AssembleImported: `base`, when given, holds imported K and M
+// on the rows base->dofs.full names (its node list may be shorter than the
+// mesh's); the mesh's elements are then display cells and are not assembled
+AssembledModel AssembleImpl(const Mesh& mesh, const AssemblyOptions& options, const AssembledModel* base) {
   const int nn = static_cast<int>(mesh.nodes.size());
-  const int ne = static_cast<int>(mesh.elements.size());
+  const int ne = base != nullptr ? 0 : static_cast<int>(mesh.elements.size());
   auto node_id = [&](int n) { return std::to_string(mesh.nodes[n].id); };
 
   // resolve elements, masses, links and constraints, checking every reference
@@ -256,9 +301,18 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
     if (n < 0 || n >= nn) throw InputError("fixed node index " + std::to_string(n) + " does not exist in the mesh");
   }
 
-  // active slots from elements and masses
+  // active slots from elements (or imported rows) and masses
   std::vector<uint8_t> active(nn, 0);
-  for (const Element& e : mesh.elements) {
+  if (base != nullptr) {
+    if (base->dofs.full.size() > static_cast<size_t>(nn))
+      throw InputError("the imported matrices name " + std::to_string(base->dofs.full.size()) +
+                       " nodes, the mesh has only " + std::to_string(nn));
+    for (size_t n = 0; n < base->dofs.full.size(); ++n)
+      for (int c = 0; c < 6; ++c)
+        if (base->dofs.full[n][c] >= 0) active[n] |= 1 << c;
+  }
+  for (int k = 0; k < ne; ++k) {
+    const Element& e = mesh.elements[k];
     const uint8_t mask = DofsPerNode(e.type) == 6 && !ActsOnTranslationsOnly(mesh, e) ? 0b111111 : 0b000111;
     for (int n : e.nodes) active[n] |= mask;
   }
@@ -652,7 +706,32 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) {
     }
   }
   out.M_full = full_mass ? full_mass->Take() : out.M;
+  if (base != nullptr) AddImported(*base, x, out);
   return out;
+}
+
+}  // namespace
+
+AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) { return AssembleImpl(mesh, options, nullptr); }
+
+AssembledModel AssembleImported(const Mesh& mesh, const AssembledModel& matrices, const AssemblyOptions& options) {
+  if (!options.block_subset.empty()) throw InputError("imported matrices cannot be assembled block by block");
+  const size_t n = static_cast<size_t>(matrices.K.rows());
+  if (matrices.K.cols() != matrices.K.rows() || matrices.M.rows() != matrices.K.rows() ||
+      matrices.M.cols() != matrices.K.cols())
+    throw InputError("the imported K and M differ in size");
+  std::vector<char> seen(n, 0);
+  for (const auto& node : matrices.dofs.full)
+    for (int r : node)
+      if (r >= 0) {
+        if (static_cast<size_t>(r) >= n || seen[static_cast<size_t>(r)])
+          throw InputError("the imported matrices' DOF map names row " + std::to_string(r + 1) + " twice or beyond " +
+                           std::to_string(n));
+        seen[static_cast<size_t>(r)] = 1;
+      }
+  if (std::count(seen.begin(), seen.end(), 0) > 0)
+    throw InputError("a row of the imported matrices belongs to no node of the DOF map");
+  return AssembleImpl(mesh, options, &matrices);
 }
 
 Eigen::Matrix<double, 6, 6> RigidBodyMass(const Mesh& mesh, const AssembledModel& model, Vec3& x0) {

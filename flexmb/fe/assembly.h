@@ -68,6 +68,18 @@ struct AssemblyOptions {
 /// InputError naming the element or link at fault.
 AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options = {});
 
+/// Assembles a model whose stiffness and mass come from another FE package:
+/// `matrices` holds K and M (upper and lower parts) on the rows that
+/// matrices.dofs.full names node by node (node indices of `mesh`, which may
+/// have more nodes than the DOF map, e.g. a reference node added for a rigid
+/// link). The mesh's elements are display cells and are not assembled; its
+/// point masses, scalar springs, rigid links, linear constraints and
+/// single-point constraints, and the options (except block_subset and
+/// mass_form), act as in Assemble: K_free = T^T (K_imported + K_extra) T,
+/// numbered node by node. M_full holds the imported M on the full numbering
+/// plus the point masses. Throws InputError as Assemble does.
+AssembledModel AssembleImported(const Mesh& mesh, const AssembledModel& matrices, const AssemblyOptions& options = {});
+
 /// True for an element that acts on its nodes' translations only: a rod
 /// (ElementTraits::translations_only) or a shell of a membrane section
 /// (ShellLaminate::membrane_only). Its nodes get rotational DOF only from

@@ -112,6 +112,12 @@ AssembledModel BuildMatrices(const FeModel& model, const AssemblyOptions& option
   const AssembledModel& imported = *model.imported;
   CheckModel(imported);
   const Mesh& mesh = model.mesh;
+  // what the FE model file adds to the matrices (nodes, rigid links, point
+  // masses, springs, linear constraints) is assembled with them; without
+  // additions the rows keep the files' order
+  if (!mesh.rigid_links.empty() || !mesh.point_masses.empty() || !mesh.springs.empty() ||
+      !mesh.linear_constraints.empty() || imported.dofs.full.size() != mesh.nodes.size())
+    return AssembleImported(mesh, imported, options);
   const int nn = static_cast<int>(imported.dofs.free.size());
   if (nn != static_cast<int>(mesh.nodes.size()))
     throw InputError("the imported matrices' DOF map has " + std::to_string(nn) + " nodes, the geometry " +

@@ -17,7 +17,8 @@ namespace flexmb::fe {
 struct FeModel {
   Mesh mesh;                                ///< geometry, elements (if any), sets
   /// Set when K and M were imported: free == full numbering (T = identity),
-  /// nothing constrained yet. Empty when the mesh has elements to assemble.
+  /// nothing constrained yet; dofs.full may cover fewer nodes than the mesh
+  /// (nodes added by an FE model file). Empty when the mesh has elements to assemble.
   std::optional<AssembledModel> imported;
 };
 
@@ -26,8 +27,10 @@ struct FeModel {
 /// indices fixed in all their DOF and the mesh's own single-point
 /// constraints applied (options.apply_constraints). For imported matrices
 /// options.mass_form has no effect and the constrained DOF are removed as
-/// by FixNodes (component by component for a partial constraint). Throws
-/// InputError for a node index out of range.
+/// by FixNodes (component by component for a partial constraint); where the
+/// mesh adds nodes, rigid links, point masses, springs or linear constraints
+/// to them, they are assembled with them by AssembleImported (numbered node
+/// by node). Throws InputError for a node index out of range.
 AssembledModel BuildMatrices(const FeModel& model, const AssemblyOptions& options);
 
 /// Removes the DOF of the given nodes (all components) from an assembled
