@@ -22,6 +22,7 @@
 #include "flexmb/fe_io/exchange_set.h"
 #include "flexmb/fe_io/format_registry.h"
 #include "flexmb/fe_io/imported_matrices.h"
+#include "flexmb/fe_io/node_selection.h"
 #include "flexmb/yaml/yaml_context.h"
 
 namespace flexmb::io {
@@ -73,11 +74,12 @@ class FeModelFileParser {
     if (!root.IsDefined() || root.IsNull()) ctx_.Fail(root, "the FE model file is empty");
     if (!root.IsMap()) ctx_.Fail(root, "expected a map of 'key: value' entries at the top level");
     if (root["matrices"]) return ParseMatrices(root);
-    ctx_.CheckKeys(root, {"mesh", "matrices", "materials", "sections", "drop_elements", "fixed", "point_masses",
-                          "rigid_links"});
+    ctx_.CheckKeys(root, {"mesh", "matrices", "nodes", "materials", "sections", "drop_elements", "fixed",
+                          "point_masses", "rigid_links"});
     fe::FeModel model;
     mesh_ = &model.mesh;
     LoadMesh(root);
+    if (root["nodes"]) ParseNodes(root["nodes"]);
     if (root["drop_elements"]) DropElements(root["drop_elements"]);
     if (root["materials"]) ParseMaterials(root["materials"]);
     if (root["sections"]) ParseSections(root["sections"]);
@@ -105,7 +107,7 @@ class FeModelFileParser {
   }
 
   fe::FeModel ParseMatrices(const YAML::Node& root) {
-    ctx_.CheckKeys(root, {"matrices", "fixed"});
+    ctx_.CheckKeys(root, {"matrices", "nodes", "fixed", "point_masses", "rigid_links"});
     const YAML::Node m = root["matrices"];
     ctx_.SetEntity("matrices");
     ctx_.CheckKeys(m, {"stiffness", "mass", "dof_map", "geometry"});
@@ -116,8 +118,36 @@ class FeModelFileParser {
     spec.geometry = ExistingFile(m, "geometry");
     fe::FeModel model = ctx_.Guard(m, [&] { return ReadImportedMatrices(spec); });
     mesh_ = &model.mesh;
+    mesh_name_ = fs::path(spec.geometry).filename().string();
+    if (root["nodes"]) ParseNodes(root["nodes"]);
     if (root["fixed"]) ParseFixed(root["fixed"]);
+    if (root["point_masses"]) ParsePointMasses(root["point_masses"]);
+    if (root["rigid_links"]) ParseRigidLinks(root["rigid_links"]);
     return model;
+  }
+
+  // nodes added to the mesh or geometry: {id, x: [x, y, z]}
+  void ParseNodes(const YAML::Node& node) {
+    ExpectList(node, "nodes");
+    std::set<int> added;
+    for (size_t k = 0; k < node.size(); ++k) {
+      const YAML::Node s = node[k];
+      ctx_.SetEntity("node #" + std::to_string(k + 1));
+      ctx_.CheckKeys(s, {"id", "x"});
+      if (!s["id"]) ctx_.Fail(s, "missing required key 'id'");
+      const double id = ctx_.Number(s["id"], "'id'");
+      if (id != std::floor(id) || id < 1 || id > 2147483647.0)
+        ctx_.Fail(s["id"], "'id' must be a positive whole number, got " + Quoted(s["id"].Scalar()));
+      fe::Node n;
+      n.id = static_cast<int>(id);
+      if (mesh_->NodeIndex(n.id) >= 0 || !added.insert(n.id).second)
+        ctx_.Fail(s["id"], "node " + std::to_string(n.id) + " already exists in " + MeshName());
+      if (!s["x"]) ctx_.Fail(s, "missing required key 'x' (the node's position [x, y, z])");
+      n.x = ctx_.Vector3(s, "x");
+      n.origin = {path_, YamlContext::Line(s)};
+      mesh_->nodes.push_back(n);
+    }
+    mesh_->IndexNodes();
   }
 
   void LoadMesh(const YAML::Node& root) {
@@ -344,8 +374,15 @@ class FeModelFileParser {
   // node indices named by a scalar (node id or node set) or a list of them
   std::vector<int> Nodes(const YAML::Node& node) {
     std::vector<int> out;
-    for (const YAML::Node& v : Items(node, "a node id, a node set name, or a list of them")) {
-      if (!v.IsScalar()) ctx_.Fail(v, "expected a node id or a node set name");
+    if (node.IsMap()) return Selected(node);
+    for (const YAML::Node& v : Items(node, "a node id, a node set name, a selection {cylinder: ...} or {box: ...}, "
+                                           "or a list of them")) {
+      if (v.IsMap()) {
+        const std::vector<int> chosen = Selected(v);
+        out.insert(out.end(), chosen.begin(), chosen.end());
+        continue;
+      }
+      if (!v.IsScalar()) ctx_.Fail(v, "expected a node id, a node set name or a selection {cylinder: ...} or {box: ...}");
       // an unquoted whole number is a node id; anything else names a set
       double x = 0.0;
       bool number = v.Tag() != "!";
@@ -373,6 +410,8 @@ class FeModelFileParser {
     }
     return out;
   }
+
+  std::vector<int> Selected(const YAML::Node& v) { return SelectNodes(*mesh_, MeshName(), v, ctx_); }
 
   std::string MeshName() const {
     return mesh_name_.empty() ? fs::path(mesh_->source).filename().string() : mesh_name_;
@@ -406,13 +445,15 @@ class FeModelFileParser {
   }
 
   void ParseFixed(const YAML::Node& node) {
-    const std::vector<YAML::Node> items = Items(node, "a node id, a node set name, a map {nodes, dofs} or a list");
+    const std::vector<YAML::Node> items =
+        node.IsMap() ? std::vector<YAML::Node>{node}
+                     : Items(node, "a node id, a node set name, a selection, a map {nodes, dofs} or a list");
     for (size_t k = 0; k < items.size(); ++k) {
       const YAML::Node v = items[k];
       ctx_.SetEntity("fixed #" + std::to_string(k + 1));
       std::vector<int> nodes;
       int dofs = 0b111111;
-      if (v.IsMap()) {
+      if (v.IsMap() && (v["nodes"] || v["dofs"])) {
         ctx_.CheckKeys(v, {"nodes", "dofs"});
         if (!v["nodes"]) ctx_.Fail(v, "missing required key 'nodes'");
         nodes = Nodes(v["nodes"]);
@@ -487,7 +528,15 @@ class FeModelFileParser {
       link.id = next_id++;
       link.independent = OneNode(s, "independent");
       if (!s["dependent"]) ctx_.Fail(s, "missing required key 'dependent'");
-      std::vector<int> dep = Nodes(s["dependent"]);
+      // a selection leaves out the independent node (often on the face it picks)
+      std::vector<int> dep;
+      const YAML::Node d = s["dependent"];
+      for (const YAML::Node& item : d.IsMap() ? std::vector<YAML::Node>{d} : Items(d, "dependent nodes")) {
+        std::vector<int> nodes = Nodes(item);
+        if (item.IsMap()) nodes.erase(std::remove(nodes.begin(), nodes.end(), link.independent), nodes.end());
+        dep.insert(dep.end(), nodes.begin(), nodes.end());
+      }
+      if (dep.empty()) ctx_.Fail(d, "the selection picks no node but the independent one");
       std::set<int> seen;
       for (int n : dep) {
         if (n == link.independent)

@@ -178,7 +178,25 @@ fe::FeModel ReadImportedMatrices(const ImportedMatricesSpec& spec) {
   fe::FeModel model;
   model.mesh = default_map ? std::move(geometry) : ReadGeometry(spec.geometry);
   model.mesh.IndexNodes();
-  // constraints, links and masses of a geometry deck are already in the matrices
+  // constraints, links and masses of a geometry deck are taken to be in the
+  // matrices already (a package exports what it assembled); say so
+  {
+    const fe::Mesh& g = model.mesh;
+    std::string dropped;
+    auto count = [&](size_t n, const char* what) {
+      if (n > 0) dropped += (dropped.empty() ? "" : ", ") + std::to_string(n) + " " + what;
+    };
+    count(g.constraints.size(), "single-point constraints");
+    count(g.rigid_links.size(), "rigid links");
+    count(g.linear_constraints.size(), "linear constraint rows");
+    count(g.point_masses.size(), "point masses");
+    count(g.springs.size(), "springs");
+    if (!dropped.empty())
+      LogWarning(spec.geometry + ": its " + dropped +
+                 " are not applied to the imported matrices (taken as already in them); to add them, list them "
+                 "under 'fixed', 'rigid_links' or 'point_masses' in an FE model file (docs/model-file.md, "
+                 "\"Imported matrices\")");
+  }
   model.mesh.constraints.clear();
   model.mesh.rigid_links.clear();
   model.mesh.linear_constraints.clear();

@@ -250,7 +250,7 @@ TEST(FeModelFile, ImportedMatricesFromAnFeModelFile) {
   const std::string msg = InputErrorOf([] {
     LoadFeModel(WriteScratch("imported_bad.yaml", "matrices: {stiffness: a, mass: b}\nmaterials: {}\n"));
   });
-  EXPECT_NE(msg.find("imported_bad.yaml:2: unknown key 'materials' (allowed: matrices, fixed)"), std::string::npos)
+  EXPECT_NE(msg.find("imported_bad.yaml:2: unknown key 'materials' (allowed: matrices, nodes, fixed, point_masses, rigid_links)"), std::string::npos)
       << msg;
 }
 
