@@ -22,7 +22,11 @@ fe::SparseMat HarwellBoeingMatrixOf(const std::string& path, const std::string&,
 
 // .mtx: Matrix Market, or Abaqus's coordinate format when the banner is
 // missing and the first entry line is "ROW COLUMN VALUE"
-fe::SparseMat MatrixMarketMatrixOf(const std::string& path, const std::string&, int n) {
+fe::SparseMat MatrixMarketMatrixOf(const std::string& path, const std::string& what, int n) {
+  if (IsAbaqusLabelledMatrixFile(path))
+    throw InputError("is in Abaqus's labelled format (FORMAT=MATRIX INPUT, rows named by node and DOF), which is "
+                     "read only as a stiffness and mass pair of imported matrices (docs/formats.md)",
+                     {path, 0, what});
   if (!IsAbaqusCoordinateMatrixFile(path)) return ReadMatrixMarket(path).A;
   // equations after the last stored entry (no stiffness, no mass) come back
   // when the DOF map says how many there are

@@ -11,6 +11,7 @@
 #include "flexmb/common/error.h"
 #include "flexmb/common/log.h"
 #include "flexmb/common/text.h"
+#include "flexmb/fe_io/abaqus/abaqus_matrix.h"
 #include "flexmb/fe_io/calculix_matrices.h"
 #include "flexmb/fe_io/dof_map.h"
 #include "flexmb/fe_io/format_registry.h"
@@ -121,7 +122,28 @@ fe::FeModel ReadImportedMatrices(const ImportedMatricesSpec& spec) {
   fe::SparseMat K, M;
   fe::Mesh geometry;
   const bool default_map = dof_path.empty();
-  if (default_map) {
+  auto labelled = [](const std::string& path) {
+    return LowerExtension(path) == ".mtx" && IsAbaqusLabelledMatrixFile(path);
+  };
+  if (labelled(spec.stiffness) || labelled(spec.mass)) {
+    // Abaqus's FORMAT=MATRIX INPUT: the files name every row's node and DOF
+    const bool k_labelled = labelled(spec.stiffness);
+    if (!k_labelled || !labelled(spec.mass))
+      throw InputError("is in Abaqus's labelled format (FORMAT=MATRIX INPUT) but " +
+                           (k_labelled ? spec.mass : spec.stiffness) + " is not: write both in the same format",
+                       {k_labelled ? spec.stiffness : spec.mass, 0, k_labelled ? "K" : "M"});
+    if (!default_map)
+      throw InputError("Abaqus's labelled matrices (FORMAT=MATRIX INPUT) name the node and DOF of every row "
+                       "themselves: leave out the DOF map",
+                       {spec.dof_map, 0, "dof_map"});
+    AbaqusLabelledMatrices read = ReadAbaqusLabelledMatrices(spec.stiffness, spec.mass);
+    K = std::move(read.K);
+    M = std::move(read.M);
+    map.file = spec.stiffness;
+    for (const auto& [node, component] : read.dofs) map.rows.push_back({node, component, 0});
+    dof_path = spec.stiffness;
+    geometry = ReadGeometry(spec.geometry);
+  } else if (default_map) {
     geometry = ReadGeometry(spec.geometry);
     K = ReadMatrix(spec.stiffness, "K", 0);
     M = ReadMatrix(spec.mass, "M", 0);

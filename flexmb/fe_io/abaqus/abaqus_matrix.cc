@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,138 @@ std::vector<std::string_view> EntryFields(std::string_view line) {
   return out;
 }
 
+// one stored entry: its row and column keys (the coordinate format's 1-based
+// indices, or node * 8 + DOF of the labelled format) and its line
+struct Entry {
+  long long row, col;
+  double value;
+  int line;
+};
+
+// the labelled format's key of node `node`, DOF `dof` (1..6)
+long long LabelKey(long long node, long long dof) { return node * 8 + dof; }
+
+// reads every entry line: ROW COLUMN VALUE (labelled = false) or NODE, DOF,
+// NODE, DOF, VALUE (labelled = true); checks the fields, the indices and
+// that no position is given twice
+std::vector<Entry> ReadEntries(const std::string& path, bool labelled) {
+  const std::string text = ReadWholeFile(path);
+  const std::vector<std::string_view> lines = SplitLines(text);
+  const size_t fields = labelled ? 5 : 3;
+  const char* form = labelled ? "'NODE, DOF, NODE, DOF, VALUE' (Abaqus *MATRIX OUTPUT, FORMAT=MATRIX INPUT)"
+                              : "'ROW COLUMN VALUE' (Abaqus *MATRIX OUTPUT, FORMAT=COORDINATE)";
+  std::vector<Entry> entries;
+  for (size_t l = 0; l < lines.size(); ++l) {
+    if (Skipped(lines[l])) continue;
+    const int line = static_cast<int>(l) + 1;
+    const std::string entity = "entry " + std::to_string(entries.size() + 1);
+    const std::vector<std::string_view> f = EntryFields(lines[l]);
+    if (f.size() != fields)
+      throw InputError(std::string("expected ") + form + ", found " + std::to_string(f.size()) + " fields",
+                       {path, line, entity});
+    Entry e{0, 0, 0.0, line};
+    if (labelled) {
+      long long n[2] = {0, 0}, d[2] = {0, 0};
+      for (int k = 0; k < 2; ++k) {
+        if (!ParseIntegerToken(f[2 * k], n[k]) || !ParseIntegerToken(f[2 * k + 1], d[k]))
+          throw InputError("node labels and DOF must be integers, got " + QuoteToken(f[2 * k]) + " " +
+                               QuoteToken(f[2 * k + 1]),
+                           {path, line, entity});
+        if (n[k] < 1 || n[k] > kMaxDimension)
+          throw InputError("node label " + std::to_string(n[k]) +
+                               (n[k] < 1 ? " is an Abaqus internal node (a Lagrange multiplier, a hybrid element's "
+                                           "pressure or a constraint's node), which has no place in the geometry: "
+                                           "generate the matrices without such elements and constraints"
+                                         : " is too large"),
+                           {path, line, entity});
+        if (d[k] < 1 || d[k] > 6)
+          throw InputError("DOF " + std::to_string(d[k]) + " of node " + std::to_string(n[k]) +
+                               " is not a displacement or rotation (1-6): warping, pressure and temperature DOF "
+                               "are not supported",
+                           {path, line, entity});
+      }
+      e.row = LabelKey(n[0], d[0]);
+      e.col = LabelKey(n[1], d[1]);
+    } else {
+      if (!ParseIntegerToken(f[0], e.row) || !ParseIntegerToken(f[1], e.col))
+        throw InputError("row and column must be integers, got " + QuoteToken(f[0]) + " " + QuoteToken(f[1]),
+                         {path, line, entity});
+      if (e.row < 1 || e.col < 1 || e.row > kMaxDimension || e.col > kMaxDimension)
+        throw InputError("index (" + std::to_string(e.row) + ", " + std::to_string(e.col) + ") outside 1.." +
+                             std::to_string(kMaxDimension),
+                         {path, line, entity});
+    }
+    if (!ParseDoubleToken(f[fields - 1], e.value))
+      throw InputError("malformed value " + QuoteToken(f[fields - 1]), {path, line, entity});
+    if (!std::isfinite(e.value)) throw InputError("value is not finite", {path, line, entity});
+    entries.push_back(e);
+  }
+  if (entries.empty()) throw InputError(std::string("no entries (expected ") + form + " lines)", {path, 0, "matrix"});
+  // each position once (sorted: neighbours; no per-entry map for models of
+  // millions of entries)
+  std::vector<size_t> order(entries.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    const Entry &x = entries[a], &y = entries[b];
+    return x.row != y.row ? x.row < y.row : x.col != y.col ? x.col < y.col : x.line < y.line;
+  });
+  auto name = [&](long long key) {
+    return labelled ? std::to_string(key / 8) + " " + std::to_string(key % 8) : std::to_string(key);
+  };
+  for (size_t k = 1; k < order.size(); ++k) {
+    const Entry &a = entries[order[k - 1]], &e = entries[order[k]];
+    if (a.row == e.row && a.col == e.col) {
+      const std::string where = "(" + name(e.row) + ", " + name(e.col) + ")";
+      throw InputError("position " + where + " given twice (also line " + std::to_string(a.line) + ")",
+                       {path, e.line, "entry " + where});
+    }
+  }
+  std::vector<Entry> sorted;
+  sorted.reserve(entries.size());
+  for (size_t k : order) sorted.push_back(entries[k]);
+  return sorted;
+}
+
+// the matrix of the entries (sorted by row, then column key), `index`
+// giving each key's row (0-based). A file in which no off-diagonal entry has
+// its transposed one holds one triangle (in whatever order the package
+// numbered its equations) and is mirrored
+fe::SparseMat MatrixOf(const std::vector<Entry>& entries, int n, const std::function<int(long long)>& index) {
+  const auto has = [&](long long row, long long col) {
+    const auto it = std::lower_bound(entries.begin(), entries.end(), std::make_pair(row, col),
+                                     [](const Entry& e, const std::pair<long long, long long>& p) {
+                                       return e.row != p.first ? e.row < p.first : e.col < p.second;
+                                     });
+    return it != entries.end() && it->row == row && it->col == col;
+  };
+  bool mirror = true;
+  for (const Entry& e : entries)
+    if (e.row != e.col && has(e.col, e.row)) {
+      mirror = false;
+      break;
+    }
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(entries.size() * (mirror ? 2 : 1));
+  for (const Entry& e : entries) {
+    const int i = index(e.row), j = index(e.col);
+    t.emplace_back(i, j, e.value);
+    if (mirror && i != j) t.emplace_back(j, i, e.value);
+  }
+  fe::SparseMat A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  A.makeCompressed();
+  return A;
+}
+
+// the first line of a file that is neither blank nor a "**" comment
+std::string FirstEntryLine(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  while (std::getline(in, line))
+    if (!Skipped(line)) return line;
+  return "";
+}
+
 }  // namespace
 
 bool LooksLikeAbaqusCoordinateMatrix(std::string_view first_line) {
@@ -44,77 +177,52 @@ bool LooksLikeAbaqusCoordinateMatrix(std::string_view first_line) {
 }
 
 bool IsAbaqusCoordinateMatrixFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (Skipped(line)) continue;
-    return LooksLikeAbaqusCoordinateMatrix(line);  // a banner or anything else is not
-  }
-  return false;
+  return LooksLikeAbaqusCoordinateMatrix(FirstEntryLine(path));  // a banner or anything else is not
 }
 
-fe::SparseMat ReadAbaqusCoordinateMatrix(const std::string& path) {
-  const std::string text = ReadWholeFile(path);
-  const std::vector<std::string_view> lines = SplitLines(text);
-  struct Entry {
-    long long row, col;
-    double value;
-    int line;
-  };
-  std::vector<Entry> entries;
+bool LooksLikeAbaqusLabelledMatrix(std::string_view first_line) {
+  const std::vector<std::string_view> f = EntryFields(first_line);
   long long n = 0;
-  bool lower = false, upper = false;
-  for (size_t l = 0; l < lines.size(); ++l) {
-    if (Skipped(lines[l])) continue;
-    const int line = static_cast<int>(l) + 1;
-    const std::string entity = "entry " + std::to_string(entries.size() + 1);
-    const std::vector<std::string_view> f = EntryFields(lines[l]);
-    if (f.size() != 3)
-      throw InputError("expected 'ROW COLUMN VALUE' (Abaqus *MATRIX OUTPUT, FORMAT=COORDINATE), found " +
-                           std::to_string(f.size()) + " fields",
-                       {path, line, entity});
-    Entry e{0, 0, 0.0, line};
-    if (!ParseIntegerToken(f[0], e.row) || !ParseIntegerToken(f[1], e.col))
-      throw InputError("row and column must be integers, got " + QuoteToken(f[0]) + " " + QuoteToken(f[1]),
-                       {path, line, entity});
-    if (e.row < 1 || e.col < 1 || e.row > kMaxDimension || e.col > kMaxDimension)
-      throw InputError("index (" + std::to_string(e.row) + ", " + std::to_string(e.col) + ") outside 1.." +
-                           std::to_string(kMaxDimension),
-                       {path, line, entity});
-    if (!ParseDoubleToken(f[2], e.value)) throw InputError("malformed value " + QuoteToken(f[2]), {path, line, entity});
-    if (!std::isfinite(e.value)) throw InputError("value is not finite", {path, line, entity});
-    n = std::max({n, e.row, e.col});
-    lower = lower || e.row > e.col;
-    upper = upper || e.row < e.col;
-    entries.push_back(e);
-  }
-  if (entries.empty()) throw InputError("no entries (expected 'ROW COLUMN VALUE' lines)", {path, 0, "matrix"});
-  // each position once (sorted: neighbours; no per-entry map for models of
-  // millions of entries); one triangle only is mirrored
-  const bool mirror = !(lower && upper);
-  std::vector<size_t> order(entries.size());
-  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    const Entry &x = entries[a], &y = entries[b];
-    return x.row != y.row ? x.row < y.row : x.col != y.col ? x.col < y.col : x.line < y.line;
-  });
-  for (size_t k = 1; k < order.size(); ++k) {
-    const Entry &a = entries[order[k - 1]], &e = entries[order[k]];
-    if (a.row == e.row && a.col == e.col)
-      throw InputError("position (" + std::to_string(e.row) + ", " + std::to_string(e.col) +
-                           ") given twice (also line " + std::to_string(a.line) + ")",
-                       {path, e.line, "entry (" + std::to_string(e.row) + ", " + std::to_string(e.col) + ")"});
-  }
-  std::vector<Eigen::Triplet<double>> t;
-  t.reserve(entries.size() * (mirror ? 2 : 1));
-  for (const Entry& e : entries) {
-    t.emplace_back(static_cast<int>(e.row - 1), static_cast<int>(e.col - 1), e.value);
-    if (mirror && e.row != e.col) t.emplace_back(static_cast<int>(e.col - 1), static_cast<int>(e.row - 1), e.value);
-  }
-  fe::SparseMat A(static_cast<int>(n), static_cast<int>(n));
-  A.setFromTriplets(t.begin(), t.end());
-  A.makeCompressed();
-  return A;
+  double v = 0.0;
+  if (f.size() != 5 || !ParseDoubleToken(f[4], v)) return false;
+  for (int k = 0; k < 4; ++k)
+    if (!ParseIntegerToken(f[static_cast<size_t>(k)], n)) return false;
+  return true;
+}
+
+bool IsAbaqusLabelledMatrixFile(const std::string& path) { return LooksLikeAbaqusLabelledMatrix(FirstEntryLine(path)); }
+
+fe::SparseMat ReadAbaqusCoordinateMatrix(const std::string& path) {
+  const std::vector<Entry> entries = ReadEntries(path, false);
+  long long n = 0;
+  for (const Entry& e : entries) n = std::max({n, e.row, e.col});
+  return MatrixOf(entries, static_cast<int>(n), [](long long key) { return static_cast<int>(key - 1); });
+}
+
+AbaqusLabelledMatrices ReadAbaqusLabelledMatrices(const std::string& k_path, const std::string& m_path) {
+  const std::vector<Entry> k = ReadEntries(k_path, true), m = ReadEntries(m_path, true);
+  // rows: every (node, DOF) of either file, in node and DOF order
+  std::vector<long long> keys;
+  keys.reserve(2 * (k.size() + m.size()));
+  for (const std::vector<Entry>* list : {&k, &m})
+    for (const Entry& e : *list) {
+      keys.push_back(e.row);
+      keys.push_back(e.col);
+    }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  if (keys.size() > static_cast<size_t>(kMaxDimension))
+    throw InputError("more than " + std::to_string(kMaxDimension) + " rows", {k_path, 0, "matrix"});
+  const auto index = [&](long long key) {
+    return static_cast<int>(std::lower_bound(keys.begin(), keys.end(), key) - keys.begin());
+  };
+  AbaqusLabelledMatrices out;
+  const int n = static_cast<int>(keys.size());
+  out.K = MatrixOf(k, n, index);
+  out.M = MatrixOf(m, n, index);
+  for (long long key : keys) out.dofs.push_back({static_cast<int>(key / 8), static_cast<int>(key % 8)});
+  return out;
 }
 
 }  // namespace flexmb::io
+

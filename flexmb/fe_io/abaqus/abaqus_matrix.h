@@ -1,17 +1,22 @@
 #pragma once
 /// \file abaqus_matrix.h
-/// The matrices Abaqus writes for *MATRIX GENERATE with *MATRIX OUTPUT,
-/// FORMAT=COORDINATE (job_STIF1.mtx, job_MASS1.mtx): one "ROW COLUMN VALUE"
-/// line per stored entry, blank- or comma-separated, 1-based global
-/// equation numbers (the nodes' DOF in node order), no header; lines
-/// starting with "**" are comments. Both triangles are usually written; a
-/// file with one triangle only is mirrored. The extension .mtx is shared
-/// with Matrix Market: a .mtx file without the "%%MatrixMarket" banner whose
-/// first entry line has three numbers is read as this format. Described in
-/// docs/formats.md.
+/// The matrices Abaqus writes for *MATRIX GENERATE with *MATRIX OUTPUT
+/// (job_STIF1.mtx, job_MASS1.mtx), in two of its formats:
+/// - FORMAT=COORDINATE: one "ROW COLUMN VALUE" line per stored entry, 1-based
+///   global equation numbers (the nodes' DOF in node order);
+/// - FORMAT=MATRIX INPUT (Abaqus's default, the format *MATRIX INPUT reads):
+///   one "NODE, DOF, NODE, DOF, VALUE" line per stored entry, so the file
+///   names the node and component of every row itself.
+/// Fields are blank- or comma-separated, there is no header, lines starting
+/// with "**" are comments. Both triangles, or one triangle only (mirrored).
+/// The extension .mtx is shared with Matrix Market: a .mtx file without the
+/// "%%MatrixMarket" banner is told by its first entry line (three or five
+/// numbers). Described in docs/formats.md.
 
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "flexmb/fe/assembly.h"
 
@@ -33,5 +38,28 @@ bool IsAbaqusCoordinateMatrixFile(const std::string& path);
 /// an index < 1 or too large, a non-finite value, a position given twice
 /// ((i, j) again, or (j, i) twice), or an empty file.
 fe::SparseMat ReadAbaqusCoordinateMatrix(const std::string& path);
+
+/// True if `first_line` looks like an entry of Abaqus's labelled format
+/// (FORMAT=MATRIX INPUT): five fields, four integers and a number.
+bool LooksLikeAbaqusLabelledMatrix(std::string_view first_line);
+
+/// True if the file at `path` is in Abaqus's labelled format by its first
+/// line that is neither blank nor a "**" comment; reads only up to it.
+bool IsAbaqusLabelledMatrixFile(const std::string& path);
+
+/// A stiffness and a mass matrix in Abaqus's labelled format, on the union
+/// of the (node, DOF) pairs the two files name, sorted by node label, then
+/// DOF: row r is node dofs[r].first, component dofs[r].second (1..6).
+struct AbaqusLabelledMatrices {
+  fe::SparseMat K, M;
+  std::vector<std::pair<int, int>> dofs;
+};
+
+/// Reads the two labelled files. Throws InputError naming the file, line and
+/// entry for a malformed line, a node label < 1 (an Abaqus internal node: a
+/// Lagrange multiplier or a constraint's node), a DOF outside 1..6 (warping,
+/// pressure, temperature), a non-finite value, a position given twice, or an
+/// empty file.
+AbaqusLabelledMatrices ReadAbaqusLabelledMatrices(const std::string& k_path, const std::string& m_path);
 
 }  // namespace flexmb::io

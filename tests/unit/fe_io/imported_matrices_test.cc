@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "flexmb/fe_io/dof_map.h"
+#include "flexmb/fe_io/format_registry.h"
 #include "flexmb/fe_io/harwell_boeing.h"
 #include "flexmb/fe_io/matrix_market.h"
 #include "flexmb/fe_io/vtk_mesh.h"
@@ -123,6 +124,72 @@ TEST(ImportedMatrices, ReadsAbaqusCoordinateMatrices) {
                           {neither + ":1: banner", "not a Matrix Market file"}, "neither");
 }
 
+struct BadCase {
+  const char* name;
+  ImportedMatricesSpec spec;
+  std::string where;   // file (and line, entity) expected in the message
+  const char* what;
+};
+
+// Abaqus's default FORMAT=MATRIX INPUT: "NODE, DOF, NODE, DOF, VALUE"; the
+// rows are the (node, DOF) pairs named, in node and DOF order
+TEST(ImportedMatrices, ReadsAbaqusLabelledMatrices) {
+  const Fixture f;  // rows 10 ux, 20 ux, 20 uy, 30 uz
+  const int node[4] = {10, 20, 20, 30}, dof[4] = {1, 1, 2, 3};
+  const Eigen::MatrixXd k(f.K), m(f.M);
+  // K: one triangle, half its entries written (j, i) (another equation
+  // order); M: both triangles, the file's lines in reverse order
+  std::string kt = "** STIFFNESS MATRIX\n", mt;
+  char b[160];
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j <= i; ++j) {
+      if (k(i, j) == 0.0) continue;
+      const bool swap = (i + j) % 2 == 1;
+      const int r = swap ? j : i, c = swap ? i : j;
+      std::snprintf(b, sizeof b, "%d,%d, %d,%d, %.17g\n", node[r], dof[r], node[c], dof[c], k(r, c));
+      kt += b;
+    }
+  for (int i = 3; i >= 0; --i)
+    for (int j = 3; j >= 0; --j) {
+      if (m(i, j) == 0.0) continue;
+      std::snprintf(b, sizeof b, "%d,%d, %d,%d, %.17g\n", node[i], dof[i], node[j], dof[j], m(i, j));
+      mt += b;
+    }
+  const std::string kl = WriteScratch("abq_lab_STIF1.mtx", kt), ml = WriteScratch("abq_lab_MASS1.mtx", mt);
+  const fe::FeModel model = ReadImportedMatrices({kl, ml, "", f.geometry});
+  ASSERT_TRUE(model.imported);
+  EXPECT_EQ(Eigen::MatrixXd(model.imported->K), k);
+  EXPECT_EQ(Eigen::MatrixXd(model.imported->M), m);
+  EXPECT_EQ(model.imported->dofs.full[static_cast<size_t>(model.mesh.NodeIndex(20))],
+            (std::array<int, 6>{1, 2, -1, -1, -1, -1}));
+  // a DOF only M names is a row too (K's column and row of zeros)
+  const std::string m5 = WriteScratch("abq_lab_m5.mtx", mt + "30,1, 30,1, 0.5\n");
+  const fe::FeModel wider = ReadImportedMatrices({kl, m5, "", f.geometry});
+  EXPECT_EQ(wider.imported->dofs.n_free, 5);
+  EXPECT_EQ(wider.imported->dofs.full[static_cast<size_t>(wider.mesh.NodeIndex(30))],
+            (std::array<int, 6>{3, -1, 4, -1, -1, -1}));
+  EXPECT_EQ(Eigen::MatrixXd(wider.imported->K).row(3).norm(), 0.0);
+  const std::vector<BadCase> cases = {
+      {"internal node", {WriteScratch("abq_lab_internal.mtx", "10,1, 10,1, 1.\n-3,1, 10,1, 2.\n"), ml, "", f.geometry},
+       "abq_lab_internal.mtx:2: entry 2", "node label -3 is an Abaqus internal node"},
+      {"DOF 8", {WriteScratch("abq_lab_dof.mtx", "10,1, 10,1, 1.\n20,8, 20,8, 2.\n"), ml, "", f.geometry},
+       "abq_lab_dof.mtx:2: entry 2", "DOF 8 of node 20 is not a displacement or rotation"},
+      {"twice", {WriteScratch("abq_lab_twice.mtx", "10,1, 10,1, 1.\n20,1, 10,1, 2.\n10,1, 10,1, 3.\n"), ml, "", f.geometry},
+       "abq_lab_twice.mtx:3: entry (10 1, 10 1)", "given twice (also line 1)"},
+      {"fields", {WriteScratch("abq_lab_fields.mtx", "10,1, 10,1, 1.\n20,1, 10,1\n"), ml, "", f.geometry},
+       "abq_lab_fields.mtx:2: entry 2", "'NODE, DOF, NODE, DOF, VALUE'"},
+      {"mixed formats", {kl, f.m_hb, "", f.geometry}, kl + ": K: ", "labelled format (FORMAT=MATRIX INPUT) but"},
+      {"DOF map given", {kl, ml, f.dof_map, f.geometry}, f.dof_map + ": dof_map: ", "leave out the DOF map"},
+      {"node not in geometry", {WriteScratch("abq_lab_ghost.mtx", "10,1, 10,1, 1.\n99,1, 99,1, 2.\n"), ml, "", f.geometry},
+       "abq_lab_ghost.mtx", "node 99 does not exist in the geometry"},
+  };
+  for (const BadCase& c : cases)
+    testing::ExpectContains(InputErrorOf([&] { ReadImportedMatrices(c.spec); }), {c.where, c.what}, c.name);
+  // one labelled matrix alone has no rows to go by
+  testing::ExpectContains(InputErrorOf([&] { FindMatrixFormat(kl)->read_matrix(kl, "K", 0); }),
+                          {kl + ": K: ", "read only as a stiffness and mass pair"}, "alone");
+}
+
 // no DOF map: 3 or 6 rows per node of the geometry, in its node order, with
 // a warning that says so
 TEST(ImportedMatrices, WithoutADofMapRowsAreThreeOrSixPerNodeInNodeOrder) {
@@ -159,12 +226,6 @@ TEST(ImportedMatrices, SymmetrizesRoundOffAsymmetry) {
   EXPECT_NEAR(K.coeff(0, 1), 0.3, 1e-16);
 }
 
-struct BadCase {
-  const char* name;
-  ImportedMatricesSpec spec;
-  std::string where;   // file (and line, entity) expected in the message
-  const char* what;
-};
 
 TEST(ImportedMatrices, BadInputNamesFileAndEntity) {
   const Fixture f;
