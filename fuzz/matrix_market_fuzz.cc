@@ -1,5 +1,6 @@
-// libFuzzer target for the .mtx readers, io::ReadMatrixMarket and
-// io::ReadAbaqusCoordinateMatrix (Abaqus's *MATRIX OUTPUT): any input must
+// libFuzzer target for the .mtx readers, io::ReadMatrixMarket,
+// io::ReadAbaqusCoordinateMatrix and io::ReadAbaqusLabelledMatrices (Abaqus's
+// *MATRIX OUTPUT, FORMAT=COORDINATE and MATRIX INPUT): any input must
 // give a matrix or a flexmb::Error, never a crash, hang or sanitizer report.
 // A Matrix Market matrix that was read is written back ("general", so any
 // matrix can be) and read again, and must come back bit for bit. Seeds:
@@ -20,6 +21,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     try {
       const flexmb::fe::SparseMat a = flexmb::io::ReadAbaqusCoordinateMatrix(path);
       if (a.rows() != a.cols()) std::abort();
+    } catch (const flexmb::Error&) {
+    }
+    try {
+      const flexmb::io::AbaqusLabelledMatrices l = flexmb::io::ReadAbaqusLabelledMatrices(path, path);
+      if (l.K.rows() != static_cast<long>(l.dofs.size()) || l.M.rows() != l.K.rows()) std::abort();
     } catch (const flexmb::Error&) {
     }
     const flexmb::io::MatrixMarketMatrix m = flexmb::io::ReadMatrixMarket(path);
