@@ -16,6 +16,7 @@
 #include "flexmb/fe/elements/solid_tet10.h"
 #include "flexmb/fe/elements/solid_tet4.h"
 #include "flexmb/fe/elements/solid_wedge15.h"
+#include "flexmb/fe/elements/solid_pyramid5.h"
 #include "flexmb/fe/elements/solid_wedge6.h"
 
 namespace flexmb::fe {
@@ -51,6 +52,7 @@ void TraitsHex8SelectiveMatrices(const ElementInput& in, MatX& K, MatX& M) {
   SolidHex8Matrices(in, K, M, Hex8Formulation::kSelectiveReduced);
 }
 void TraitsWedge6Matrices(const ElementInput& in, MatX& K, MatX& M) { SolidWedge6Matrices(in, K, M); }
+void TraitsPyramid5Matrices(const ElementInput& in, MatX& K, MatX& M) { SolidPyramid5Matrices(in, K, M); }
 void TraitsWedge15Matrices(const ElementInput& in, MatX& K, MatX& M) { SolidWedge15Matrices(in, K, M); }
 void TraitsHex20Matrices(const ElementInput& in, MatX& K, MatX& M) {
   SolidHex20Matrices(in, K, M, Hex20Integration::kFull);
@@ -68,6 +70,7 @@ constexpr const char* kTraitsCbar[] = {"CBAR", "CBEAM"};
 constexpr const char* kTraitsCtetra[] = {"CTETRA"};
 constexpr const char* kTraitsChexa[] = {"CHEXA"};
 constexpr const char* kTraitsCpenta[] = {"CPENTA"};
+constexpr const char* kTraitsCpyram[] = {"CPYRAM"};
 constexpr const char* kTraitsCrod[] = {"CROD", "CONROD", "CTUBE"};
 constexpr const char* kTraitsCshear[] = {"CSHEAR"};
 
@@ -91,6 +94,7 @@ constexpr AbaqusName kTraitsC3D8[] = {{"C3D8I"}, {"C3D8R", AbaqusVariant::kOther
 // (abaqus_mesh.cc, docs/formats.md); this row is CalculiX's
 constexpr AbaqusName kTraitsC3D8Full[] = {{"C3D8"}};
 constexpr AbaqusName kTraitsC3D6[] = {{"C3D6"}};
+constexpr AbaqusName kTraitsC3D5[] = {{"C3D5"}};
 constexpr AbaqusName kTraitsC3D15[] = {{"C3D15"}};
 constexpr AbaqusName kTraitsC3D20[] = {{"C3D20"}};
 constexpr AbaqusName kTraitsC3D20R[] = {{"C3D20R"}};
@@ -424,6 +428,22 @@ constexpr ElementTraits kTraitsRows[] = {
      .stress = TraitsSolidStress<SolidHex8Stress>,
      .corner_stress = SolidHex8CornerStress,
      .geometric_stiffness = TraitsGeometric<SolidHex8GeometricStiffness>},
+    {.type = kPyramid5,
+     .name = "pyramid5",
+     .description = "5-node pyramid",
+     .nodes = 5,
+     .corners = 5,
+     .family = ElementFamily::kSolid,
+     .nastran_cards = kTraitsCpyram,
+     .nastran_card_grids = 13,
+     .abaqus = kTraitsC3D5,
+     .gmsh_code = 7,
+     .vtk_code = 14,
+     .body_file_code = 17,
+     .matrices = TraitsPyramid5Matrices,
+     .stress = TraitsSolidStress<SolidPyramid5Stress>,
+     .corner_stress = SolidPyramid5CornerStress,
+     .geometric_stiffness = TraitsGeometric<SolidPyramid5GeometricStiffness>},
 };
 
 constexpr bool TraitsRowsInIdOrder() {

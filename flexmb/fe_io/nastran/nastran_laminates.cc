@@ -5,6 +5,7 @@
 // lamination theory (fe/laminate.h); what is approximated: docs/formats.md,
 // "Nastran bulk data", and docs/design.md, "Laminated shells".
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <memory>
 #include <string>

@@ -55,7 +55,7 @@ const std::set<std::string> kSilent = {"PARAM", "EIGRL", "EIGR", "SPCADD", "MPCA
 const std::set<std::string> kUnsupported = {
     "CBUSH1D", "CBUSH2D",
     "CELAS3", "CELAS4", "CGAP",    "CQUAD",
-    "CPYRAM", "CBEND",   "CBEAM3",  "CWELD",   "CFAST",  "CSEAM",
+    "CBEND",   "CBEAM3",  "CWELD",   "CFAST",  "CSEAM",
     "CTRIAX", "CTRIAX6", "CQUADX", "CMASS3",  "CMASS4",
     "GENEL",  "CRAC2D", "CRAC3D",  "RBE1",    "RROD",
     "RTRPLT", "RTRPLT1", "RSPLINE", "RJOINT", "RSSCON",
