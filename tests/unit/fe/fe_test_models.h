@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
+#include <array>
 #include <cstdlib>
 #include <initializer_list>
 #include <string>
@@ -61,6 +62,56 @@ inline void ExpectSixRigidModes(const MatX& K, const std::vector<Vec3>& x, int d
   EXPECT_LT((r.transpose() * K * r).norm(), 1e-11 * top);
 }
 
+/// Analytic rigid-body mass (6 x 6, as RigidModes' columns) of a body made of
+/// tetrahedra (corner lists), density rho: int x x^T dV = V / 20 (sum x_i
+/// x_i^T + s s^T), s = sum x_i.
+inline Eigen::Matrix<double, 6, 6> TetsRigidMass(const std::vector<std::array<Vec3, 4>>& tets, double rho) {
+  double m = 0.0;
+  Vec3 s1 = Vec3::Zero();
+  Mat3 s2 = Mat3::Zero();
+  for (const auto& t : tets) {
+    const double v = std::abs((t[1] - t[0]).cross(t[2] - t[0]).dot(t[3] - t[0])) / 6.0;
+    const Vec3 s = t[0] + t[1] + t[2] + t[3];
+    Mat3 q = s * s.transpose();
+    for (const Vec3& p : t) q += p * p.transpose();
+    m += rho * v;
+    s1 += rho * v * s / 4.0;
+    s2 += rho * v / 20.0 * q;
+  }
+  Eigen::Matrix<double, 6, 6> out;
+  out << m * Mat3::Identity(), -Skew(s1), Skew(s1), s2.trace() * Mat3::Identity() - s2;
+  return out;
+}
+
+/// One solid element on nodes 0 .. n-1 with E = 2e11 Pa, nu = 0.3, rho = 7800
+/// kg/m^3, for element tests; Compute goes through the traits table, as the
+/// assembler does.
+struct OneSolid {
+  Element element;
+  Material material;
+  std::vector<Vec3> x;
+
+  OneSolid(ElementType type, std::vector<Vec3> nodes, int id, Origin origin) {
+    element.id = id;
+    element.type = type;
+    element.origin = std::move(origin);
+    for (size_t i = 0; i < nodes.size(); ++i) element.nodes.push_back(static_cast<int>(i));
+    material.E = 2.0e11;
+    material.nu = 0.3;
+    material.rho = 7800.0;
+    x = std::move(nodes);
+  }
+  ElementInput Input(MassForm form = MassForm::kConsistent) const {
+    ElementInput in;
+    in.element = &element;
+    in.x = x.data();
+    in.material = &material;
+    in.mass_form = form;
+    return in;
+  }
+  void Compute(MatX& K, MatX& M, MassForm form = MassForm::kConsistent) const { ElementMatrices(Input(form), K, M); }
+};
+
 /// Solves K u = 0 for the DOF not marked `fixed`, the fixed ones taking their
 /// values from `u_fixed`; returns the whole u.
 inline Eigen::VectorXd SolvePrescribed(const MatX& k, const std::vector<bool>& fixed,
@@ -96,6 +147,32 @@ MatX DenseStiffness(int n_nodes, int dofs_per_node, const std::vector<std::vecto
         k.block(d * conn[a], d * conn[b], d, d) += ke.block(d * a, d * b, d, d);
   }
   return k;
+}
+
+/// Patch test on nodes x (3 DOF each) with `elements` (node lists) whose
+/// stiffness `element_stiffness(coordinates)` gives: the field u0 + A x
+/// (fixed u0, A; plus 1e-3 x^2 in ux with `quadratic`) prescribed on the
+/// nodes not `interior`; returns the largest error of the solved interior
+/// DOF against the field.
+template <class F>
+double PatchTestError(const std::vector<Vec3>& x, const std::vector<std::vector<int>>& elements,
+                      const std::vector<bool>& interior, F&& element_stiffness, bool quadratic = false) {
+  const MatX k = DenseStiffness(static_cast<int>(x.size()), 3, elements, [&](const std::vector<int>& conn) {
+    std::vector<Vec3> xe;
+    for (int i : conn) xe.push_back(x[static_cast<size_t>(i)]);
+    return MatX(element_stiffness(xe));
+  });
+  Mat3 A;
+  A << 1.0e-3, 2.0e-4, -3.0e-4, 5.0e-4, -2.0e-3, 1.0e-4, -4.0e-4, 6.0e-4, 1.5e-3;
+  const Vec3 u0(1.0e-3, -2.0e-3, 5.0e-4);
+  std::vector<bool> fixed(3 * x.size());
+  Eigen::VectorXd exact(3 * x.size());
+  for (size_t i = 0; i < x.size(); ++i) {
+    exact.segment<3>(3 * i) = u0 + A * x[i];
+    if (quadratic) exact(3 * i) += 1e-3 * x[i].x() * x[i].x();
+    for (int d = 0; d < 3; ++d) fixed[3 * i + d] = !interior[i];
+  }
+  return (SolvePrescribed(k, fixed, exact) - exact).cwiseAbs().maxCoeff();
 }
 
 /// Runs `f` and expects an InputError whose message contains every one of

@@ -31,7 +31,7 @@ using Mat6 = Eigen::Matrix<double, 6, 6>;
 using testing::ExpectInputErrorWith;
 using testing::RandomRotation;
 using testing::RigidModes;
-using testing::Skew;
+using testing::TetsRigidMass;
 
 // a solid element with its material; hex8 formulation selectable
 struct Solid {
@@ -70,27 +70,6 @@ struct Solid {
 // elements exceed 1e-6 of the largest
 void ExpectSixRigidModes(const MatX& K, const std::vector<Vec3>& x) {
   testing::ExpectSixRigidModes(K, x, 3, 1e-6);
-}
-
-// analytic rigid-body mass of a set of tetrahedra (corner lists), density rho:
-// int x x^T dV = V / 20 (sum x_i x_i^T + s s^T), s = sum x_i
-Mat6 TetsRigidMass(const std::vector<std::array<Vec3, 4>>& tets, double rho) {
-  double m = 0.0;
-  Vec3 s1 = Vec3::Zero();
-  Eigen::Matrix3d s2 = Eigen::Matrix3d::Zero();
-  for (const auto& t : tets) {
-    const double v = std::abs((t[1] - t[0]).cross(t[2] - t[0]).dot(t[3] - t[0])) / 6.0;
-    const Vec3 s = t[0] + t[1] + t[2] + t[3];
-    Eigen::Matrix3d q = s * s.transpose();
-    for (const Vec3& p : t) q += p * p.transpose();
-    m += rho * v;
-    s1 += rho * v * s / 4.0;
-    s2 += rho * v / 20.0 * q;
-  }
-  Mat6 out;
-  out << m * Eigen::Matrix3d::Identity(), -Skew(s1), Skew(s1),
-      s2.trace() * Eigen::Matrix3d::Identity() - s2;
-  return out;
 }
 
 const std::vector<Vec3> kTet = {
@@ -269,38 +248,19 @@ TEST(SolidElements, Hex8LumpedMassKeepsTheCentreOfMassOfATaperedElement) {
   EXPECT_NEAR(c.z(), 4.0 / 9.0, 1e-14);
 }
 
-// dense assembly of solid elements of one type (3 dof per node)
-MatX Assemble(ElementType type, const std::vector<Vec3>& x,
-              const std::vector<std::vector<int>>& elements, Hex8Formulation f) {
-  return testing::DenseStiffness(static_cast<int>(x.size()), 3, elements,
-                                 [&](const std::vector<int>& conn) {
-                                   std::vector<Vec3> xe;
-                                   for (int i : conn) xe.push_back(x[i]);
-                                   Solid s(type, xe, 1.0e3, 0.25, 1.0);
-                                   s.hex = f;
-                                   MatX ke, me;
-                                   s.Compute(ke, me);
-                                   return ke;
-                                 });
-}
-
 // prescribes u = u0 + A x on the boundary nodes, solves for the interior and
 // checks that the interior nodes follow the same linear field
 void PatchTest(ElementType type, const std::vector<Vec3>& x,
                const std::vector<std::vector<int>>& elements, const std::vector<bool>& interior,
                Hex8Formulation f = Hex8Formulation::kIncompatibleModes) {
-  const MatX k = Assemble(type, x, elements, f);
-  Eigen::Matrix3d A;
-  A << 1.0e-3, 2.0e-4, -3.0e-4, 5.0e-4, -2.0e-3, 1.0e-4, -4.0e-4, 6.0e-4, 1.5e-3;
-  const Vec3 u0(1.0e-3, -2.0e-3, 5.0e-4);
-  std::vector<bool> fixed(3 * x.size());
-  Eigen::VectorXd exact(3 * x.size());
-  for (size_t i = 0; i < x.size(); ++i) {
-    exact.segment<3>(3 * i) = u0 + A * x[i];
-    for (int d = 0; d < 3; ++d) fixed[3 * i + d] = !interior[i];
-  }
-  const Eigen::VectorXd u = testing::SolvePrescribed(k, fixed, exact);
-  EXPECT_LT((u - exact).cwiseAbs().maxCoeff(), 1e-12) << TypeName(type);
+  const double error = testing::PatchTestError(x, elements, interior, [&](const std::vector<Vec3>& xe) {
+    Solid s(type, xe, 1.0e3, 0.25, 1.0);
+    s.hex = f;
+    MatX ke, me;
+    s.Compute(ke, me);
+    return ke;
+  });
+  EXPECT_LT(error, 1e-12) << TypeName(type);
 }
 
 // MacNeal & Harder (1985) seven-element patch in the unit cube
