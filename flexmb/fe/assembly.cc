@@ -223,13 +223,17 @@ void AddImported(const AssembledModel& base, const Expansion& x, AssembledModel&
   }
   SparseMat Tb(nb, dm.n_free);
   Tb.setFromTriplets(t.begin(), t.end());
+  t.clear();
+  t.shrink_to_fit();
   const SparseMat Tbt = Tb.transpose();
   const bool full_is_free = dm.n_full == dm.n_free;
-  SparseMat K = Tbt * (base.K * Tb), M = Tbt * (base.M * Tb);
-  out.K = out.K + K;
-  out.M = out.M + M;
-  out.K.makeCompressed();
-  out.M.makeCompressed();
+  // one product at a time; exactly symmetric, as the element blocks are added
+  for (auto [a, sum] : {std::make_pair(&base.K, &out.K), std::make_pair(&base.M, &out.M)}) {
+    SparseMat p = Tbt * (*a * Tb);
+    const SparseMat pt = p.transpose();
+    *sum = *sum + 0.5 * (p + pt);
+    sum->makeCompressed();
+  }
   if (full_is_free) {
     out.M_full = out.M;
     return;
@@ -306,7 +310,8 @@ AssembledModel AssembleImpl(const Mesh& mesh, const AssemblyOptions& options, co
   if (base != nullptr) {
     if (base->dofs.full.size() > static_cast<size_t>(nn))
       throw InputError("the imported matrices name " + std::to_string(base->dofs.full.size()) +
-                       " nodes, the mesh has only " + std::to_string(nn));
+                           " nodes, the mesh has only " + std::to_string(nn),
+                       {mesh.source, 0, ""});
     for (size_t n = 0; n < base->dofs.full.size(); ++n)
       for (int c = 0; c < 6; ++c)
         if (base->dofs.full[n][c] >= 0) active[n] |= 1 << c;
@@ -716,6 +721,12 @@ AssembledModel Assemble(const Mesh& mesh, const AssemblyOptions& options) { retu
 
 AssembledModel AssembleImported(const Mesh& mesh, const AssembledModel& matrices, const AssemblyOptions& options) {
   if (!options.block_subset.empty()) throw InputError("imported matrices cannot be assembled block by block");
+  // as io::ReadImportedMatrices builds them: rows numbered as they are (full = free, T = I)
+  if (matrices.dofs.full != matrices.dofs.free || matrices.dofs.n_full != matrices.dofs.n_free ||
+      matrices.dofs.n_free != matrices.K.rows() || matrices.T.rows() != matrices.T.cols() ||
+      matrices.T.nonZeros() != matrices.T.rows())
+    throw InputError("the imported matrices must come as read, every row a free DOF (T the identity)",
+                     {mesh.source, 0, ""});
   const size_t n = static_cast<size_t>(matrices.K.rows());
   if (matrices.K.cols() != matrices.K.rows() || matrices.M.rows() != matrices.K.rows() ||
       matrices.M.cols() != matrices.K.cols())

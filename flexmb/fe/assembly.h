@@ -39,7 +39,9 @@ struct AssembledModel {
   /// keeps the element and point mass carried by dependent (rigid-link) and
   /// constrained nodes node by node, which the inertia invariants need (T^T
   /// M_full T is exact for the kinetic energy but mixes nodes). Imported
-  /// matrices: M_full = M as imported (full = free numbering).
+  /// matrices: M_full = M as imported (full = free numbering), or, with what
+  /// an FE model file adds to them (AssembleImported), M and the point
+  /// masses on the node-by-node full numbering.
   SparseMat M_full;
 };
 

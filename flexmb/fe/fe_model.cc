@@ -118,11 +118,7 @@ AssembledModel BuildMatrices(const FeModel& model, const AssemblyOptions& option
   if (!mesh.rigid_links.empty() || !mesh.point_masses.empty() || !mesh.springs.empty() ||
       !mesh.linear_constraints.empty() || imported.dofs.full.size() != mesh.nodes.size())
     return AssembleImported(mesh, imported, options);
-  const int nn = static_cast<int>(imported.dofs.free.size());
-  if (nn != static_cast<int>(mesh.nodes.size()))
-    throw InputError("the imported matrices' DOF map has " + std::to_string(nn) + " nodes, the geometry " +
-                         std::to_string(mesh.nodes.size()),
-                     {mesh.source, 0, ""});
+  const int nn = static_cast<int>(imported.dofs.free.size());  // == the mesh's nodes (above)
   std::vector<uint8_t> mask(nn, 0);
   if (options.apply_constraints) {
     for (const Constraint& c : mesh.constraints) {

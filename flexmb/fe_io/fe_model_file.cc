@@ -140,8 +140,10 @@ class FeModelFileParser {
         ctx_.Fail(s["id"], "'id' must be a positive whole number, got " + Quoted(s["id"].Scalar()));
       fe::Node n;
       n.id = static_cast<int>(id);
-      if (mesh_->NodeIndex(n.id) >= 0 || !added.insert(n.id).second)
+      if (mesh_->NodeIndex(n.id) >= 0)
         ctx_.Fail(s["id"], "node " + std::to_string(n.id) + " already exists in " + MeshName());
+      if (!added.insert(n.id).second)
+        ctx_.Fail(s["id"], "node " + std::to_string(n.id) + " is listed twice in 'nodes'");
       if (!s["x"]) ctx_.Fail(s, "missing required key 'x' (the node's position [x, y, z])");
       n.x = ctx_.Vector3(s, "x");
       n.origin = {path_, YamlContext::Line(s)};
@@ -453,7 +455,7 @@ class FeModelFileParser {
       ctx_.SetEntity("fixed #" + std::to_string(k + 1));
       std::vector<int> nodes;
       int dofs = 0b111111;
-      if (v.IsMap() && (v["nodes"] || v["dofs"])) {
+      if (v.IsMap() && !v["cylinder"] && !v["box"]) {
         ctx_.CheckKeys(v, {"nodes", "dofs"});
         if (!v["nodes"]) ctx_.Fail(v, "missing required key 'nodes'");
         nodes = Nodes(v["nodes"]);
@@ -533,10 +535,13 @@ class FeModelFileParser {
       const YAML::Node d = s["dependent"];
       for (const YAML::Node& item : d.IsMap() ? std::vector<YAML::Node>{d} : Items(d, "dependent nodes")) {
         std::vector<int> nodes = Nodes(item);
-        if (item.IsMap()) nodes.erase(std::remove(nodes.begin(), nodes.end(), link.independent), nodes.end());
+        if (item.IsMap()) {
+          nodes.erase(std::remove(nodes.begin(), nodes.end(), link.independent), nodes.end());
+          if (nodes.empty()) ctx_.Fail(item, "the selection picks no node but the independent one");
+        }
         dep.insert(dep.end(), nodes.begin(), nodes.end());
       }
-      if (dep.empty()) ctx_.Fail(d, "the selection picks no node but the independent one");
+      if (dep.empty()) ctx_.Fail(d, "'dependent' names no node");
       std::set<int> seen;
       for (int n : dep) {
         if (n == link.independent)

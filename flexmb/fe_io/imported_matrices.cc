@@ -215,9 +215,10 @@ fe::FeModel ReadImportedMatrices(const ImportedMatricesSpec& spec) {
     count(g.springs.size(), "springs");
     if (!dropped.empty())
       LogWarning(spec.geometry + ": its " + dropped +
-                 " are not applied to the imported matrices (taken as already in them); to add them, list them "
-                 "under 'fixed', 'rigid_links' or 'point_masses' in an FE model file (docs/model-file.md, "
-                 "\"Imported matrices\")");
+                 " are not applied to the imported matrices, which are taken to hold them already; if the export "
+                 "did not include them, list constraints, rigid links and point masses under 'fixed', "
+                 "'rigid_links' and 'point_masses' of an FE model file (docs/model-file.md, \"Imported "
+                 "matrices\"); springs and linear constraints (RBE3, MPC) cannot be added there");
   }
   model.mesh.constraints.clear();
   model.mesh.rigid_links.clear();

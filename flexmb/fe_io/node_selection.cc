@@ -11,7 +11,7 @@ namespace flexmb::io {
 std::vector<int> SelectNodes(const fe::Mesh& mesh, const std::string& mesh_name, const YAML::Node& v,
                              const YamlContext& ctx) {
   if (v.size() != 1 || !(v["cylinder"] || v["box"]))
-    ctx.Fail(v, "a node selection is {cylinder: {from, to, radius, tolerance}} or {box: {min, max}}");
+    ctx.Fail(v, "a node selection is {cylinder: {from, to, radius, tolerance}} or {box: {min, max, tolerance}}");
   std::vector<int> out;
   const int nn = static_cast<int>(mesh.nodes.size());
   double nearest = std::numeric_limits<double>::infinity();
@@ -39,12 +39,13 @@ std::vector<int> SelectNodes(const fe::Mesh& mesh, const std::string& mesh_name,
     what = "the cylinder";
   } else {
     const YAML::Node b = v["box"];
-    ctx.CheckKeys(b, {"min", "max"});
+    ctx.CheckKeys(b, {"min", "max", "tolerance"});
     const fe::Vec3 lo = ctx.Vector3(b, "min"), hi = ctx.Vector3(b, "max");
     if (!(lo.array() <= hi.array()).all()) ctx.Fail(b, "the box's 'min' must not exceed its 'max' in any axis");
+    const double tol = b["tolerance"] ? ctx.Positive(b, "tolerance") : 0.0;
     for (int n = 0; n < nn; ++n) {
       const fe::Vec3& x = mesh.nodes[n].x;
-      consider(n, std::max((lo - x).maxCoeff(), (x - hi).maxCoeff()));
+      consider(n, std::max((lo - x).maxCoeff(), (x - hi).maxCoeff()) - tol);
     }
     what = "the box";
   }
@@ -52,7 +53,8 @@ std::vector<int> SelectNodes(const fe::Mesh& mesh, const std::string& mesh_name,
     ctx.Fail(v, "the selection picks no node of " + mesh_name +
                      (nearest_node < 0 ? std::string(" (it has no nodes)")
                                        : ": the nearest is node " + std::to_string(mesh.nodes[nearest_node].id) +
-                                             ", " + fmt::format("{:.4g}", nearest) + " outside " + what));
+                                             ", which misses " + what + " by " + fmt::format("{:.4g}", nearest) +
+                                             " (beyond the tolerance)"));
   return out;
 }
 

@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -271,6 +272,13 @@ TEST_F(ReduceCli, BodyFromExportedModesEqualsDirectReduction) {
   ExpectFailure("reduce ex --modes-file ex/modes.mtx --interface 1 -o b.h5", 2, {"--modes-file", "--interface"});
   ExpectFailure("reduce '" + kHinge + "' --modes-file ex/modes.mtx -o b.h5", 2, {"modes.mtx"});
   EXPECT_FALSE(fs::exists(dir_ / "b.h5"));
+  // an FE model file that adds a node and a link to the exported matrices
+  // renumbers their rows: the modes file no longer fits them
+  std::ofstream(dir_ / "ex" / "links.yaml")
+      << "matrices: {stiffness: K_CCS.hb, mass: M_CCS.hb, dof_map: dof_map.txt, geometry: geometry.vtk}\n"
+         "nodes: [{id: 900001, x: [-0.1, 0.025, 0]}]\n"
+         "rigid_links: [{independent: 900001, dependent: [2]}]\n";
+  ExpectFailure("reduce ex/links.yaml --modes-file ex/modes.mtx -o b.h5", 2, {"modes.mtx", "renumbers"});
 }
 
 TEST_F(ReduceCli, FrameOption) {

@@ -192,6 +192,13 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
     ao.independent_nodes = ro.interface_nodes;  // as ReduceCraigBampton and fe export assemble
     const fe::AssembledModel a = fe::BuildMatrices(model, ao);
     t.assemble = Seconds(ta, Clock::now());
+    // the modes' rows are the matrices' own rows: nodes, links or masses an
+    // FE model file adds renumber them (fe::AssembleImported)
+    if (model.imported && a.dofs.free != model.imported->dofs.free)
+      throw InputError("the modes file's rows are those of the imported matrices, but this FE model file adds "
+                       "nodes, rigid links or point masses to them, which renumbers the degrees of freedom: reduce "
+                       "without --modes-file, or give the modes of the model as exported",
+                       {opt.modes_file, 0, "modes"});
     const reduction::CraigBamptonBasis basis = BasisOfModes(modes, model.mesh, a, opt.modes_file);
     return reduction::ReduceBasis(model, a, basis, ro, &t);
   });

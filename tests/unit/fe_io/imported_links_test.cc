@@ -12,6 +12,7 @@
 #include "flexmb/fe/modal.h"
 #include "flexmb/fe_io/exchange_set.h"
 #include "flexmb/fe_io/fe_model_file.h"
+#include "flexmb/fe_io/imported_matrices.h"
 #include "mesh_io_test_util.h"
 
 namespace flexmb::io {
@@ -180,6 +181,30 @@ TEST(ImportedLinks, AnImportedFaceTiedToAClampedNodeIsTheClampedModel) {
   EXPECT_NEAR(fe::ComputeMassProperties(massive.mesh, fe::BuildMatrices(massive, none)).mass, m0 + 2.0, 1e-12);
 }
 
+TEST(ImportedLinks, TheGeometrysOwnConstraintsAreLeftOutWithAWarning) {
+  // a deck as geometry: its SPC is not applied to the matrices, and says so
+  FeModel strip = LoadFeModel(FeData("gmsh/strip.yaml"));
+  AssemblyOptions none;
+  none.apply_constraints = false;
+  WriteExchangeSet(strip.mesh, fe::Assemble(strip.mesh, none), ScratchPath("links_warn_set"));
+  const std::string deck = WriteScratch("links_warn_geometry.inp",
+                                        "*NODE\n1, 0, 0, 0\n*BOUNDARY\n1, 1, 3\n");
+  testing::WarningCapture warnings;
+  try {
+    ReadImportedMatrices({ScratchPath("links_warn_set/K_CCS.hb"), ScratchPath("links_warn_set/M_CCS.hb"),
+                          ScratchPath("links_warn_set/dof_map.txt"), deck});
+  } catch (const InputError&) {
+    // the deck's one node does not carry the map's nodes: the warning comes first
+  }
+  EXPECT_EQ(warnings.Count("1 single-point constraints are not applied to the imported matrices"), 1);
+  // AssembleImported takes matrices as read (every row free, T = I) only
+  FeModel imported;
+  imported.mesh = strip.mesh;
+  imported.imported = fe::Assemble(strip.mesh, {});  // constrained: fewer free than full DOF
+  testing::ExpectContains(InputErrorOf([&] { fe::AssembleImported(strip.mesh, *imported.imported, {}); }),
+                          {"must come as read"}, "not as read");
+}
+
 TEST(ImportedLinks, NodeSelectionsPickByGeometry) {
   // strip nodes on a 0.025 m grid: a cylinder of radius 0.025 about the z
   // axis through (0, 0.025) passes through (0, 0), (0, 0.05) and (0.025, 0.025)
@@ -196,20 +221,36 @@ TEST(ImportedLinks, NodeSelectionsPickByGeometry) {
   EXPECT_LT((picked[0] - Vec3(0, 0, 0)).norm(), 1e-9);
   EXPECT_LT((picked[1] - Vec3(0.025, 0.025, 0)).norm(), 1e-9);
   EXPECT_LT((picked[2] - Vec3(0, 0.05, 0)).norm(), 1e-9);
+  // a single selection as the whole of 'fixed'; a box grown by its tolerance;
+  // the cylinder's default tolerance (1e-3 R) still picks the three
+  const auto fixed_count = [&](const std::string& name, const std::string& fixed) {
+    return LoadFeModel(WriteScratch(name, head + "fixed: " + fixed + "\n")).mesh.constraints.size();
+  };
+  EXPECT_EQ(fixed_count("select_map.yaml", "{box: {min: [-1, -1, -1], max: [0, 1, 1]}}"), 3u);
+  EXPECT_EQ(fixed_count("select_tol.yaml", "{box: {min: [-1, -1, 0.001], max: [0, 1, 1], tolerance: 0.0011}}"), 3u);
+  EXPECT_EQ(fixed_count("select_default.yaml", "[{cylinder: {from: [0, 0.025, -1], to: [0, 0.025, 1], radius: 0.025}}]"), 3u);
   // the cylinder's length bounds it: from z = 0.001 on, nothing
   testing::ExpectBadFiles(
       {
           {"select_none.yaml",
            head + "fixed: [{cylinder: {from: [0, 0.025, 0.001], to: [0, 0.025, 1], radius: 0.025, tolerance: 1e-6}}]\n",
            ":5: fixed #1: the selection picks no node of strip_v41.msh: the nearest is node", {}},
-          {"select_shape.yaml", head + "fixed: [{sphere: {center: [0, 0, 0], radius: 1}}]\n",
-           ":5: fixed #1: a node selection is {cylinder: {from, to, radius, tolerance}} or {box: {min, max}}", {}},
+          {"select_box_miss.yaml", head + "fixed: {box: {min: [-1, -1, 0.001], max: [1, 1, 1]}}\n",
+           ":5: fixed #1: the selection picks no node of strip_v41.msh: the nearest is node", {"misses the box by 0.001"}},
+          {"select_shape.yaml",
+           head + "rigid_links: [{independent: 1, dependent: {sphere: {center: [0, 0, 0], radius: 1}}}]\n",
+           ":5: rigid link #1: a node selection is {cylinder: {from, to, radius, tolerance}} or {box:", {}},
+          {"fixed_typo.yaml", head + "fixed: [{node: 1, dofs: 123}]\n",
+           ":5: fixed #1: unknown key 'node' (allowed: nodes, dofs)", {}},
+          {"select_only_independent.yaml",
+           head + "rigid_links: [{independent: 1, dependent: {box: {min: [-0.001, -0.001, -1], max: [0.001, 0.001, 1]}}}]\n",
+           ":5: rigid link #1: the selection picks no node but the independent one", {}},
           {"select_box.yaml", head + "fixed: [{box: {min: [1, 0, 0], max: [0, 1, 1]}}]\n",
            ":5: fixed #1: the box's 'min' must not exceed its 'max'", {}},
           {"select_axis.yaml", head + "fixed: [{cylinder: {from: [0, 0, 0], to: [0, 0, 0], radius: 1}}]\n",
            ":5: fixed #1: the cylinder's 'from' and 'to' must differ", {}},
           {"node_twice.yaml", head + "nodes: [{id: 900001, x: [0, 0, 0]}, {id: 900001, x: [1, 0, 0]}]\n",
-           ":5: node #2: node 900001 already exists in strip_v41.msh", {}},
+           ":5: node #2: node 900001 is listed twice in 'nodes'", {}},
           {"node_exists.yaml", head + "nodes: [{id: 1, x: [0, 0, 0]}]\n",
            ":5: node #1: node 1 already exists in strip_v41.msh", {}},
           {"node_position.yaml", head + "nodes: [{id: 900001}]\n", ":5: node #1: missing required key 'x'", {}},
