@@ -13,10 +13,10 @@
 #include "flexmb/fe/elements/shell_tria6.h"
 #include "flexmb/fe/elements/solid_hex20.h"
 #include "flexmb/fe/elements/solid_hex8.h"
+#include "flexmb/fe/elements/solid_pyramid5.h"
 #include "flexmb/fe/elements/solid_tet10.h"
 #include "flexmb/fe/elements/solid_tet4.h"
 #include "flexmb/fe/elements/solid_wedge15.h"
-#include "flexmb/fe/elements/solid_pyramid5.h"
 #include "flexmb/fe/elements/solid_wedge6.h"
 
 namespace flexmb::fe {

@@ -21,7 +21,8 @@ fe::SparseMat HarwellBoeingMatrixOf(const std::string& path, const std::string&,
 }
 
 // .mtx: Matrix Market, or Abaqus's coordinate format when the banner is
-// missing and the first entry line is "ROW COLUMN VALUE"
+// missing and the first entry line is "ROW COLUMN VALUE"; Abaqus's labelled
+// format names its rows itself and is read only as a K and M pair
 fe::SparseMat MatrixMarketMatrixOf(const std::string& path, const std::string& what, int n) {
   if (IsAbaqusLabelledMatrixFile(path))
     throw InputError("is in Abaqus's labelled format (FORMAT=MATRIX INPUT, rows named by node and DOF), which is "

@@ -4,7 +4,8 @@
 /// gmsh type 7, VTK_PYRAMID; 3 DOF per node. Node order as all four: the
 /// base quadrilateral 1 2 3 4, counter-clockwise seen from the apex 5.
 /// Formulation: the 8-node hexahedron with its top face collapsed into the
-/// apex (natural coordinates xi, eta, zeta in [-1, 1]^3): base nodes
+/// apex, which on the reference pyramid is the classic rational pyramid
+/// (natural coordinates xi, eta, zeta in [-1, 1]^3): base nodes
 /// (1 + xi_i xi)(1 + eta_i eta)(1 - zeta) / 8, apex (1 + zeta) / 2. The
 /// field is bilinear on the base and linear on the four triangular faces
 /// (conforming with 8-node hexahedra and 4-node tetrahedra), and linear
@@ -38,7 +39,8 @@ void SolidPyramid5Stress(const ElementInput& in, MatX& S);
 /// 15) as SolidPyramid5Stress at each corner in node order: the four base
 /// corners, and for the apex, where the collapsed mapping is singular and
 /// the strain of a non-linear field has no single value, the point
-/// (0, 0, 1/2) on the axis halfway up (exact for a linear field).
+/// (0, 0, 1/2) on the axis, 3/4 of the way up (exact for a linear field,
+/// and equal to the centre's value over a parallelogram base).
 void SolidPyramid5CornerStress(const ElementInput& in, MatX& S);
 
 /// Geometric (initial-stress) stiffness of a 5-node pyramid under the stress

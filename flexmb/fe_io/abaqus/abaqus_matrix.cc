@@ -21,6 +21,21 @@ bool Skipped(std::string_view line) {
   return p == std::string_view::npos || line.substr(p, 2) == "**";
 }
 
+// a keyword line ("*MATRIX INPUT, ..."), not a "**" comment
+bool KeywordLine(std::string_view line) {
+  const size_t p = line.find_first_not_of(" \t\r");
+  return p != std::string_view::npos && line[p] == '*' && line.substr(p, 2) != "**";
+}
+
+// a node label: a whole number, or INSTANCE.NUMBER (an instance-qualified
+// label; `instance` gets the name, empty for a plain one)
+bool ParseNodeLabel(std::string_view token, long long& label, std::string_view& instance) {
+  const size_t dot = token.rfind('.');
+  instance = dot == std::string_view::npos ? std::string_view() : token.substr(0, dot);
+  if (dot != std::string_view::npos && dot == 0) return false;
+  return ParseIntegerToken(dot == std::string_view::npos ? token : token.substr(dot + 1), label);
+}
+
 // the fields of an entry line: blanks, tabs or commas between them
 std::vector<std::string_view> EntryFields(std::string_view line) {
   std::vector<std::string_view> out;
@@ -55,10 +70,15 @@ std::vector<Entry> ReadEntries(const std::string& path, bool labelled) {
   const char* form = labelled ? "'NODE, DOF, NODE, DOF, VALUE' (Abaqus *MATRIX OUTPUT, FORMAT=MATRIX INPUT)"
                               : "'ROW COLUMN VALUE' (Abaqus *MATRIX OUTPUT, FORMAT=COORDINATE)";
   std::vector<Entry> entries;
+  std::string first_instance;
   for (size_t l = 0; l < lines.size(); ++l) {
     if (Skipped(lines[l])) continue;
     const int line = static_cast<int>(l) + 1;
     const std::string entity = "entry " + std::to_string(entries.size() + 1);
+    if (KeywordLine(lines[l]))
+      throw InputError("a keyword line: the file must hold the data lines of one matrix only, as *MATRIX OUTPUT "
+                       "writes it",
+                       {path, line, entity});
     const std::vector<std::string_view> f = EntryFields(lines[l]);
     if (f.size() != fields)
       throw InputError(std::string("expected ") + form + ", found " + std::to_string(f.size()) + " fields",
@@ -67,16 +87,24 @@ std::vector<Entry> ReadEntries(const std::string& path, bool labelled) {
     if (labelled) {
       long long n[2] = {0, 0}, d[2] = {0, 0};
       for (int k = 0; k < 2; ++k) {
-        if (!ParseIntegerToken(f[2 * k], n[k]) || !ParseIntegerToken(f[2 * k + 1], d[k]))
+        std::string_view instance;
+        if (!ParseNodeLabel(f[2 * k], n[k], instance) || !ParseIntegerToken(f[2 * k + 1], d[k]))
           throw InputError("node labels and DOF must be integers, got " + QuoteToken(f[2 * k]) + " " +
                                QuoteToken(f[2 * k + 1]),
                            {path, line, entity});
-        if (n[k] < 1 || n[k] > kMaxDimension)
+        // labels of one instance (INSTANCE.LABEL) are the part's labels, as
+        // the Abaqus reader takes a deck of one instance
+        if (entries.empty() && k == 0) first_instance = std::string(instance);
+        if (instance != first_instance)
+          throw InputError("node labels of two instances ('" + first_instance + "' and '" + std::string(instance) +
+                               "'): only a model of one part instance is read",
+                           {path, line, entity});
+        if (n[k] < 1 || n[k] > 2147483647LL)
           throw InputError("node label " + std::to_string(n[k]) +
                                (n[k] < 1 ? " is an Abaqus internal node (a Lagrange multiplier, a hybrid element's "
                                            "pressure or a constraint's node), which has no place in the geometry: "
                                            "generate the matrices without such elements and constraints"
-                                         : " is too large"),
+                                         : " exceeds 2147483647"),
                            {path, line, entity});
         if (d[k] < 1 || d[k] > 6)
           throw InputError("DOF " + std::to_string(d[k]) + " of node " + std::to_string(n[k]) +
@@ -98,38 +126,39 @@ std::vector<Entry> ReadEntries(const std::string& path, bool labelled) {
     if (!ParseDoubleToken(f[fields - 1], e.value))
       throw InputError("malformed value " + QuoteToken(f[fields - 1]), {path, line, entity});
     if (!std::isfinite(e.value)) throw InputError("value is not finite", {path, line, entity});
+    if (std::abs(e.value) >= 1e30)
+      throw InputError("value " + std::string(f[fields - 1]) +
+                           " is a penalty (Abaqus puts 1e36 on the DOF a boundary condition of the matrix generation "
+                           "step fixes): generate the matrices without boundary conditions and fix the nodes with "
+                           "'fixed' or --fix",
+                       {path, line, entity});
     entries.push_back(e);
   }
   if (entries.empty()) throw InputError(std::string("no entries (expected ") + form + " lines)", {path, 0, "matrix"});
-  // each position once (sorted: neighbours; no per-entry map for models of
-  // millions of entries)
-  std::vector<size_t> order(entries.size());
-  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    const Entry &x = entries[a], &y = entries[b];
+  // each position once (sorted in place: neighbours; no per-entry map for
+  // models of millions of entries)
+  std::sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) {
     return x.row != y.row ? x.row < y.row : x.col != y.col ? x.col < y.col : x.line < y.line;
   });
   auto name = [&](long long key) {
     return labelled ? std::to_string(key / 8) + " " + std::to_string(key % 8) : std::to_string(key);
   };
-  for (size_t k = 1; k < order.size(); ++k) {
-    const Entry &a = entries[order[k - 1]], &e = entries[order[k]];
+  for (size_t k = 1; k < entries.size(); ++k) {
+    const Entry &a = entries[k - 1], &e = entries[k];
     if (a.row == e.row && a.col == e.col) {
       const std::string where = "(" + name(e.row) + ", " + name(e.col) + ")";
       throw InputError("position " + where + " given twice (also line " + std::to_string(a.line) + ")",
                        {path, e.line, "entry " + where});
     }
   }
-  std::vector<Entry> sorted;
-  sorted.reserve(entries.size());
-  for (size_t k : order) sorted.push_back(entries[k]);
-  return sorted;
+  return entries;
 }
 
 // the matrix of the entries (sorted by row, then column key), `index`
-// giving each key's row (0-based). A file in which no off-diagonal entry has
-// its transposed one holds one triangle (in whatever order the package
-// numbered its equations) and is mirrored
+// giving each key's row (0-based). An off-diagonal entry whose transposed
+// entry the file does not give stands for both (one triangle, in whatever
+// order the package numbered its equations, or a mix); where both are given
+// each stands for itself (a difference is the symmetry check's to find)
 fe::SparseMat MatrixOf(const std::vector<Entry>& entries, int n, const std::function<int(long long)>& index) {
   const auto has = [&](long long row, long long col) {
     const auto it = std::lower_bound(entries.begin(), entries.end(), std::make_pair(row, col),
@@ -138,18 +167,12 @@ fe::SparseMat MatrixOf(const std::vector<Entry>& entries, int n, const std::func
                                      });
     return it != entries.end() && it->row == row && it->col == col;
   };
-  bool mirror = true;
-  for (const Entry& e : entries)
-    if (e.row != e.col && has(e.col, e.row)) {
-      mirror = false;
-      break;
-    }
   std::vector<Eigen::Triplet<double>> t;
-  t.reserve(entries.size() * (mirror ? 2 : 1));
+  t.reserve(entries.size() * 2);
   for (const Entry& e : entries) {
     const int i = index(e.row), j = index(e.col);
     t.emplace_back(i, j, e.value);
-    if (mirror && i != j) t.emplace_back(j, i, e.value);
+    if (i != j && !has(e.col, e.row)) t.emplace_back(j, i, e.value);
   }
   fe::SparseMat A(n, n);
   A.setFromTriplets(t.begin(), t.end());
@@ -162,7 +185,7 @@ std::string FirstEntryLine(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
   while (std::getline(in, line))
-    if (!Skipped(line)) return line;
+    if (!Skipped(line) && !KeywordLine(line)) return line;  // a keyword line is named when read
   return "";
 }
 
@@ -184,10 +207,9 @@ bool LooksLikeAbaqusLabelledMatrix(std::string_view first_line) {
   const std::vector<std::string_view> f = EntryFields(first_line);
   long long n = 0;
   double v = 0.0;
-  if (f.size() != 5 || !ParseDoubleToken(f[4], v)) return false;
-  for (int k = 0; k < 4; ++k)
-    if (!ParseIntegerToken(f[static_cast<size_t>(k)], n)) return false;
-  return true;
+  std::string_view instance;
+  return f.size() == 5 && ParseNodeLabel(f[0], n, instance) && ParseIntegerToken(f[1], n) &&
+         ParseNodeLabel(f[2], n, instance) && ParseIntegerToken(f[3], n) && ParseDoubleToken(f[4], v);
 }
 
 bool IsAbaqusLabelledMatrixFile(const std::string& path) { return LooksLikeAbaqusLabelledMatrix(FirstEntryLine(path)); }

@@ -8,7 +8,9 @@
 ///   one "NODE, DOF, NODE, DOF, VALUE" line per stored entry, so the file
 ///   names the node and component of every row itself.
 /// Fields are blank- or comma-separated, there is no header, lines starting
-/// with "**" are comments. Both triangles, or one triangle only (mirrored).
+/// with "**" are comments. An off-diagonal entry whose transposed entry is
+/// not given stands for both (one triangle, in any equation order); a value
+/// of magnitude 1e30 or more is a penalty of a constrained DOF and an error.
 /// The extension .mtx is shared with Matrix Market: a .mtx file without the
 /// "%%MatrixMarket" banner is told by its first entry line (three or five
 /// numbers). Described in docs/formats.md.
@@ -40,7 +42,8 @@ bool IsAbaqusCoordinateMatrixFile(const std::string& path);
 fe::SparseMat ReadAbaqusCoordinateMatrix(const std::string& path);
 
 /// True if `first_line` looks like an entry of Abaqus's labelled format
-/// (FORMAT=MATRIX INPUT): five fields, four integers and a number.
+/// (FORMAT=MATRIX INPUT): five fields, node label (a whole number or
+/// INSTANCE.NUMBER), DOF, node label, DOF, and a number.
 bool LooksLikeAbaqusLabelledMatrix(std::string_view first_line);
 
 /// True if the file at `path` is in Abaqus's labelled format by its first
@@ -56,10 +59,11 @@ struct AbaqusLabelledMatrices {
 };
 
 /// Reads the two labelled files. Throws InputError naming the file, line and
-/// entry for a malformed line, a node label < 1 (an Abaqus internal node: a
-/// Lagrange multiplier or a constraint's node), a DOF outside 1..6 (warping,
-/// pressure, temperature), a non-finite value, a position given twice, or an
-/// empty file.
+/// entry for a malformed line, a keyword line, a node label < 1 (an Abaqus
+/// internal node: a Lagrange multiplier or a constraint's node), labels of
+/// two part instances, a DOF outside 1..6 (warping, pressure, temperature),
+/// a non-finite value or a penalty, a position given twice, or an empty
+/// file. An instance-qualified label INSTANCE.N is node N.
 AbaqusLabelledMatrices ReadAbaqusLabelledMatrices(const std::string& k_path, const std::string& m_path);
 
 }  // namespace flexmb::io

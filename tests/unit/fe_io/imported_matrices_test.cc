@@ -169,7 +169,28 @@ TEST(ImportedMatrices, ReadsAbaqusLabelledMatrices) {
   EXPECT_EQ(wider.imported->dofs.full[static_cast<size_t>(wider.mesh.NodeIndex(30))],
             (std::array<int, 6>{3, -1, 4, -1, -1, -1}));
   EXPECT_EQ(Eigen::MatrixXd(wider.imported->K).row(3).norm(), 0.0);
+  // instance-qualified labels of one instance; a file that mixes one-sided
+  // and paired off-diagonal entries
+  std::string inst = kt;
+  for (const char* n : {"10,", "20,", "30,"}) {
+    for (size_t p = inst.find(std::string("\n") + n); p != std::string::npos; p = inst.find(std::string("\n") + n, p + 1))
+      inst.insert(p + 1, "PART-1-1.");
+    for (size_t p = inst.find(std::string(" ") + n); p != std::string::npos; p = inst.find(std::string(" ") + n, p + 10))
+      inst.insert(p + 1, "PART-1-1.");
+  }
+  ASSERT_NE(inst.find("PART-1-1.20,1, PART-1-1."), std::string::npos) << inst;
+  const std::string ki = WriteScratch("abq_lab_inst.mtx", inst);
+  EXPECT_EQ(Eigen::MatrixXd(ReadImportedMatrices({ki, ml, "", f.geometry}).imported->K), k);
+  std::snprintf(b, sizeof b, "%d,%d, %d,%d, %.17g\n", node[3], dof[3], node[2], dof[2], k(3, 2));
+  const std::string mixed = WriteScratch("abq_lab_mixed.mtx", kt + b);  // (30 uz, 20 uy) now both ways
+  EXPECT_EQ(Eigen::MatrixXd(ReadImportedMatrices({mixed, ml, "", f.geometry}).imported->K), k);
   const std::vector<BadCase> cases = {
+      {"two instances", {WriteScratch("abq_lab_two.mtx", "A.10,1, A.10,1, 1.\nB.20,1, A.10,1, 2.\n"), ml, "", f.geometry},
+       "abq_lab_two.mtx:2: entry 2", "node labels of two instances ('A' and 'B')"},
+      {"keyword line", {WriteScratch("abq_lab_keyword.mtx", "10,1, 10,1, 1.\n*MATRIX INPUT, NAME=K\n"), ml, "", f.geometry},
+       "abq_lab_keyword.mtx:2: entry 2", "a keyword line"},
+      {"penalty", {WriteScratch("abq_lab_penalty.mtx", "10,1, 10,1, 1.\n20,1, 20,1, 1.0e+36\n"), ml, "", f.geometry},
+       "abq_lab_penalty.mtx:2: entry 2", "is a penalty"},
       {"internal node", {WriteScratch("abq_lab_internal.mtx", "10,1, 10,1, 1.\n-3,1, 10,1, 2.\n"), ml, "", f.geometry},
        "abq_lab_internal.mtx:2: entry 2", "node label -3 is an Abaqus internal node"},
       {"DOF 8", {WriteScratch("abq_lab_dof.mtx", "10,1, 10,1, 1.\n20,8, 20,8, 2.\n"), ml, "", f.geometry},
