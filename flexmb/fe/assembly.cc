@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "flexmb/common/error.h"
+#include "flexmb/common/log.h"
 #include "flexmb/fe/element_traits.h"
 #include "flexmb/fe/linear_constraint.h"
 #include "flexmb/fe/point_mass.h"
@@ -373,10 +374,12 @@ AssembledModel AssembleImpl(const Mesh& mesh, const AssemblyOptions& options, co
   std::vector<uint8_t> from_links(nn, 0);
   for (const RigidLink& link : mesh.rigid_links) {
     const int a = link.independent;
+    bool acts = false;
     for (int d : link.dependent) {
       const Vec3 r = mesh.nodes[d].x - mesh.nodes[a].x;
       for (int c = 0; c < 6; ++c) {
         if (!(link.dofs & active[d] & (1 << c))) continue;
+        acts = true;
         from_links[a] |= 1 << c;
         if (c < 3) {
           const int j = (c + 1) % 3, k = (c + 2) % 3;
@@ -385,6 +388,14 @@ AssembledModel AssembleImpl(const Mesh& mesh, const AssemblyOptions& options, co
           if (r[j] != 0.0) from_links[a] |= 1 << (3 + k);
         }
       }
+    }
+    if (!acts) {
+      std::string digits;
+      for (int c = 0; c < 6; ++c)
+        if (link.dofs & (1 << c)) digits += static_cast<char>('1' + c);
+      LogWarning("rigid link " + std::to_string(link.id) + Where(link.origin) +
+                 " does nothing: none of its dependent nodes has a degree of freedom among the components " + digits +
+                 " it links (the nodes of solids have translations 123 only)");
     }
   }
   for (int n = 0; n < nn; ++n) active[n] |= from_links[n];

@@ -107,6 +107,9 @@ class FeModelFileParser {
   }
 
   fe::FeModel ParseMatrices(const YAML::Node& root) {
+    if (root["mesh"])
+      ctx_.Fail(root["mesh"], "'mesh' and 'matrices' exclude each other: a model is a mesh with properties, or "
+                              "imported matrices with their geometry");
     ctx_.CheckKeys(root, {"matrices", "nodes", "fixed", "point_masses", "rigid_links"});
     const YAML::Node m = root["matrices"];
     ctx_.SetEntity("matrices");

@@ -32,7 +32,9 @@ bool KeywordLine(std::string_view line) {
 bool ParseNodeLabel(std::string_view token, long long& label, std::string_view& instance) {
   const size_t dot = token.rfind('.');
   instance = dot == std::string_view::npos ? std::string_view() : token.substr(0, dot);
-  if (dot != std::string_view::npos && dot == 0) return false;
+  long long number = 0;
+  // "10.0" is a decimal number, not instance "10"
+  if (dot != std::string_view::npos && (dot == 0 || ParseIntegerToken(instance, number))) return false;
   return ParseIntegerToken(dot == std::string_view::npos ? token : token.substr(dot + 1), label);
 }
 

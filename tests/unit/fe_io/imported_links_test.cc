@@ -205,6 +205,20 @@ TEST(ImportedLinks, TheGeometrysOwnConstraintsAreLeftOutWithAWarning) {
                           {"must come as read"}, "not as read");
 }
 
+TEST(ImportedLinks, ALinkOfRotationsOnSolidNodesIsAWarning) {
+  // the nodes of solids have no rotations: a link of 456 alone does nothing
+  const std::string common = "materials: {steel: {E: 2.1e11, nu: 0.3, rho: 7800}}\n";
+  const FeModel hex = LoadFeModel(WriteScratch(
+      "links_456.yaml", "mesh: " + FeData("gmsh/hex8_v41.msh") + "\n" + common +
+                            "drop_elements: [bottom, group7]\nsections: [{elements: block, type: solid, material: steel}]\n"
+                            "nodes: [{id: 900001, x: [-0.1, 0, 0]}]\n"
+                            "rigid_links: [{independent: 900001, dependent: {box: {min: [-1, -1, -1], max: [0, 1, 1]}}, "
+                            "dofs: 456}]\n"));
+  testing::WarningCapture warnings;
+  fe::Assemble(hex.mesh, {});
+  EXPECT_EQ(warnings.Count("does nothing: none of its dependent nodes has a degree of freedom among the components 456"), 1);
+}
+
 TEST(ImportedLinks, NodeSelectionsPickByGeometry) {
   // strip nodes on a 0.025 m grid: a cylinder of radius 0.025 about the z
   // axis through (0, 0.025) passes through (0, 0), (0, 0.05) and (0.025, 0.025)
@@ -227,6 +241,7 @@ TEST(ImportedLinks, NodeSelectionsPickByGeometry) {
     return LoadFeModel(WriteScratch(name, head + "fixed: " + fixed + "\n")).mesh.constraints.size();
   };
   EXPECT_EQ(fixed_count("select_map.yaml", "{box: {min: [-1, -1, -1], max: [0, 1, 1]}}"), 3u);
+  EXPECT_EQ(fixed_count("select_tol0.yaml", "{box: {min: [-1, -1, 0], max: [0, 1, 1], tolerance: 0}}"), 3u);
   EXPECT_EQ(fixed_count("select_tol.yaml", "{box: {min: [-1, -1, 0.001], max: [0, 1, 1], tolerance: 0.0011}}"), 3u);
   EXPECT_EQ(fixed_count("select_default.yaml", "[{cylinder: {from: [0, 0.025, -1], to: [0, 0.025, 1], radius: 0.025}}]"), 3u);
   // the cylinder's length bounds it: from z = 0.001 on, nothing
@@ -236,10 +251,15 @@ TEST(ImportedLinks, NodeSelectionsPickByGeometry) {
            head + "fixed: [{cylinder: {from: [0, 0.025, 0.001], to: [0, 0.025, 1], radius: 0.025, tolerance: 1e-6}}]\n",
            ":5: fixed #1: the selection picks no node of strip_v41.msh: the nearest is node", {}},
           {"select_box_miss.yaml", head + "fixed: {box: {min: [-1, -1, 0.001], max: [1, 1, 1]}}\n",
-           ":5: fixed #1: the selection picks no node of strip_v41.msh: the nearest is node", {"misses the box by 0.001"}},
+           ":5: fixed #1: the selection picks no node of strip_v41.msh: the nearest is node", {"misses the box by 0.001", " at (0, "}},
           {"select_shape.yaml",
            head + "rigid_links: [{independent: 1, dependent: {sphere: {center: [0, 0, 0], radius: 1}}}]\n",
            ":5: rigid link #1: a node selection is {cylinder: {from, to, radius, tolerance}} or {box:", {}},
+          {"select_typo.yaml",
+           head + "rigid_links: [{independent: 1, dependent: {cylindre: {from: [0, 0, 0], to: [0, 0, 1], radius: 1}}}]\n",
+           ":5: rigid link #1: a node selection is", {"got 'cylindre'"}},
+          {"mesh_and_matrices.yaml", "matrices: {stiffness: a.hb, mass: b.hb, geometry: c.vtk}\nmesh: d.msh\n",
+           ":2: 'mesh' and 'matrices' exclude each other", {}},
           {"fixed_typo.yaml", head + "fixed: [{node: 1, dofs: 123}]\n",
            ":5: fixed #1: unknown key 'node' (allowed: nodes, dofs)", {}},
           {"select_only_independent.yaml",

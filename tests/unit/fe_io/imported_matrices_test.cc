@@ -187,6 +187,8 @@ TEST(ImportedMatrices, ReadsAbaqusLabelledMatrices) {
   const std::vector<BadCase> cases = {
       {"two instances", {WriteScratch("abq_lab_two.mtx", "A.10,1, A.10,1, 1.\nB.20,1, A.10,1, 2.\n"), ml, "", f.geometry},
        "abq_lab_two.mtx:2: entry 2", "node labels of two instances ('A' and 'B')"},
+      {"decimal label", {WriteScratch("abq_lab_decimal.mtx", "10,1, 10,1, 1.\n10.0,1, 10,1, 2.\n"), ml, "", f.geometry},
+       "abq_lab_decimal.mtx:2: entry 2", "node labels and DOF must be integers, got '10.0'"},
       {"keyword line", {WriteScratch("abq_lab_keyword.mtx", "10,1, 10,1, 1.\n*MATRIX INPUT, NAME=K\n"), ml, "", f.geometry},
        "abq_lab_keyword.mtx:2: entry 2", "a keyword line"},
       {"penalty", {WriteScratch("abq_lab_penalty.mtx", "10,1, 10,1, 1.\n20,1, 20,1, 1.0e+36\n"), ml, "", f.geometry},
