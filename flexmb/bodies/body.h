@@ -51,6 +51,11 @@ class Body {
   virtual void MassMatrix(const double* q, MatX& M) const = 0;
   /// True if the mass matrix does not depend on q (evaluated once).
   virtual bool HasConstantMass() const { return true; }
+  /// Told by Model::Finalize which FE nodes (indices) the body's markers sit
+  /// on (each once, ascending; markers without a node left out), so that a
+  /// body can keep their data where the per-iteration marker evaluations
+  /// read it fast. Nothing by default.
+  virtual void UseMarkerNodes(const std::vector<int>& /*nodes*/) {}
   /// True if every marker's twist Jacobian can have rank 6 (all marker
   /// motions possible). Planar bodies return false, so that the equations of
   /// a joint holding them are checked for redundancy like those of a loop.

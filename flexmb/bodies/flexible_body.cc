@@ -89,11 +89,30 @@ void FlexibleBody::AddElasticAndDamping(const double* w, const double* wd, Eigen
     Q.tail(n_).noalias() -= damping_ * wdv;
 }
 
+void FlexibleBody::UseMarkerNodes(const std::vector<int>& nodes) {
+  const MatX& H = data_.reduced->modes;
+  const int nn = static_cast<int>(data_.reduced->mesh.nodes.size());
+  marker_slot_.assign(static_cast<size_t>(nn), -1);
+  int count = 0;
+  for (int node : nodes)
+    if (node >= 0 && node < nn && marker_slot_[static_cast<size_t>(node)] < 0)
+      marker_slot_[static_cast<size_t>(node)] = count++;
+  marker_modes_.resize(6 * count, n_);
+  for (int node = 0; node < nn && count > 0; ++node) {
+    const int slot = marker_slot_[static_cast<size_t>(node)];
+    if (slot >= 0) marker_modes_.middleRows(6 * slot, 6) = H.middleRows(6 * node, 6);
+  }
+}
+
 Eigen::Block<const MatX, 3, Eigen::Dynamic> FlexibleBody::Ht(int node) const {
+  const int slot = node >= 0 && node < static_cast<int>(marker_slot_.size()) ? marker_slot_[static_cast<size_t>(node)] : -1;
+  if (slot >= 0) return Eigen::Block<const MatX, 3, Eigen::Dynamic>(marker_modes_, 6 * slot, 0, 3, n_);
   return Eigen::Block<const MatX, 3, Eigen::Dynamic>(data_.reduced->modes, 6 * node, 0, 3, n_);
 }
 
 Eigen::Block<const MatX, 3, Eigen::Dynamic> FlexibleBody::Hr(int node) const {
+  const int slot = node >= 0 && node < static_cast<int>(marker_slot_.size()) ? marker_slot_[static_cast<size_t>(node)] : -1;
+  if (slot >= 0) return Eigen::Block<const MatX, 3, Eigen::Dynamic>(marker_modes_, 6 * slot + 3, 0, 3, n_);
   return Eigen::Block<const MatX, 3, Eigen::Dynamic>(data_.reduced->modes, 6 * node + 3, 0, 3, n_);
 }
 

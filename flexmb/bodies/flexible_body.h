@@ -114,6 +114,10 @@ class FlexibleBody final : public Body {
   /// World velocity of node `node` (index), v_W + R (om x u_k + H_k^t wd)
   /// with u_k = rho_k + H_k^t w [m/s].
   Vec3 NodeVelocity(const double* q, const double* v, int node) const;
+  /// Copies the mode rows of the marker nodes into one small matrix
+  /// (marker_modes_): the 6 rows of a node are 8 n_ bytes apart in the
+  /// column-major mode matrix, so every marker evaluation touched n_ pages.
+  void UseMarkerNodes(const std::vector<int>& nodes) override;
   /// Number of modal coordinates.
   int modes() const { return n_; }
   /// The reduced body.
@@ -145,6 +149,10 @@ class FlexibleBody final : public Body {
 
   FlexibleBodyData data_;
   int n_ = 0;
+  // the 6 mode rows (H^t, H^r) of each marker node, node after node, and
+  // each node's place in it (-1: read the full mode matrix); UseMarkerNodes
+  MatX marker_modes_;
+  std::vector<int> marker_slot_;
   MatX damping_;
   // diagonals of K and D when they are exactly diagonal (empty otherwise):
   // K w and D wd then cost O(n)

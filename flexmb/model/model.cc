@@ -1,5 +1,7 @@
 #include "flexmb/model/model.h"
 
+#include <algorithm>
+
 #include "flexmb/bodies/ground.h"
 #include "flexmb/common/error.h"
 
@@ -80,9 +82,18 @@ void Model::Finalize() {
     nq += b->nq();
     nv += b->nv();
   }
-  for (const Marker& m : markers)
+  std::vector<std::vector<int>> marker_nodes(bodies.size());
+  for (const Marker& m : markers) {
     if (m.body < 0 || m.body >= static_cast<int>(bodies.size()))
       throw InputError("marker on a body that does not exist", {"", 0, "marker '" + m.name + "'"});
+    if (m.node >= 0) marker_nodes[static_cast<size_t>(m.body)].push_back(m.node);
+  }
+  for (size_t b = 0; b < bodies.size(); ++b) {
+    std::vector<int>& nodes = marker_nodes[b];
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    bodies[b]->UseMarkerNodes(nodes);
+  }
   for (auto& j : joints) {
     const ErrorContext ctx{"", 0, "joint '" + j->name() + "'"};
     if (j->marker_i < 0 || j->marker_i >= n_markers || j->marker_j < 0 || j->marker_j >= n_markers)
