@@ -2,21 +2,42 @@
 
 #include <cmath>
 
+#include <unsupported/Eigen/AutoDiff>
+
 #include "flexmb/common/error.h"
 #include "flexmb/vehicle/road_surface.h"
 
 namespace flexmb::vehicle {
 namespace {
 
+// forward-mode derivative of the tire's wrench: value and derivatives by
+// the 18 variations (dp, dtheta, dp_j, v, w, v_j), Eigen's AutoDiff
+using Ad = Eigen::AutoDiffScalar<Eigen::Matrix<double, 18, 1>>;
+constexpr int kVarPose = 0, kVarTwist = 9;  // first pose (dp, dtheta, dp_j) and twist (v, w, v_j) variation
+
+double Val(double x) { return x; }
+double Val(const Ad& x) { return x.value(); }
+Vec3 Vals(const Vec3& x) { return x; }
+Vec3 Vals(const Eigen::Matrix<Ad, 3, 1>& x) { return Vec3(x.x().value(), x.y().value(), x.z().value()); }
+// Eigen 3.4's AutoDiff has no atan
+double Atan(double x) { return std::atan(x); }
+Ad Atan(const Ad& x) { return Ad(std::atan(x.value()), x.derivatives() / (1.0 + x.value() * x.value())); }
+
 // magic formula y = D sin(C atan(B x - E (B x - atan(B x))))
-double MagicFormula(double x, double B, double C, double D, double E) {
-  const double bx = B * x;
-  return D * std::sin(C * std::atan(bx - E * (bx - std::atan(bx))));
+template <class S>
+S MagicFormula(const S& x, const S& B, double C, const S& D, double E) {
+  using std::sin;
+  const S bx = B * x;
+  return D * sin(C * Atan(S(bx - E * (bx - Atan(bx)))));
 }
 
-// finite-difference steps: position [m], rotation [rad], velocities [m/s, rad/s]
-constexpr double kStepPose = 1e-6;
-constexpr double kStepRate = 1e-5;
+// a vector of AD scalars with value x and derivative e_k along variable
+// first + k (k = 0, 1, 2)
+Eigen::Matrix<Ad, 3, 1> Variable(const Vec3& x, int first) {
+  Eigen::Matrix<Ad, 3, 1> out;
+  for (int k = 0; k < 3; ++k) out(k) = Ad(x(k), 18, first + k);
+  return out;
+}
 
 }  // namespace
 
@@ -68,124 +89,139 @@ double Tire::CorneringStiffness(double fz1) const {
 }
 
 Vec6 Tire::Wrench(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, TireContact* contact) const {
-  return Compute(p, R, v, w, nullptr, nullptr, contact).head<6>();
+  const Vec3 a = R.col(2);
+  return Compute<double>(p, a, v, w, nullptr, nullptr, contact).head<6>();
 }
 
 Vec12 Tire::RelaxedWrench(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, const Vec3& p_j,
                           const Vec3& v_j, TireContact* contact) const {
   if (!relaxed())
     throw InputError("RelaxedWrench needs relaxation_length > 0", {"", 0, "tire '" + name() + "'"});
-  return Compute(p, R, v, w, &p_j, &v_j, contact);
+  const Vec3 a = R.col(2);
+  return Compute<double>(p, a, v, w, &p_j, &v_j, contact);
 }
 
-Vec12 Tire::Compute(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, const Vec3* p_j, const Vec3* v_j,
-                    TireContact* contact) const {
-  Vec12 out = Vec12::Zero();
+template <class S>
+Eigen::Matrix<S, 12, 1> Tire::Compute(const V3<S>& p, const V3<S>& a, const V3<S>& v, const V3<S>& w, const V3<S>* p_j,
+                                      const V3<S>* v_j, TireContact* contact) const {
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  using std::tanh;
+  using V = V3<S>;
+  Eigen::Matrix<S, 12, 1> out = Eigen::Matrix<S, 12, 1>::Zero();
   if (contact) *contact = TireContact{};
   const TireData& d = data_;
   // carcass spring between the wheel centre and the contact patch
-  Vec3 spring = p_j ? Vec3(k_carcass_ * (*p_j - p)) : Vec3::Zero();
-  out.segment<3>(0) = spring;
-  out.segment<3>(6) = -spring;
+  V spring = p_j ? V(k_carcass_ * (*p_j - p)) : V(V::Zero());
+  out.template segment<3>(0) = spring;
+  out.template segment<3>(6) = -spring;
   // road plane under the centre: height h, normal n (flat road: z = 0, +z)
-  double h = 0.0, slope = 0.0;
-  if (road_) road_->Evaluate(p.x(), &h, &slope);
-  const Vec3 n = road_ ? Vec3(Vec3(-slope, 0, 1).normalized()) : Vec3(0, 0, 1);
-  const Vec3 a = R.col(2);
-  const Vec3 axn = a.cross(n);
-  const double s = axn.norm();
+  // (piecewise linear: h' = slope, the slope's own derivative is 0)
+  double h0 = 0.0, slope = 0.0;
+  if (road_) road_->Evaluate(Val(p.x()), &h0, &slope);
+  const S h = h0 + slope * (p.x() - Val(p.x()));
+  const V n = (road_ ? Vec3(Vec3(-slope, 0, 1).normalized()) : Vec3(0, 0, 1)).cast<S>();
+  const V axn = a.cross(n);
+  const S s = axn.norm();
   // wheel lying flat: no defined rolling direction, no force
-  if (s < 1e-6) return out;
-  const Vec3 xt = axn / s;
-  const Vec3 yt = n.cross(xt);
+  if (Val(s) < 1e-6) return out;
+  const V xt = axn / s;
+  const V yt = n.cross(xt);
   // upward unit vector in the wheel plane; cos(gamma) = r . n = s
-  const Vec3 r = xt.cross(a);
-  const double rho = road_ ? (p.z() - h) * n.z() / s : p.z() / s;
-  const double defl = d.unloaded_radius - rho;
-  const Vec3 c = p - rho * r;
+  const V r = xt.cross(a);
+  const S rho = road_ ? S((p.z() - h) * n.z() / s) : S(p.z() / s);
+  const S defl = d.unloaded_radius - rho;
+  const V c = p - rho * r;
   // longitudinally relaxed: the spring is stiffer along x_t and acts on both
   // bodies at the patch's contact point c + u
   const bool along = p_j && k_long_ > 0;
   if (along) {
-    const Vec3 u = *p_j - p;
+    const V u = *p_j - p;
     spring += (k_long_ - k_carcass_) * u.dot(xt) * xt;
-    out.segment<3>(0) = spring;
-    out.segment<3>(3) = (c - p + u).cross(spring);
-    out.segment<3>(6) = -spring;
-    out.segment<3>(9) = -(c - p).cross(spring);
+    out.template segment<3>(0) = spring;
+    out.template segment<3>(3) = (c - p + u).cross(spring);
+    out.template segment<3>(6) = -spring;
+    out.template segment<3>(9) = -(c - p).cross(spring);
   }
   if (contact) {
-    contact->deflection = defl;
-    contact->contact_W = c;
-    contact->fy_wheel = spring.dot(yt);
-    contact->fx_wheel = along ? spring.dot(xt) : 0.0;
+    contact->deflection = Val(defl);
+    contact->contact_W = Vals(c);
+    contact->fy_wheel = Val(spring.dot(yt));
+    contact->fx_wheel = along ? Val(spring.dot(xt)) : 0.0;
   }
-  if (defl <= 0) return out;
+  if (Val(defl) <= 0) return out;
   const double n_t = d.count;
   // deflection rate: the centre's velocity along the road normal
-  const double vn = road_ ? (v.z() - slope * v.x()) * n.z() : v.z();
-  const double fz = std::max(0.0, n_t * (d.vertical_stiffness * defl - d.vertical_damping * vn / s));
-  if (fz <= 0) return out;
+  const S vn = road_ ? S((v.z() - slope * v.x()) * n.z()) : v.z();
+  const S fz = n_t * (d.vertical_stiffness * defl - d.vertical_damping * vn / s);
+  if (Val(fz) <= 0) return out;
 
   // slip
-  const double vx = v.dot(xt);
-  const Vec3 vc = v + w.cross(c - p);
-  const double re = d.unloaded_radius - d.rolling_radius_factor * defl;
-  const double omega = w.dot(a);
+  const S vx = v.dot(xt);
+  const V vc = v + w.cross(c - p);
+  const S re = d.unloaded_radius - d.rolling_radius_factor * defl;
+  const S omega = w.dot(a);
   // the longitudinally relaxed tire slips with the patch as well
-  const double vsx = vx - re * omega + (along ? (*v_j - v).dot(xt) : 0.0);
+  S vsx = vx - re * omega;
+  if (along) vsx += (*v_j - v).dot(xt);
   // the relaxed tire slips with the patch, which slides relative to the centre
-  const double vsy = vc.dot(yt) + (v_j ? (*v_j - v).dot(yt) : 0.0);
-  const double vref = std::sqrt(vx * vx + d.low_speed * d.low_speed);
-  const double kappa = -vsx / vref;
-  const double alpha = std::atan(vsy / vref);
+  S vsy = vc.dot(yt);
+  if (v_j) vsy += (*v_j - v).dot(yt);
+  const S vref = sqrt(vx * vx + d.low_speed * d.low_speed);
+  const S kappa = -vsx / vref;
+  const S alpha = Atan(S(vsy / vref));
 
   // pure slip per tire
-  const double fz1 = fz / n_t;
-  const double dfz = (fz1 - d.nominal_load) / d.nominal_load;
-  const double dx = mu_ * d.pdx1 * std::max(0.0, 1.0 + d.pdx2 * dfz) * fz1;
-  const double dy = mu_ * d.pdy1 * std::max(0.0, 1.0 + d.pdy2 * dfz) * fz1;
-  double fx0 = 0.0, fy0 = 0.0;
-  if (dx > 0) fx0 = MagicFormula(kappa, d.pkx1 * fz1 / (d.pcx1 * dx), d.pcx1, dx, d.pex1);
-  if (dy > 0) {
-    const double ky = CorneringStiffness(fz1);
-    fy0 = -MagicFormula(alpha, ky / (d.pcy1 * dy), d.pcy1, dy, d.pey1);
+  const S fz1 = fz / n_t;
+  const S dfz = (fz1 - d.nominal_load) / d.nominal_load;
+  // load sensitivity of the peak, max(0, 1 + p dfz)
+  const S gx = 1.0 + d.pdx2 * dfz, gy = 1.0 + d.pdy2 * dfz;
+  const S dx = Val(gx) > 0 ? S(mu_ * d.pdx1 * gx * fz1) : S(0.0);
+  const S dy = Val(gy) > 0 ? S(mu_ * d.pdy1 * gy * fz1) : S(0.0);
+  S fx0 = 0.0, fy0 = 0.0;
+  if (Val(dx) > 0) fx0 = MagicFormula<S>(kappa, d.pkx1 * fz1 / (d.pcx1 * dx), d.pcx1, dx, d.pex1);
+  if (Val(dy) > 0) {
+    // Ky(Fz1), CorneringStiffness
+    const S ky = d.pky1 * d.nominal_load * sin(2.0 * Atan(S(fz1 / (d.pky2 * d.nominal_load))));
+    fy0 = -MagicFormula<S>(alpha, ky / (d.pcy1 * dy), d.pcy1, dy, d.pey1);
   }
   // combined slip by cosine weighting
-  const double fx = n_t * fx0 * std::cos(std::atan(d.rbx1 * alpha));
-  const double fy = n_t * fy0 * std::cos(std::atan(d.rby1 * kappa));
+  const S fx = n_t * fx0 * cos(Atan(S(d.rbx1 * alpha)));
+  const S fy = n_t * fy0 * cos(Atan(S(d.rby1 * kappa)));
   // rolling resistance: a moment against the spin, f_r Fz times the lever rho
-  const Vec3 my = -d.rolling_resistance * fz * rho * std::tanh(vx / 0.5) * a;
-  const Vec3 fw = fx * xt + fz * n;
-  const Vec3 fl = fy * yt;
-  const double trail = d.trail * std::cos(std::atan(d.trail_decay * alpha));
-  const Vec3 mz = -trail * fy * std::tanh(vx / 0.5) * n;
+  const S roll_sign = tanh(vx / 0.5);
+  const V my = (-d.rolling_resistance * fz * rho * roll_sign) * a;
+  const V fw = fx * xt + fz * n;
+  const V fl = fy * yt;
+  const S trail = d.trail * cos(Atan(S(d.trail_decay * alpha)));
+  const V mz = (-trail * fy * roll_sign) * n;
   if (along) {
     // slip forces and aligning moment on the patch, Fz on the wheel
-    const Vec3 fz_n = fz * n;
-    const Vec3 fs = fx * xt + fl;
-    out.segment<3>(0) += fz_n;
-    out.segment<3>(3) += (c - p).cross(fz_n) + my;
-    out.segment<3>(6) += fs;
-    out.segment<3>(9) += (c - p).cross(fs) + mz;
+    const V fz_n = fz * n;
+    const V fs = fx * xt + fl;
+    out.template segment<3>(0) += fz_n;
+    out.template segment<3>(3) += (c - p).cross(fz_n) + my;
+    out.template segment<3>(6) += fs;
+    out.template segment<3>(9) += (c - p).cross(fs) + mz;
   } else if (p_j) {
     // lateral force and aligning moment on the patch (arm c - p from its marker)
-    out.segment<3>(0) += fw;
-    out.segment<3>(3) = (c - p).cross(fw) + my;
-    out.segment<3>(6) += fl;
-    out.segment<3>(9) = (c - p).cross(fl) + mz;
+    out.template segment<3>(0) += fw;
+    out.template segment<3>(3) = (c - p).cross(fw) + my;
+    out.template segment<3>(6) += fl;
+    out.template segment<3>(9) = (c - p).cross(fl) + mz;
   } else {
-    out.segment<3>(0) = fw + fl;
-    out.segment<3>(3) = (c - p).cross(fw + fl) + mz + my;
+    out.template segment<3>(0) = fw + fl;
+    out.template segment<3>(3) = (c - p).cross(fw + fl) + mz + my;
   }
   if (contact) {
-    contact->fz = fz;
-    contact->fx = fx;
-    contact->fy = fy;
-    if (!p_j) contact->fy_wheel = fy;
-    if (!along) contact->fx_wheel = fx;
-    contact->kappa = kappa;
-    contact->alpha = alpha;
+    contact->fz = Val(fz);
+    contact->fx = Val(fx);
+    contact->fy = Val(fy);
+    if (!p_j) contact->fy_wheel = Val(fy);
+    if (!along) contact->fx_wheel = Val(fx);
+    contact->kappa = Val(kappa);
+    contact->alpha = Val(alpha);
   }
   return out;
 }
@@ -196,52 +232,35 @@ void Tire::Evaluate(const MarkerState& mi, const MarkerState& mj, double, ForceE
     throw InputError(relaxed() ? "a tire with relaxation_length > 0 needs a contact-patch marker j"
                                : "a tire without relaxation length takes one marker",
                      {"", 0, "tire '" + name() + "'"});
-  // the patch's pose (dp, dtheta) and twist (v, w) variations: only p_j and
-  // v_j enter, so its rotation columns stay zero
-  const int n_var = patch ? 12 : 6;
-  Vec3 pi = mi.p_WM, vi = mi.v_WM, wi = mi.w_WM, pj = mj.p_WM, vj = mj.v_WM;
-  Mat3 Ri = mi.R_WM;
-  auto eval = [&]() { return Compute(pi, Ri, vi, wi, patch ? &pj : nullptr, patch ? &vj : nullptr, nullptr); };
-  e.wrench = eval();
-  // the tangents cost 24 (with patch: 36) more evaluations: only when asked
+  const Vec3 a0 = mi.R_WM.col(2);
+  // the wrench in doubles whether or not tangents are asked, so that a
+  // residual does not depend on it (the AD evaluation's values may differ
+  // in the last bit)
+  e.wrench = Compute<double>(mi.p_WM, a0, mi.v_WM, mi.w_WM, patch ? &mj.p_WM : nullptr,
+                             patch ? &mj.v_WM : nullptr, nullptr);
   if (!e.tangents) return;
+  // one evaluation in AD scalars gives the exact derivatives of the wrench
+  // by the pose (dp, dtheta with dR = skew(dtheta) R, dp_j) and the twist
+  // (v, w, v_j) of the markers; the patch's rotation does not enter
+  const Eigen::Matrix<Ad, 3, 1> p = Variable(mi.p_WM, kVarPose), v = Variable(mi.v_WM, kVarTwist),
+                                w = Variable(mi.w_WM, kVarTwist + 3), pj = Variable(mj.p_WM, kVarPose + 6),
+                                vj = Variable(mj.v_WM, kVarTwist + 6);
+  // spin axis a = R e_z: d a / d theta_k = e_k x a
+  Eigen::Matrix<Ad, 3, 1> a;
+  for (int i = 0; i < 3; ++i) {
+    a(i) = Ad(a0(i), Eigen::Matrix<double, 18, 1>::Zero());
+    for (int k = 0; k < 3; ++k) a(i).derivatives()(kVarPose + 3 + k) = Vec3::Unit(k).cross(a0)(i);
+  }
+  const Eigen::Matrix<Ad, 12, 1> f = Compute<Ad>(p, a, v, w, patch ? &pj : nullptr, patch ? &vj : nullptr, nullptr);
+  const int n_var = patch ? 9 : 6;
   e.K.setZero();
   e.C.setZero();
-  Vec12 fp, fm;
-  // forces at var = base +- step into fp, fm; var restored to base
-  auto central = [&](Vec3& var, const Vec3& base, const Vec3& step) {
-    var = base + step;
-    fp = eval();
-    var = base - step;
-    fm = eval();
-    var = base;
-  };
-  // central differences: pose (dp, dtheta with dR = skew(dtheta) R), then twist
-  for (int k = 0; k < n_var; ++k) {
-    if (k >= 9) continue;
-    const int a = k % 3;
-    Vec3 step = Vec3::Zero();
-    step[a] = kStepPose;
-    if (k < 3) {
-      central(pi, mi.p_WM, step);
-    } else if (k < 6) {
-      Ri = ExpSO3(step) * mi.R_WM;
-      fp = eval();
-      Ri = ExpSO3(-step) * mi.R_WM;
-      fm = eval();
-      Ri = mi.R_WM;
-    } else {
-      central(pj, mj.p_WM, step);
+  for (int r = 0; r < 12; ++r) {
+    const auto& g = f(r).derivatives();
+    for (int k = 0; k < n_var; ++k) {
+      e.K(r, k) = g(kVarPose + k);
+      e.C(r, k) = g(kVarTwist + k);
     }
-    e.K.col(k) = (fp - fm) / (2 * kStepPose);
-    step[a] = kStepRate;
-    if (k < 3)
-      central(vi, mi.v_WM, step);
-    else if (k < 6)
-      central(wi, mi.w_WM, step);
-    else
-      central(vj, mj.v_WM, step);
-    e.C.col(k) = (fp - fm) / (2 * kStepRate);
   }
 }
 

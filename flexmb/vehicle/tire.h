@@ -126,8 +126,9 @@ struct TireContact {
 /// patch, from its slip Vsx' = Vsx + (v_j - v) . x_t, kappa = -Vsx' / V; Fz
 /// and the rolling resistance stay on the wheel. Linear range, massless
 /// patch: sigma_kappa dFx/dx + Fx = Fx_ss, sigma_kappa = Kx / k_x.
-/// K and C are central finite differences of the wrench (the element's
-/// documented choice, docs/design.md "Vehicle: tire tangent").
+/// K and C are the exact derivatives of the wrench, computed with it in one
+/// forward-mode evaluation (Eigen's AutoDiff; docs/design.md "Vehicle: tire
+/// tangent").
 /// Road surface (SetRoad): the road under the wheel is the plane through
 /// (p_x, p_y, h(p_x)) with the normal n = (-h', 0, 1) / sqrt(1 + h'^2)
 /// (h, h' = dh/dx of the RoadSurface at the centre's x) in place of z = 0
@@ -135,7 +136,8 @@ struct TireContact {
 /// damper is the centre's velocity along n, (v_z - h' v_x) n_z (the road's
 /// curvature neglected), and the slip frame x_t = normalize(a x n) follows
 /// the road's slope. The vertical road input thus acts through the radial
-/// stiffness and damping; the finite-difference tangents see h(p_x) and h'.
+/// stiffness and damping; the tangents see h(p_x) and h' (h'' = 0 of the
+/// piecewise linear profile).
 /// Without a road (the default) the flat road z = 0 is evaluated exactly as
 /// before.
 class Tire final : public ForceElement {
@@ -179,9 +181,14 @@ class Tire final : public ForceElement {
   const RoadSurface* road() const { return road_.get(); }
 
  private:
-  // wheel wrench (head) and patch wrench (tail); no patch when p_j is null
-  Vec12 Compute(const Vec3& p, const Mat3& R, const Vec3& v, const Vec3& w, const Vec3* p_j, const Vec3* v_j,
-                TireContact* contact) const;
+  template <class S>
+  using V3 = Eigen::Matrix<S, 3, 1>;
+  // wheel wrench (head) and patch wrench (tail) for the spin axis a; no
+  // patch when p_j is null. S: double, or an AD scalar for the tangents
+  // (tire.cc, instantiated there only)
+  template <class S>
+  Eigen::Matrix<S, 12, 1> Compute(const V3<S>& p, const V3<S>& a, const V3<S>& v, const V3<S>& w, const V3<S>* p_j,
+                                  const V3<S>* v_j, TireContact* contact) const;
   TireData data_;
   double mu_;
   double k_carcass_ = 0.0;
