@@ -390,6 +390,7 @@ void BindSimulation(py::module_& m) {
         d["newton_iterations"] = st.newton_iterations;
         d["factorizations"] = st.factorizations;
         d["chord_checks"] = st.chord_checks;
+        d["chord_steps"] = st.chord_steps;
         d["max_constraint_violation"] = st.max_constraint_violation;
         d["integration_time_s"] = s.seconds_integrating;
         return d;

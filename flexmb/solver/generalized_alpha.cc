@@ -120,8 +120,11 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
       // within the tolerance and contracting (a matrix that no longer fits
       // the iterate, e.g. after a contact opened, shows in the rate)
       chord_ok = chord <= kChordAcceptFraction * m.solver.newton_tol && chord <= kChordMaxRate * prev_norm;
-      if (chord_ok) {
-        probe_accepted_at = it;
+      // above the tolerance but contracting fast: take it, check again next
+      const bool keep = !chord_ok && chord <= kChordKeepRate * prev_norm && it + 1 < m.solver.max_newton;
+      if (chord_ok || keep) {
+        if (probe_accepted_at < 0) probe_accepted_at = it;
+        if (keep) ++stats.chord_steps;
       } else {
         probe_failed_at = it;
         // not converged yet: the Newton matrix at this iterate

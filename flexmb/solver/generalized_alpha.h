@@ -33,6 +33,7 @@ struct IntegratorStats {
   long newton_iterations = 0;  ///< Newton iterations of all attempts
   long factorizations = 0;     ///< numeric LU factorizations
   long chord_checks = 0;       ///< full Newton's convergence checks with the previous factorization
+  long chord_steps = 0;        ///< of these, corrections above the tolerance taken without a new matrix (kChordKeepRate)
   double max_constraint_violation = 0.0;  ///< max |Phi| over accepted steps
 };
 
@@ -60,6 +61,15 @@ class GeneralizedAlpha {
   /// (Newton contracts quadratically near the solution; a chord correction
   /// that does not shrink means the previous matrix no longer fits).
   static constexpr double kChordMaxRate = 0.5;
+
+  /// A chord correction above the tolerance that is at most this fraction
+  /// of the previous correction is taken as it is, and the next iteration
+  /// checks again with the same matrix (a matrix of this step's first
+  /// iterate serves while it contracts this fast: its error after one more
+  /// chord step is far below the tolerance); a weaker contraction
+  /// refreshes the matrix at the iterate (docs/design.md "Convergence check
+  /// by a chord step").
+  static constexpr double kChordKeepRate = 0.01;
 
   /// Full Newton tries its first chord check of a step at the iteration
   /// where the last step's was accepted (or after the last that failed);

@@ -224,6 +224,7 @@ RunSummary RunModel(const RunOptions& opt) {
     s.newton_iterations = st.newton_iterations;
     s.factorizations = st.factorizations;
     s.chord_checks = st.chord_checks;
+    s.chord_steps = st.chord_steps;
     s.max_constraint_violation = st.max_constraint_violation;
     s.integration_time_s = Seconds(t_start, end);
     s.steps_per_second = s.integration_time_s > 0 ? s.steps / s.integration_time_s : 0.0;
@@ -255,6 +256,7 @@ std::string SummaryJson(const RunSummary& s) {
   add("newton_iterations", std::to_string(s.newton_iterations));
   add("factorizations", std::to_string(s.factorizations));
   add("chord_checks", std::to_string(s.chord_checks));
+  add("chord_steps", std::to_string(s.chord_steps));
   add("wall_time_s", JsonNumber(s.wall_time_s));
   add("integration_time_s", JsonNumber(s.integration_time_s));
   add("max_constraint_violation", JsonNumber(s.max_constraint_violation));

@@ -48,6 +48,7 @@ struct RunSummary {
   long newton_iterations = 0;     ///< Newton iterations of all attempts
   long factorizations = 0;        ///< numeric LU factorizations
   long chord_checks = 0;          ///< full Newton convergence checks with the previous factorization
+  long chord_steps = 0;           ///< of these, corrections above the tolerance taken without a new matrix
   double wall_time_s = 0.0;       ///< wall time of the whole run, loading included [s]
   double integration_time_s = 0.0;  ///< wall time of initialization and time integration [s]
   double max_constraint_violation = 0.0;  ///< max |Phi| over accepted steps [m or rad]
