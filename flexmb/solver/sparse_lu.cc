@@ -92,13 +92,22 @@ bool SparseLu::dense() const { return impl_->dense; }
 
 bool SparseLu::Impl::FactorizeDense(const SparseMat& A, int& singular_column, double& rcond) {
   dense_ok = false;
-  a.setZero();
-  col_max.setZero();
+  // a full column (all n rows stored; compressed storage keeps them in row
+  // order) is one copy; others are scattered into a zeroed column
+  const int* outer = A.outerIndexPtr();
+  const int* counts = A.innerNonZeroPtr();  // null when compressed
+  const int* rows = A.innerIndexPtr();
+  const double* values = A.valuePtr();
   for (int j = 0; j < n; ++j) {
-    for (SparseMat::InnerIterator it(A, j); it; ++it) {
-      a(it.row(), j) = it.value();
-      col_max(j) = std::max(col_max(j), std::abs(it.value()));
+    auto col = a.col(j);
+    const int b = outer[j], e = counts ? b + counts[j] : outer[j + 1];
+    if (e - b == n) {
+      col = Eigen::Map<const Eigen::VectorXd>(values + b, n);
+    } else {
+      col.setZero();
+      for (int p = b; p < e; ++p) col(rows[p]) = values[p];
     }
+    col_max(j) = n > 0 ? col.cwiseAbs().maxCoeff() : 0.0;
   }
   DenseLu(a, piv);
   // negligible pivot: round-off of the column's size -> dependent column
