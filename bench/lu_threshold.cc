@@ -4,7 +4,13 @@
 /// analysed once, klu_refactor as in the integrator) and by the dense path
 /// (Eigen PartialPivLU of a dense copy), for random matrices of n rows with a
 /// given fill (fraction of stored entries, diagonal always stored, dominant).
-/// Usage: lu_threshold_bench. Output: a markdown table (docs/PERFORMANCE.md).
+/// A second table compares the dense path (flexmb's blocked LU, DenseLu in
+/// sparse_lu.cc) with LAPACK's dgetrf + dgetrs from OpenBLAS (one thread)
+/// and Eigen's PartialPivLU on the same dense copy of fully stored matrices
+/// (issue 23: "LAPACK dgetrf through OpenBLAS measured against the own
+/// blocked LU"); every column includes the copy of the sparse matrix into a
+/// dense one.
+/// Usage: lu_threshold_bench. Output: markdown tables (docs/PERFORMANCE.md).
 
 #include <ctime>
 #include <cstdio>
@@ -12,8 +18,17 @@
 #include <random>
 #include <vector>
 
+#include <Eigen/LU>
+
 #include "bench/bench_clock.h"
 #include "flexmb/solver/sparse_lu.h"
+
+extern "C" {
+void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
+void dgetrs_(const char* trans, const int* n, const int* nrhs, const double* a, const int* lda, const int* ipiv,
+             double* b, const int* ldb, int* info);
+void openblas_set_num_threads(int threads);
+}
 
 namespace {
 
@@ -48,6 +63,35 @@ double Time(flexmb::SparseLu::Path path, flexmb::SparseMat A, int reps) {
   return best;
 }
 
+// best of 5 of the mean CPU time [us] of (dense copy, factorize, solve) by
+// LAPACK (OpenBLAS) or Eigen's PartialPivLU
+double TimeDenseLibrary(bool lapack, flexmb::SparseMat A, int reps) {
+  const int n = static_cast<int>(A.rows());
+  Eigen::MatrixXd a(n, n);
+  std::vector<int> ipiv(static_cast<size_t>(n));
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu(n);
+  flexmb::VecX b = flexmb::VecX::Ones(n);
+  double best = 1e300;
+  for (int r = 0; r < 5; ++r) {
+    const double t0 = flexmb::bench::ThreadCpuNow();
+    for (int k = 0; k < reps; ++k) {
+      A.valuePtr()[0] += 1e-3;
+      a = A;
+      if (lapack) {
+        int info = 0, one = 1;
+        dgetrf_(&n, &n, a.data(), &n, ipiv.data(), &info);
+        dgetrs_("N", &n, &one, a.data(), &n, ipiv.data(), b.data(), &n, &info);
+        if (info != 0) std::fprintf(stderr, "dgetrf/dgetrs info %d\n", info);
+      } else {
+        lu.compute(a);
+        b = lu.solve(b);
+      }
+    }
+    best = std::min(best, (flexmb::bench::ThreadCpuNow() - t0) / reps * 1e6);
+  }
+  return best;
+}
+
 }  // namespace
 
 int main() {
@@ -61,6 +105,17 @@ int main() {
       std::printf("| %d | %.2f | %.2f | %.1f | %.1f | %.2f |\n", n, fill,
                   static_cast<double>(A.nonZeros()) / (static_cast<double>(n) * n), tk, td, tk / td);
     }
+  }
+  openblas_set_num_threads(1);
+  std::printf("\n| n | flexmb dense path [us] | LAPACK dgetrf + dgetrs, OpenBLAS [us] | Eigen PartialPivLU [us] | LAPACK / flexmb | Eigen / flexmb |\n"
+              "|---|---|---|---|---|---|\n");
+  for (int n : {32, 64, 112, 166, 256}) {
+    const flexmb::SparseMat A = RandomMatrix(n, 1.0, 29u + n);
+    const int reps = std::max(3, 4000000 / (n * n * n));
+    const double td = Time(flexmb::SparseLu::Path::kDense, A, reps);
+    const double tl = TimeDenseLibrary(true, A, reps);
+    const double te = TimeDenseLibrary(false, A, reps);
+    std::printf("| %d | %.1f | %.1f | %.1f | %.2f | %.2f |\n", n, td, tl, te, tl / td, te / td);
   }
   return 0;
 }
