@@ -100,19 +100,24 @@ TEST(GeneralizedAlpha, AdaptiveStepMeetsTolerance) {
 
 // angle of the rod after t_end and the integrator's counters, full Newton or
 // modified Newton (SolverSettings::jacobian_reuse)
-double AngleWithReuse(bool reuse, bool adaptive, IntegratorStats& stats, double newton_tol = 1e-10) {
-  Rod r = MakeRod(adaptive ? 1e-2 : 1e-3, 0.8, adaptive);
-  r.model->solver.jacobian_reuse = reuse;
-  r.model->solver.newton_tol = newton_tol;
+// runs the rod to t_end; its angle then, and the integrator's counters
+double RodAngleAt(const Rod& r, double t_end, IntegratorStats& stats) {
   Simulator sim(*r.model);
   sim.Initialize();
-  sim.Run(0.5, 0.0, nullptr);
+  sim.Run(t_end, 0.0, nullptr);
   stats = sim.stats();
   const Body& b = *r.model->bodies[r.body];
   Vec3 p;
   Mat3 R;
   b.BodyFramePose(sim.state().q.data() + b.q_offset, p, R);
   return std::atan2(-R(1, 0), R(0, 0));
+}
+
+double AngleWithReuse(bool reuse, bool adaptive, IntegratorStats& stats, double newton_tol = 1e-10) {
+  Rod r = MakeRod(adaptive ? 1e-2 : 1e-3, 0.8, adaptive);
+  r.model->solver.jacobian_reuse = reuse;
+  r.model->solver.newton_tol = newton_tol;
+  return RodAngleAt(r, 0.5, stats);
 }
 
 TEST(GeneralizedAlpha, JacobianReuseConvergesToTheSameSolution) {
@@ -185,15 +190,7 @@ TEST(GeneralizedAlpha, FullNewtonTakesAFastContractingChordStepWithoutANewMatrix
   auto angle = [](double newton_tol, IntegratorStats& stats) {
     Rod r = MakeRod(2e-2, 0.8, false);
     r.model->solver.newton_tol = newton_tol;
-    Simulator sim(*r.model);
-    sim.Initialize();
-    sim.Run(1.0, 0.0, nullptr);
-    stats = sim.stats();
-    const Body& b = *r.model->bodies[r.body];
-    Vec3 p;
-    Mat3 R;
-    b.BodyFramePose(sim.state().q.data() + b.q_offset, p, R);
-    return std::atan2(-R(1, 0), R(0, 0));
+    return RodAngleAt(r, 1.0, stats);
   };
   IntegratorStats s10, s14;
   const double a10 = angle(1e-10, s10), a14 = angle(1e-14, s14);

@@ -89,15 +89,23 @@ TEST(Tire, CombinedSlipReducesLateralForce) {
   EXPECT_LT(std::abs(combined.fy), 0.9 * std::abs(pure.fy));
 }
 
+// A wheel of the Truck() tire at 14 m/s with a lateral velocity of 0.8 m/s,
+// steered by 0.1 rad and cambered by 0.02 rad, spinning at `spin` times the
+// free-rolling rate (longitudinal slip) with a small yaw and roll rate:
+// combined slip, so that every term of the wrench acts.
+MarkerState SteeredCamberedWheel(double spin) {
+  const double re = 0.527 - 0.012 / 3.0;
+  MarkerState m = Wheel(0.515, Vec3(14.0, 0.8, -0.05), spin * 14.0 / re);
+  m.R_WM = (Eigen::AngleAxisd(0.1, Vec3::UnitZ()) * Eigen::AngleAxisd(0.02, Vec3::UnitX())).toRotationMatrix() * m.R_WM;
+  m.w_WM = m.R_WM.col(2) * spin * 14.0 / re + Vec3(0.01, 0.0, 0.2);
+  return m;
+}
+
 // independent finite differences of the wrench, forward-backward with a
 // different step and the rotation applied as a quaternion product
 TEST(Tire, TangentsMatchFiniteDifferences) {
   const Tire tire("t", Truck(), 0.8);
-  const double re = 0.527 - 0.012 / 3.0;
-  MarkerState m = Wheel(0.515, Vec3(14.0, 0.8, -0.05), 1.05 * 14.0 / re);
-  // a steered and slightly cambered wheel
-  m.R_WM = (Eigen::AngleAxisd(0.1, Vec3::UnitZ()) * Eigen::AngleAxisd(0.02, Vec3::UnitX())).toRotationMatrix() * m.R_WM;
-  m.w_WM = m.R_WM.col(2) * 1.05 * 14.0 / re + Vec3(0.01, 0.0, 0.2);
+  const MarkerState m = SteeredCamberedWheel(1.05);
   ForceEval e;
   tire.Evaluate(m, MarkerState{}, 0.0, e);
   const double h = 1e-5;
@@ -145,10 +153,7 @@ TEST(Tire, TangentsAreExactToRichardsonDifferences) {
   TireData d = Truck();
   d.rolling_resistance = 0.006;
   const Tire tire("t", d, 0.8);
-  const double re = 0.527 - 0.012 / 3.0;
-  MarkerState m = Wheel(0.515, Vec3(14.0, 0.8, -0.05), 1.08 * 14.0 / re);
-  m.R_WM = (Eigen::AngleAxisd(0.1, Vec3::UnitZ()) * Eigen::AngleAxisd(0.02, Vec3::UnitX())).toRotationMatrix() * m.R_WM;
-  m.w_WM = m.R_WM.col(2) * 1.08 * 14.0 / re + Vec3(0.01, 0.0, 0.2);
+  const MarkerState m = SteeredCamberedWheel(1.08);
   ForceEval e;
   tire.Evaluate(m, MarkerState{}, 0.0, e);
   // wrench with variation k (0-5 pose: dp, dtheta applied as a quaternion
