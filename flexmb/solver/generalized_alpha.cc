@@ -75,6 +75,7 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
   double prev_norm = INFINITY;
   const double max_rate = m.solver.jacobian_reuse_rate;
   int probe_accepted_at = -1, probe_failed_at = -1;  // iterations of this attempt's chord checks
+  bool kept_chord = false;  // a chord step above the tolerance was taken with the current factorization
   bool refresh = !reuse || !have_matrix_ || matrix_h_ != h;
   used_kept_ = false;
   for (int it = 0; it < m.solver.max_newton; ++it) {
@@ -118,14 +119,22 @@ StepStatus GeneralizedAlpha::Attempt(const State& s, double h, bool reuse) {
       const double chord = ws.rhs.head(nv).lpNorm<Eigen::Infinity>() / scale0;
       ++stats.chord_checks;
       // within the tolerance and contracting (a matrix that no longer fits
-      // the iterate, e.g. after a contact opened, shows in the rate)
-      chord_ok = chord <= kChordAcceptFraction * m.solver.newton_tol && chord <= kChordMaxRate * prev_norm;
+      // the iterate, e.g. after a contact opened, shows in the rate); after
+      // a kept chord step the matrix is older than the previous iterate, and
+      // the error left, rate / (1 - rate) |chord|, must be as small as a
+      // kept matrix's (kChordKeepRate = kKeptMatrixErrorFraction)
+      const double max_rate = kept_chord ? kChordKeepRate : kChordMaxRate;
+      chord_ok = chord <= kChordAcceptFraction * m.solver.newton_tol && chord <= max_rate * prev_norm;
       // above the tolerance but contracting fast: take it, check again next
       const bool keep = !chord_ok && chord <= kChordKeepRate * prev_norm && it + 1 < m.solver.max_newton;
       if (chord_ok || keep) {
         if (probe_accepted_at < 0) probe_accepted_at = it;
-        if (keep) ++stats.chord_steps;
+        if (keep) {
+          ++stats.chord_steps;
+          kept_chord = true;
+        }
       } else {
+        kept_chord = false;
         probe_failed_at = it;
         // not converged yet: the Newton matrix at this iterate
         EvaluateForces(m, trial_, ws, true);

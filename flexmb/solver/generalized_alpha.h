@@ -64,11 +64,12 @@ class GeneralizedAlpha {
 
   /// A chord correction above the tolerance that is at most this fraction
   /// of the previous correction is taken as it is, and the next iteration
-  /// checks again with the same matrix (a matrix of this step's first
-  /// iterate serves while it contracts this fast: its error after one more
-  /// chord step is far below the tolerance); a weaker contraction
-  /// refreshes the matrix at the iterate (docs/design.md "Convergence check
-  /// by a chord step").
+  /// checks again with the current factorization; a weaker contraction
+  /// refreshes the matrix at the iterate. After such a step the check that
+  /// ends the step must show this contraction too (instead of
+  /// kChordMaxRate), so that the error left is at most about this fraction
+  /// of the tolerance, as with a kept matrix (docs/design.md "Convergence
+  /// check by a chord step").
   static constexpr double kChordKeepRate = 0.01;
 
   /// Full Newton tries its first chord check of a step at the iteration
