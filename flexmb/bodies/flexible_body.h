@@ -115,8 +115,9 @@ class FlexibleBody final : public Body {
   /// with u_k = rho_k + H_k^t w [m/s].
   Vec3 NodeVelocity(const double* q, const double* v, int node) const;
   /// Copies the mode rows of the marker nodes into one small matrix
-  /// (marker_modes_): the 6 rows of a node are 8 n_ bytes apart in the
-  /// column-major mode matrix, so every marker evaluation touched n_ pages.
+  /// (marker_modes_): in the column-major mode matrix one row's entries of
+  /// successive modes are 8 x 6 x nodes bytes apart, so every marker
+  /// evaluation touched one page per mode.
   void UseMarkerNodes(const std::vector<int>& nodes) override;
   /// Number of modal coordinates.
   int modes() const { return n_; }
