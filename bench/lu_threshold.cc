@@ -66,21 +66,6 @@ double Time(flexmb::SparseLu::Path path, flexmb::SparseMat A, int reps) {
   return best;
 }
 
-// the dense copy of A as SparseLu's dense path makes it: a fully stored
-// column in one piece, others scattered into a zeroed column
-void CopyDense(const flexmb::SparseMat& A, Eigen::MatrixXd& a) {
-  const int n = static_cast<int>(A.rows());
-  for (int j = 0; j < n; ++j) {
-    const int b = A.outerIndexPtr()[j], e = A.outerIndexPtr()[j + 1];
-    if (e - b == n) {
-      a.col(j) = Eigen::Map<const Eigen::VectorXd>(A.valuePtr() + b, n);
-    } else {
-      a.col(j).setZero();
-      for (int p = b; p < e; ++p) a(A.innerIndexPtr()[p], j) = A.valuePtr()[p];
-    }
-  }
-}
-
 // best of 5 of the mean CPU time [us] of (dense copy as SparseLu's,
 // factorize, solve) by LAPACK (OpenBLAS) or Eigen's PartialPivLU
 double TimeDenseLibrary(bool lapack, flexmb::SparseMat A, int reps) {
@@ -94,7 +79,7 @@ double TimeDenseLibrary(bool lapack, flexmb::SparseMat A, int reps) {
     const double t0 = flexmb::bench::ThreadCpuNow();
     for (int k = 0; k < reps; ++k) {
       A.valuePtr()[0] += 1e-3;
-      CopyDense(A, a);
+      flexmb::CopyToDense(A, a);
       b.setOnes();
       if (lapack) {
 #ifdef FLEXMB_BENCH_LAPACK

@@ -58,6 +58,24 @@ void DenseLu(Eigen::MatrixXd& a, Eigen::VectorXi& piv) {
 
 }  // namespace
 
+void CopyToDense(const SparseMat& A, Eigen::MatrixXd& a) {
+  const int n = static_cast<int>(A.rows());
+  const int* outer = A.outerIndexPtr();
+  const int* counts = A.innerNonZeroPtr();  // null when compressed
+  const int* rows = A.innerIndexPtr();
+  const double* values = A.valuePtr();
+  for (int j = 0; j < n; ++j) {
+    auto col = a.col(j);
+    const int b = outer[j], e = counts ? b + counts[j] : outer[j + 1];
+    if (e - b == n) {
+      col = Eigen::Map<const Eigen::VectorXd>(values + b, n);
+    } else {
+      col.setZero();
+      for (int p = b; p < e; ++p) col(rows[p]) = values[p];
+    }
+  }
+}
+
 struct SparseLu::Impl {
   klu_common common;
   klu_symbolic* symbolic = nullptr;
@@ -92,23 +110,8 @@ bool SparseLu::dense() const { return impl_->dense; }
 
 bool SparseLu::Impl::FactorizeDense(const SparseMat& A, int& singular_column, double& rcond) {
   dense_ok = false;
-  // a full column (all n rows stored; compressed storage keeps them in row
-  // order) is one copy; others are scattered into a zeroed column
-  const int* outer = A.outerIndexPtr();
-  const int* counts = A.innerNonZeroPtr();  // null when compressed
-  const int* rows = A.innerIndexPtr();
-  const double* values = A.valuePtr();
-  for (int j = 0; j < n; ++j) {
-    auto col = a.col(j);
-    const int b = outer[j], e = counts ? b + counts[j] : outer[j + 1];
-    if (e - b == n) {
-      col = Eigen::Map<const Eigen::VectorXd>(values + b, n);
-    } else {
-      col.setZero();
-      for (int p = b; p < e; ++p) col(rows[p]) = values[p];
-    }
-    col_max(j) = n > 0 ? col.cwiseAbs().maxCoeff() : 0.0;
-  }
+  CopyToDense(A, a);
+  for (int j = 0; j < n; ++j) col_max(j) = a.col(j).cwiseAbs().maxCoeff();
   DenseLu(a, piv);
   // negligible pivot: round-off of the column's size -> dependent column
   const double tol = n * std::numeric_limits<double>::epsilon();

@@ -18,6 +18,12 @@
 
 namespace flexmb {
 
+/// Copies the square sparse A into the dense a (sized n x n by the caller)
+/// as SparseLu's dense path does: a fully stored column in one piece (the
+/// rows of Eigen's storage are in order), others scattered into a zeroed
+/// column.
+void CopyToDense(const SparseMat& A, Eigen::MatrixXd& a);
+
 /// LU factorization (KLU, or dense partial pivoting) for one fixed sparsity
 /// pattern.
 class SparseLu {
