@@ -104,17 +104,15 @@ void FlexibleBody::UseMarkerNodes(const std::vector<int>& nodes) {
   }
 }
 
-Eigen::Block<const MatX, 3, Eigen::Dynamic> FlexibleBody::Ht(int node) const {
+Eigen::Block<const MatX, 3, Eigen::Dynamic> FlexibleBody::ModeRows(int node, int first) const {
   const int slot = node >= 0 && node < static_cast<int>(marker_slot_.size()) ? marker_slot_[static_cast<size_t>(node)] : -1;
-  if (slot >= 0) return Eigen::Block<const MatX, 3, Eigen::Dynamic>(marker_modes_, 6 * slot, 0, 3, n_);
-  return Eigen::Block<const MatX, 3, Eigen::Dynamic>(data_.reduced->modes, 6 * node, 0, 3, n_);
+  if (slot >= 0) return Eigen::Block<const MatX, 3, Eigen::Dynamic>(marker_modes_, 6 * slot + first, 0, 3, n_);
+  return Eigen::Block<const MatX, 3, Eigen::Dynamic>(data_.reduced->modes, 6 * node + first, 0, 3, n_);
 }
 
-Eigen::Block<const MatX, 3, Eigen::Dynamic> FlexibleBody::Hr(int node) const {
-  const int slot = node >= 0 && node < static_cast<int>(marker_slot_.size()) ? marker_slot_[static_cast<size_t>(node)] : -1;
-  if (slot >= 0) return Eigen::Block<const MatX, 3, Eigen::Dynamic>(marker_modes_, 6 * slot + 3, 0, 3, n_);
-  return Eigen::Block<const MatX, 3, Eigen::Dynamic>(data_.reduced->modes, 6 * node + 3, 0, 3, n_);
-}
+Eigen::Block<const MatX, 3, Eigen::Dynamic> FlexibleBody::Ht(int node) const { return ModeRows(node, 0); }
+
+Eigen::Block<const MatX, 3, Eigen::Dynamic> FlexibleBody::Hr(int node) const { return ModeRows(node, 3); }
 
 bool FlexibleBody::IsInterfaceNode(int node) const {
   const auto& in = data_.reduced->interface_nodes;

@@ -145,6 +145,9 @@ class FlexibleBody final : public Body {
   void MarkerBodyTwist(const double* v, const Marker& m, const Vec3& s, Vec3& v_rel, Vec3& w_B) const;
   // throws InputError naming the body if `node` is not a node index
   void CheckNode(int node) const;
+  // rows first .. first + 2 of the node's 6 mode rows (marker_modes_ when
+  // the node carries a marker)
+  Eigen::Block<const MatX, 3, Eigen::Dynamic> ModeRows(int node, int first) const;
   Eigen::Block<const MatX, 3, Eigen::Dynamic> Ht(int node) const;
   Eigen::Block<const MatX, 3, Eigen::Dynamic> Hr(int node) const;
 
