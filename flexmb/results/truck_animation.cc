@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "flexmb/bodies/rigid_body.h"
 #include "flexmb/common/error.h"
@@ -21,8 +22,9 @@ constexpr double kTruckAnimHubSize = 0.12, kTruckAnimHubWidth = 0.3;  // axle hu
 constexpr double kTruckAnimPatchLength = 0.2, kTruckAnimPatchThickness = 0.02;  // contact patch box [m]
 constexpr double kTruckAnimColumnRadius = 0.025;  // steering column [m]
 constexpr double kTruckAnimWheelRadius = 0.25, kTruckAnimWheelThickness = 0.04;  // steering wheel [m]
-// distance joints drawn as lines between their markers
-constexpr const char* kTruckAnimLinks[] = {"drag_link", "tie_rod", "front_extra_arm", "rear_extra_arm"};
+// distance joints drawn as lines between their markers (and each axle's
+// additional arm, <axle>_extra_arm)
+constexpr const char* kTruckAnimLinks[] = {"drag_link", "tie_rod"};
 
 // shape axes of the steering column: z along the column, leaning rearwards
 // by column_inclination from the vertical
@@ -82,6 +84,60 @@ ShapeMesh TruckAnimCorridor(const LaneChangeCourse& course) {
   return m;
 }
 
+// the shape of body `name` when it is a part of an axle (axle, wheel, arm,
+// hub, contact patch) or a bogie's beam; false for any other body
+bool TruckAnimAxleShape(const TruckData& d, const std::string& name, Shape& s) {
+  for (const AxleData& a : d.axles) {
+    const TireData& t = a.tire;
+    if (name == a.name + "_axle") {
+      s.type = Shape::Type::kCylinder;
+      s.size = Vec3(a.steered ? 0.07 : 0.1, a.track, 0);
+      s.R_BS = TruckAnimAxisY();
+      return true;
+    }
+    if (name == a.name + "_arm") {
+      s.type = Shape::Type::kBox;
+      s.size = Vec3(a.suspension.arm_length, 0.08, 0.08);
+      return true;
+    }
+    if (name == a.name + "_axle_hub") {
+      // from the axle centre up to the additional arm's end
+      const double h = a.suspension.extra_arm_height;
+      s.type = Shape::Type::kBox;
+      s.size = Vec3(kTruckAnimHubSize, kTruckAnimHubWidth, h + kTruckAnimHubSize);
+      s.p_BS += Vec3(0, 0, 0.5 * h);
+      return true;
+    }
+    for (int k = 0; k < 2; ++k) {
+      if (name == WheelName(a, k)) {
+        s.type = Shape::Type::kCylinder;
+        s.size = Vec3(t.unloaded_radius, 0.28 * t.count, 0);
+        s.R_BS = TruckAnimAxisY();
+        return true;
+      }
+      if (name == WheelName(a, k) + "_patch") {
+        // flat on the road under the wheel centre (body frame = vehicle frame, road at z = 0)
+        s.type = Shape::Type::kBox;
+        s.size = Vec3(kTruckAnimPatchLength, 0.28 * t.count, kTruckAnimPatchThickness);
+        s.p_BS.z() = 0.5 * kTruckAnimPatchThickness;
+        return true;
+      }
+    }
+  }
+  for (size_t b = 0; b < d.bogies.size(); ++b) {
+    if (name != "bogie_" + d.bogies[b].name + "_left" && name != "bogie_" + d.bogies[b].name + "_right") continue;
+    // a leaf from one axle to the other
+    double x_max = -1e300, x_min = 1e300;
+    for (const AxleData& a : d.axles)
+      if (a.bogie == static_cast<int>(b)) x_max = std::max(x_max, a.x), x_min = std::min(x_min, a.x);
+    s.type = Shape::Type::kBox;
+    s.size = Vec3(x_max - x_min, 0.09, 0.1);
+    s.p_BS.x() = 0.5 * (x_max + x_min);
+    return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 void SetTruckShapes(const TruckData& d, Model& model) {
@@ -100,37 +156,14 @@ void SetTruckShapes(const TruckData& d, Model& model) {
     } else if (name == "cargo") {
       s.type = Shape::Type::kBox;
       s.size = Vec3(5.0, 2.3, 1.0);
-    } else if (name == "front_axle" || name == "rear_axle") {
-      const bool front = name == "front_axle";
-      s.type = Shape::Type::kCylinder;
-      s.size = Vec3(front ? 0.07 : 0.1, front ? d.front_track : d.rear_track, 0);
-      s.R_BS = TruckAnimAxisY();
-    } else if (name == "wheel_fl" || name == "wheel_fr" || name == "wheel_rl" || name == "wheel_rr") {
-      const TireData& t = name[6] == 'f' ? d.front_tire : d.rear_tire;
-      s.type = Shape::Type::kCylinder;
-      s.size = Vec3(t.unloaded_radius, 0.28 * t.count, 0);
-      s.R_BS = TruckAnimAxisY();
-    } else if (name == "front_arm" || name == "rear_arm") {
-      s.type = Shape::Type::kBox;
-      s.size = Vec3(name == "front_arm" ? d.front.arm_length : d.rear.arm_length, 0.08, 0.08);
+    } else if (TruckAnimAxleShape(d, name, s)) {
+      // an axle's part (axle, wheels, arm, hub, contact patches) or a bogie's beam
     } else if (name == "knuckle_left" || name == "knuckle_right") {
       s.type = Shape::Type::kBox;
       s.size = Vec3(0.15, 0.15, 0.25);
     } else if (name == "pitman_arm") {
       s.type = Shape::Type::kBox;
       s.size = Vec3(0.05, 0.05, d.pitman_arm_length);
-    } else if (name == "front_axle_hub" || name == "rear_axle_hub") {
-      // from the axle centre up to the additional arm's end
-      const double h = (name[0] == 'f' ? d.front : d.rear).extra_arm_height;
-      s.type = Shape::Type::kBox;
-      s.size = Vec3(kTruckAnimHubSize, kTruckAnimHubWidth, h + kTruckAnimHubSize);
-      s.p_BS += Vec3(0, 0, 0.5 * h);
-    } else if (name.size() == 14 && name.starts_with("wheel_") && name.ends_with("_patch")) {
-      // flat on the road under the wheel centre (body frame = vehicle frame, road at z = 0)
-      const TireData& t = name[6] == 'f' ? d.front_tire : d.rear_tire;
-      s.type = Shape::Type::kBox;
-      s.size = Vec3(kTruckAnimPatchLength, 0.28 * t.count, kTruckAnimPatchThickness);
-      s.p_BS.z() = 0.5 * kTruckAnimPatchThickness;
     } else if (name == "steering_column") {
       s.type = Shape::Type::kCylinder;
       s.size = Vec3(kTruckAnimColumnRadius, d.column_length, 0);
@@ -164,7 +197,9 @@ TruckAnimation::TruckAnimation(const std::string& dir, const TruckData& d, const
     wheel.p_BS = rb->com_B() + 0.5 * d.column_length * wheel.R_BS.col(2);
     writer_->AddShapeMesh(MakeShapeMesh(wheel, b, "steering wheel"));
   }
-  for (const char* name : kTruckAnimLinks) {
+  std::vector<std::string> links(std::begin(kTruckAnimLinks), std::end(kTruckAnimLinks));
+  for (const AxleData& a : d.axles) links.push_back(a.name + "_extra_arm");
+  for (const std::string& name : links) {
     const int j = model.FindJoint(name);
     if (j >= 0) writer_->AddLink(model.joints[j]->marker_i, model.joints[j]->marker_j);
   }

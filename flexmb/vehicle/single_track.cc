@@ -1,6 +1,7 @@
 #include "flexmb/vehicle/single_track.h"
 
 #include <cmath>
+#include <numeric>
 
 #include <Eigen/Dense>
 
@@ -46,20 +47,39 @@ SingleTrack::Response SingleTrack::FrequencyResponse(double f, double v, double 
 
 SingleTrack TruckSingleTrack(const TruckData& d, double g) {
   SingleTrack s;
-  s.wheelbase = d.wheelbase;
+  const double L = Wheelbase(d);
+  s.wheelbase = L;
   s.steering_ratio = d.steering_ratio;
-  const std::array<double, 2> w = StaticAxleLoads(d, g);
-  for (int a = 0; a < 2; ++a) {
-    const TireData& td = a == 0 ? d.front_tire : d.rear_tire;
+  // axle 0 the front, the others one rear axle at x = -L (a bogie's trunnion)
+  const std::vector<double> loads = StaticAxleLoads(d, g);
+  const std::array<double, 2> w{loads[0], std::accumulate(loads.begin() + 1, loads.end(), 0.0)};
+  double trail_rear = 0, relax_rear = 0;
+  for (size_t i = 0; i < d.axles.size(); ++i) {
+    const TireData& td = d.axles[i].tire;
     const Tire tire("reference", td, 1.0);
     // per side: a set of td.count tires sharing the wheel's load
-    s.axle_load[a] = w[a];
-    s.cornering_stiffness[a] = 2.0 * td.count * tire.CorneringStiffness(0.5 * w[a] / td.count);
-    s.trail[a] = td.trail;
+    const double c = 2.0 * td.count * tire.CorneringStiffness(0.5 * loads[i] / td.count);
+    // relaxation length at the static load: C(F_z) / k with k = C(F_z0) / sigma_0
+    const double sigma = td.relaxation_length * tire.CorneringStiffness(0.5 * loads[i] / td.count) /
+                         tire.CorneringStiffness(td.nominal_load);
+    const int a = i == 0 ? 0 : 1;
+    s.cornering_stiffness[a] += c;
+    if (a == 0) {
+      s.trail[0] = td.trail;
+      s.relaxation_length[0] = sigma;
+    } else {
+      // the rear group's trail and relaxation length weighted by cornering stiffness
+      trail_rear += c * td.trail;
+      relax_rear += c * sigma;
+    }
   }
+  s.trail[1] = trail_rear / s.cornering_stiffness[1];
+  s.relaxation_length[1] = relax_rear / s.cornering_stiffness[1];
+  s.axle_load[0] = w[0];
+  s.axle_load[1] = w[1];
   // centre of mass: a behind the front axle, b ahead of the rear one
-  const double weight = w[0] + w[1], a = d.wheelbase * w[1] / weight, b = d.wheelbase * w[0] / weight;
-  const double arm = d.wheelbase - s.trail[0] + s.trail[1];
+  const double weight = w[0] + w[1], a = L * w[1] / weight, b = L * w[0] / weight;
+  const double arm = L - s.trail[0] + s.trail[1];
   const double front = weight * (b + s.trail[1]) / arm, rear = weight * (a - s.trail[0]) / arm;
   s.understeer_gradient = front / s.cornering_stiffness[0] - rear / s.cornering_stiffness[1];
 
@@ -72,28 +92,23 @@ SingleTrack TruckSingleTrack(const TruckData& d, double g) {
     inertia += own + mass * ((x - xc) * (x - xc) + y * y);
   };
   for (const PartData* p : {&d.frame, &d.cab, &d.powertrain, &d.cargo}) add(p->mass, p->cg.x(), p->cg.y(), p->inertia.z());
-  const double patch_f = d.front_tire.relaxation_length > 0 ? d.front_tire.count * d.front_tire.patch_mass : 0.0;
-  const double patch_r = d.rear_tire.relaxation_length > 0 ? d.rear_tire.count * d.rear_tire.patch_mass : 0.0;
-  add(d.front_axle.mass + (d.front.extra_arm_height > 0 ? kAxleHubMass : 0.0), 0.0, 0.0, d.front_axle.inertia.z());
-  add(d.rear_axle.mass + (d.rear.extra_arm_height > 0 ? kAxleHubMass : 0.0), -d.wheelbase, 0.0, d.rear_axle.inertia.z());
-  for (double side : {1.0, -1.0}) {
-    add(d.front_wheel.mass + patch_f, 0.0, side * 0.5 * d.front_track, d.front_wheel.inertia.z());
-    add(d.knuckle.mass, 0.0, side * (0.5 * d.front_track - 0.5 * d.kingpin_offset), d.knuckle.inertia.z());
-    add(d.rear_wheel.mass + patch_r, -d.wheelbase, side * 0.5 * d.rear_track, d.rear_wheel.inertia.z());
+  for (const AxleData& ax : d.axles) {
+    const TireData& t = ax.tire;
+    const double patch = t.relaxation_length > 0 ? t.count * t.patch_mass : 0.0;
+    add(ax.axle.mass + (ax.suspension.extra_arm_height > 0 ? kAxleHubMass : 0.0), ax.x, 0.0, ax.axle.inertia.z());
+    for (double side : {1.0, -1.0}) {
+      add(ax.wheel.mass + patch, ax.x, side * 0.5 * ax.track, ax.wheel.inertia.z());
+      if (ax.steered) add(d.knuckle.mass, ax.x, side * (0.5 * ax.track - 0.5 * d.kingpin_offset), d.knuckle.inertia.z());
+    }
+    add(d.arm.mass, ax.x + 0.5 * ax.suspension.arm_length, 0.0, 0.0);
   }
-  add(d.arm.mass, 0.5 * d.front.arm_length, 0.0, 0.0);
-  add(d.arm.mass, -d.wheelbase + 0.5 * d.rear.arm_length, 0.0, 0.0);
+  for (const BogieData& bg : d.bogies)
+    for (double side : {1.0, -1.0})
+      add(bg.beam.mass, bg.x, side * d.axles.back().suspension.spring_half_spacing, bg.beam.inertia.z());
   if (d.steering_linkage) add(d.pitman_arm_mass, d.drag_link_length, 0.0, 0.0);
   if (d.steering_linkage && d.steering_column)
     add(d.column_mass, d.drag_link_length - 0.5 * d.column_length * std::sin(d.column_inclination), 0.0, 0.0);
   s.yaw_inertia = inertia;
-  // relaxation length at the static load: C(F_z) / k with k = C(F_z0) / sigma_0
-  for (int i = 0; i < 2; ++i) {
-    const TireData& td = i == 0 ? d.front_tire : d.rear_tire;
-    const Tire tire("reference", td, 1.0);
-    s.relaxation_length[i] =
-        td.relaxation_length * tire.CorneringStiffness(0.5 * w[i] / td.count) / tire.CorneringStiffness(td.nominal_load);
-  }
   return s;
 }
 

@@ -60,9 +60,11 @@ struct SingleTrack {
   double SteeringWheelAngleFor(double ay, double v, double g = 9.81) const;
 };
 
-/// The single-track model of the truck `d`: the lever-rule axle loads
+/// The single-track model of the truck `d`: the static axle loads
 /// (StaticAxleLoads) and each axle's cornering stiffness at its static tire
-/// load (Tire::CorneringStiffness of its tire set, both sides); mass and
+/// load (Tire::CorneringStiffness of its tire set, both sides); the axles
+/// behind the first act as one rear axle at x = -Wheelbase(d) (a bogie's
+/// trunnion) with their summed loads and cornering stiffnesses; mass and
 /// yaw inertia summed by hand over the truck's parts (sprung parts with
 /// their own moments, wheels and knuckles at their track positions).
 SingleTrack TruckSingleTrack(const TruckData& d, double g = 9.81);

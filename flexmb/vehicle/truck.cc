@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <set>
 #include <tuple>
 
 #include "flexmb/bodies/flexible_body.h"
@@ -43,10 +44,25 @@ Mat3 AxisX() {
 double TruckPatchMass(const TireData& t) { return t.relaxation_length > 0 ? t.count * t.patch_mass : 0.0; }
 
 // mass of the parts moving with an axle (axle, wheels, knuckles, contact patches)
-double UnsprungMass(const TruckData& d, bool front) {
-  const double hub = (front ? d.front : d.rear).extra_arm_height > 0 ? kAxleHubMass : 0.0;
-  return hub + (front ? d.front_axle.mass + 2 * (d.front_wheel.mass + d.knuckle.mass + TruckPatchMass(d.front_tire))
-                      : d.rear_axle.mass + 2 * (d.rear_wheel.mass + TruckPatchMass(d.rear_tire)));
+double UnsprungMass(const TruckData& d, const AxleData& a) {
+  const double hub = a.suspension.extra_arm_height > 0 ? kAxleHubMass : 0.0;
+  const double knuckle = a.steered ? d.knuckle.mass : 0.0;
+  return hub + a.axle.mass + 2 * (a.wheel.mass + knuckle + TruckPatchMass(a.tire));
+}
+
+// vertical stiffness of an axle's support: its two springs in series with its tires [N/m]
+double AxleSupportStiffness(const AxleData& a) {
+  const double springs = 2 * a.suspension.spring_stiffness, tires = 2 * a.tire.count * a.tire.vertical_stiffness;
+  return springs * tires / (springs + tires);
+}
+
+// the two axles of bogie `b` (front, rear)
+std::array<int, 2> BogieAxles(const TruckData& d, int b) {
+  std::array<int, 2> ab{-1, -1};
+  int n = 0;
+  for (size_t a = 0; a < d.axles.size(); ++a)
+    if (d.axles[a].bogie == b && n < 2) ab[n++] = static_cast<int>(a);
+  return ab;
 }
 
 int AddPart(Model& m, const std::string& name, const PartData& p, const Vec3& cg, double speed, const Vec3& w) {
@@ -64,157 +80,28 @@ int AddPart(Model& m, const std::string& name, const PartData& p, const Vec3& cg
   return m.AddBody(std::make_unique<RigidBody>(name, b));
 }
 
-// The map under the one top-level key `kind` of the vehicle data file
-// `path` (a tire, a suspension, a part, ...); errors through `ctx` (made for
-// `path`) name the file and line; `what` names the file's kind in read
-// errors, `entity` the map in the others.
-YAML::Node LoadDataFileMap(const std::string& path, const char* kind, const std::string& what, const std::string& entity,
-                           YamlContext& ctx) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw InputError("cannot open the " + what + " file", {path, 0, ""});
-  } catch (const YAML::Exception& e) {
-    throw InputError("cannot read the " + what + " file: " + e.what(), {path, e.mark.line >= 0 ? e.mark.line + 1 : 0, ""});
+// static wheel-centre height of each axle [m] from its tire deflection
+std::vector<double> WheelCentreHeights(const TruckData& d, double g) {
+  const std::vector<double> loads = StaticAxleLoads(d, g);
+  std::vector<double> z(d.axles.size());
+  for (size_t i = 0; i < z.size(); ++i) {
+    const TireData& t = d.axles[i].tire;
+    z[i] = t.unloaded_radius - 0.5 * loads[i] / (t.count * t.vertical_stiffness);
   }
-  ctx.SetEntity(entity);
-  const std::string expected = std::string("expected a top-level '") + kind + "' map";
-  if (!root.IsMap()) ctx.Fail(root, expected);
-  const YAML::Node t = ctx.MapChild(root, kind);
-  if (!t) ctx.Fail(root, expected);
-  ctx.CheckKeys(root, {kind, "note"});
-  return t;
+  return z;
 }
 
-// A subsystem of the truck map: its map and the context its errors go
-// through (the truck file's, or that of the data file it was read from).
-struct SubsystemMap {
-  YAML::Node node;                         ///< undefined when the key is absent
-  YamlContext* ctx = nullptr;              ///< the truck file's or file_ctx
-  std::unique_ptr<YamlContext> file_ctx;   ///< the data file's, when read from one
-};
+// height of the spring seats of axle `a` (at wheel-centre height z) [m]
+double SpringSeatZ(const AxleData& a, double z) { return z + a.suspension.spring_length; }
 
-// The subsystem of the truck map `n` under `key`: written inline, or the
-// name of a data file (relative to the truck file's folder `dir`) whose
-// top-level `kind` map holds it, so that several trucks share one cab,
-// suspension or steering file.
-SubsystemMap Subsystem(const YAML::Node& n, YamlContext& ctx, const char* key, const char* kind,
-                       const std::string& dir) {
-  SubsystemMap m;
-  m.ctx = &ctx;
-  m.node = n[key];
-  if (!m.node || !m.node.IsScalar()) return m;
-  const std::string path = (std::filesystem::path(dir) / m.node.Scalar()).string();
-  if (!std::filesystem::is_regular_file(path))
-    ctx.Fail(m.node, std::string("'") + key + "': no " + kind + " file '" + path + "'");
-  m.file_ctx = std::make_unique<YamlContext>(path);
-  m.ctx = m.file_ctx.get();
-  m.node = LoadDataFileMap(path, kind, kind, std::string(kind) + " '" + key + "'", *m.file_ctx);
-  return m;
-}
-
-void ReadPart(const YAML::Node& truck, YamlContext& truck_ctx, const char* key, const std::string& dir, PartData& p,
-              MountData* mounts = nullptr) {
-  const SubsystemMap sub = Subsystem(truck, truck_ctx, key, "part", dir);
-  const YAML::Node& node = sub.node;
-  YamlContext& ctx = *sub.ctx;
-  ctx.SetEntity(std::string("truck part '") + key + "'");
-  if (!node) ctx.Fail(truck, std::string("missing part '") + key + "'");
-  if (mounts) {
-    ctx.CheckKeys(node, {"mass", "cg", "inertia", "note", "mount_x", "mount_stiffness", "mount_damping"});
-    const YAML::Node mx = node["mount_x"];
-    if (!mx || !mx.IsSequence() || mx.size() == 0) ctx.Fail(node, "expected 'mount_x' as a list of x stations [m]");
-    mounts->x.clear();
-    for (const YAML::Node& v : mx) mounts->x.push_back(ctx.Number(v, "mount station"));
-    mounts->stiffness = ctx.Vector3(node, "mount_stiffness", mounts->stiffness);
-    mounts->damping = ctx.Vector3(node, "mount_damping", mounts->damping);
-    if (mounts->stiffness.minCoeff() <= 0 || mounts->damping.minCoeff() < 0)
-      ctx.Fail(node, "mount stiffness must be positive and damping not negative");
-  } else {
-    ctx.CheckKeys(node, {"mass", "cg", "inertia", "note"});
-  }
-  p.mass = ctx.Positive(node, "mass");
-  p.cg = ctx.Vector3(node, "cg", Vec3::Zero());
-  p.inertia = ctx.Vector3(node, "inertia");
-  if (p.inertia.minCoeff() <= 0) ctx.Fail(node["inertia"], "principal inertias must be positive");
-}
-
-void ReadSuspension(const YAML::Node& truck, YamlContext& truck_ctx, const char* key, const std::string& dir,
-                    SuspensionData& s) {
-  const SubsystemMap sub = Subsystem(truck, truck_ctx, key, "suspension", dir);
-  const YAML::Node& node = sub.node;
-  YamlContext& ctx = *sub.ctx;
-  ctx.SetEntity(std::string("suspension '") + key + "'");
-  if (!node) ctx.Fail(truck, std::string("missing suspension '") + key + "'");
-  ctx.CheckKeys(node, {"spring_stiffness", "spring_damping", "spring_half_spacing", "spring_length", "arm_length",
-                       "stabilizer_stiffness", "stabilizer_damping", "extra_arm_height"});
-  s.spring_stiffness = ctx.Positive(node, "spring_stiffness");
-  s.spring_damping = ctx.Double(node, "spring_damping", s.spring_damping);
-  s.spring_half_spacing = ctx.Positive(node, "spring_half_spacing");
-  s.spring_length = ctx.Positive(node, "spring_length");
-  s.arm_length = ctx.Positive(node, "arm_length");
-  s.stabilizer_stiffness = ctx.Double(node, "stabilizer_stiffness", 0.0);
-  s.stabilizer_damping = ctx.Double(node, "stabilizer_damping", 0.0);
-  s.extra_arm_height = ctx.Double(node, "extra_arm_height", 0.0);
-  if (!(s.extra_arm_height >= 0)) ctx.Fail(node, "extra_arm_height must be >= 0");
-}
-
-// the steering of the truck map `n` (inline or a steering file: Subsystem)
-void ReadSteering(const YAML::Node& n, YamlContext& truck_ctx, const std::string& dir, TruckData& d) {
-  const SubsystemMap sub = Subsystem(n, truck_ctx, "steering", "steering", dir);
-  const YAML::Node& st = sub.node;
-  YamlContext& ctx = *sub.ctx;
-  ctx.SetEntity("steering");
-  if (!st) ctx.Fail(n, "missing 'steering'");
-  ctx.CheckKeys(st, {"ratio", "stiffness", "damping", "linkage", "pitman_arm_length", "tie_rod_arm_length", "column",
-                     "column_mass", "column_inertia", "column_length", "column_inclination_deg", "pitman_x",
-                     "steering_arm_height"});
-  d.steering_ratio = ctx.Positive(st, "ratio");
-  d.steering_stiffness = ctx.Positive(st, "stiffness");
-  d.steering_damping = ctx.Double(st, "damping", d.steering_damping);
-  d.steering_linkage = ctx.Bool(st, "linkage", d.steering_linkage);
-  d.pitman_arm_length = ctx.Double(st, "pitman_arm_length", d.pitman_arm_length);
-  d.tie_rod_arm_length = ctx.Double(st, "tie_rod_arm_length", d.tie_rod_arm_length);
-  d.steering_column = ctx.Bool(st, "column", d.steering_column);
-  d.column_mass = ctx.Double(st, "column_mass", d.column_mass);
-  d.column_inertia = ctx.Double(st, "column_inertia", d.column_inertia);
-  d.column_length = ctx.Double(st, "column_length", d.column_length);
-  d.column_inclination = ctx.Double(st, "column_inclination_deg", d.column_inclination * 180.0 / M_PI) * M_PI / 180.0;
-  if (!(d.column_mass > 0) || !(d.column_inertia > 0) || !(d.column_length > 0) ||
-      !(std::abs(d.column_inclination) < 0.5 * M_PI))
-    ctx.Fail(st, "column_mass, column_inertia, column_length must be positive, |column_inclination_deg| < 90");
-  d.drag_link_length = ctx.Double(st, "pitman_x", d.drag_link_length);
-  d.steering_arm_height = ctx.Double(st, "steering_arm_height", d.steering_arm_height);
-  if (!(d.pitman_arm_length > 0) || !(d.tie_rod_arm_length > 0))
-    ctx.Fail(st, "pitman_arm_length and tie_rod_arm_length must be positive");
-  if (!(d.drag_link_length > 0) || !std::isfinite(d.steering_arm_height))
-    ctx.Fail(st, "pitman_x must be positive and steering_arm_height finite");
-}
-
-// the brakes of the truck map `n`, optional (inline or a brakes file: Subsystem)
-void ReadBrakes(const YAML::Node& n, YamlContext& truck_ctx, const std::string& dir, TruckData& d) {
-  const SubsystemMap sub = Subsystem(n, truck_ctx, "brakes", "brakes", dir);
-  if (const YAML::Node& br = sub.node) {
-    YamlContext& ctx = *sub.ctx;
-    ctx.SetEntity("brakes");
-    ctx.CheckKeys(br, {"front_share", "smoothing_spin", "note"});
-    d.brake_front_share = ctx.Double(br, "front_share", d.brake_front_share);
-    d.brake_smoothing_spin = ctx.Double(br, "smoothing_spin", d.brake_smoothing_spin);
-    if (!(d.brake_front_share >= 0 && d.brake_front_share <= 1) || !(d.brake_smoothing_spin > 0))
-      ctx.Fail(br, "front_share must lie in [0, 1] and smoothing_spin be positive");
-  }
-}
-
-// static wheel-centre heights front, rear [m] from the tire deflections
-std::array<double, 2> WheelCentreHeights(const TruckData& d, double g) {
-  const std::array<double, 2> loads = StaticAxleLoads(d, g);
-  return {d.front_tire.unloaded_radius - 0.5 * loads[0] / (d.front_tire.count * d.front_tire.vertical_stiffness),
-          d.rear_tire.unloaded_radius - 0.5 * loads[1] / (d.rear_tire.count * d.rear_tire.vertical_stiffness)};
+// trunnion height of bogie `b`: the mean of its axles' spring seats [m]
+double TrunnionZ(const TruckData& d, int b, const std::vector<double>& zw) {
+  const std::array<int, 2> ab = BogieAxles(d, b);
+  return 0.5 * (SpringSeatZ(d.axles[ab[0]], zw[ab[0]]) + SpringSeatZ(d.axles[ab[1]], zw[ab[1]]));
 }
 
 // left kingpin on the axle at wheel-centre height zf
-Vec3 LeftKingpin(const TruckData& d, double zf) { return Vec3(0, 0.5 * d.front_track - d.kingpin_offset, zf); }
+Vec3 LeftKingpin(const TruckData& d, double zf) { return Vec3(0, 0.5 * d.axles[0].track - d.kingpin_offset, zf); }
 
 // ball of the left knuckle's inboard steering arm (drag link's rear end)
 Vec3 SteeringArmBall(const TruckData& d, double zf) {
@@ -259,17 +146,37 @@ void SetFrameMesh(TruckData& d) {
   d.frame_mesh = std::move(mesh);
 }
 
+std::string WheelName(const AxleData& a, int side) {
+  const char* lr = side == 0 ? "l" : "r";
+  if (a.name == "front") return std::string("wheel_f") + lr;
+  if (a.name == "rear") return std::string("wheel_r") + lr;
+  return "wheel_" + a.name + "_" + lr;
+}
+
+double Wheelbase(const TruckData& d) {
+  if (d.axles.empty()) return 0.0;
+  const AxleData& last = d.axles.back();
+  const double x_rear = last.bogie >= 0 ? d.bogies[static_cast<size_t>(last.bogie)].x : last.x;
+  return d.axles.front().x - x_rear;
+}
+
 std::vector<FrameAttachment> FrameAttachments(const TruckData& d, double g) {
-  const std::array<double, 2> zw = WheelCentreHeights(d, g);
-  const double xr = -d.wheelbase;
+  const std::vector<double> zw = WheelCentreHeights(d, g);
   std::vector<FrameAttachment> a;
-  for (int axle = 0; axle < 2; ++axle) {
-    const SuspensionData& s = axle == 0 ? d.front : d.rear;
-    const double x = axle == 0 ? 0.0 : xr;
-    const std::string side = axle == 0 ? "front" : "rear";
-    a.push_back({"spring_seat_" + side + "_left", Vec3(x, s.spring_half_spacing, zw[axle] + s.spring_length)});
-    a.push_back({"spring_seat_" + side + "_right", Vec3(x, -s.spring_half_spacing, zw[axle] + s.spring_length)});
-    a.push_back({"arm_pivot_" + side, Vec3(x + s.arm_length, 0, zw[axle])});
+  for (size_t i = 0; i < d.axles.size(); ++i) {
+    const AxleData& ax = d.axles[i];
+    const SuspensionData& s = ax.suspension;
+    if (ax.bogie < 0) {
+      a.push_back({"spring_seat_" + ax.name + "_left", Vec3(ax.x, s.spring_half_spacing, SpringSeatZ(ax, zw[i]))});
+      a.push_back({"spring_seat_" + ax.name + "_right", Vec3(ax.x, -s.spring_half_spacing, SpringSeatZ(ax, zw[i]))});
+    }
+    a.push_back({"arm_pivot_" + ax.name, Vec3(ax.x + s.arm_length, 0, zw[i])});
+  }
+  for (size_t b = 0; b < d.bogies.size(); ++b) {
+    const double y = d.axles[BogieAxles(d, static_cast<int>(b))[0]].suspension.spring_half_spacing;
+    const double z = TrunnionZ(d, static_cast<int>(b), zw);
+    a.push_back({"trunnion_" + d.bogies[b].name + "_left", Vec3(d.bogies[b].x, y, z)});
+    a.push_back({"trunnion_" + d.bogies[b].name + "_right", Vec3(d.bogies[b].x, -y, z)});
   }
   a.push_back({"steering_gear", SteeringGearMount(d, zw[0])});
   for (const auto& [name, mounts] : {std::pair<std::string, const MountData*>{"cab", &d.cab_mounts},
@@ -283,23 +190,127 @@ std::vector<FrameAttachment> FrameAttachments(const TruckData& d, double g) {
   return a;
 }
 
-std::array<double, 2> StaticAxleLoads(const TruckData& d, double g) {
-  const double L = d.wheelbase;
-  double w = 0, moment = 0;  // total weight and its moment about the rear axle
+std::vector<double> StaticAxleLoads(const TruckData& d, double g) {
+  CheckAxles(d);
+  const size_t n = d.axles.size();
+  // the supports: an axle on its own springs, or a bogie's trunnions
+  struct Support {
+    double x, k;
+    int axle, bogie;
+  };
+  std::vector<Support> sup;
+  for (size_t i = 0; i < n; ++i)
+    if (d.axles[i].bogie < 0) sup.push_back({d.axles[i].x, AxleSupportStiffness(d.axles[i]), static_cast<int>(i), -1});
+  for (size_t b = 0; b < d.bogies.size(); ++b) {
+    const std::array<int, 2> ab = BogieAxles(d, static_cast<int>(b));
+    sup.push_back({d.bogies[b].x, AxleSupportStiffness(d.axles[ab[0]]) + AxleSupportStiffness(d.axles[ab[1]]), -1,
+                   static_cast<int>(b)});
+  }
+  // two supports: statically determinate, the lever rule about the rear
+  // one; an axle on its own springs then takes its unsprung weight through
+  // it (the weight stands on the support). Otherwise each axle carries its
+  // unsprung weight and half its arm's directly.
+  const bool lever = sup.size() == 2;
+  const double x_ref = lever ? sup[1].x : 0.0;
+  double w = 0, moment = 0;  // weights on the supports, their moment about x_ref
   auto add = [&](double mass, double x) {
     w += mass * g;
-    moment += mass * g * (x + L);
+    moment += mass * g * (x - x_ref);
   };
+  std::vector<double> load(n, 0.0);
   for (const PartData* p : {&d.frame, &d.cab, &d.powertrain, &d.cargo}) add(p->mass, p->cg.x());
-  add(UnsprungMass(d, true), 0.0);
-  add(UnsprungMass(d, false), -L);
-  add(d.arm.mass, 0.5 * d.front.arm_length);
-  add(d.arm.mass, -L + 0.5 * d.rear.arm_length);
+  if (lever) {
+    for (const AxleData& a : d.axles)
+      if (a.bogie < 0) add(UnsprungMass(d, a), a.x);
+    for (const AxleData& a : d.axles)
+      if (a.bogie < 0) add(d.arm.mass, a.x + 0.5 * a.suspension.arm_length);
+  }
   if (d.steering_linkage) add(d.pitman_arm_mass, d.drag_link_length);
   if (d.steering_linkage && d.steering_column)
     add(d.column_mass, d.drag_link_length - 0.5 * d.column_length * std::sin(d.column_inclination));
-  const double front = moment / L;
-  return {front, w - front};
+  for (const BogieData& b : d.bogies) add(2 * b.beam.mass, b.x);
+  for (size_t i = 0; i < n; ++i) {
+    const AxleData& a = d.axles[i];
+    if (lever && a.bogie < 0) continue;
+    load[i] = (UnsprungMass(d, a) + 0.5 * d.arm.mass) * g;
+    add(0.5 * d.arm.mass, a.x + a.suspension.arm_length);  // the arm's other half at its pivot
+  }
+  std::vector<double> f(sup.size());
+  if (lever) {
+    f[0] = moment / (sup[0].x - sup[1].x);
+    f[1] = w - f[0];
+  } else {
+    // a rigid frame on the supports' springs: heave z and pitch t with
+    // sum k (z + t x) = w and sum k x (z + t x) = moment
+    double k0 = 0, k1 = 0, k2 = 0;
+    for (const Support& s : sup) {
+      k0 += s.k;
+      k1 += s.k * s.x;
+      k2 += s.k * s.x * s.x;
+    }
+    const double det = k0 * k2 - k1 * k1;
+    const double z = (w * k2 - moment * k1) / det, t = (k0 * moment - k1 * w) / det;
+    for (size_t j = 0; j < sup.size(); ++j) f[j] = sup[j].k * (z + t * sup[j].x);
+  }
+  for (size_t j = 0; j < sup.size(); ++j) {
+    if (sup[j].axle >= 0) {
+      load[static_cast<size_t>(sup[j].axle)] += f[j];
+      continue;
+    }
+    // a bogie: its trunnion load shared by the lever rule
+    const std::array<int, 2> ab = BogieAxles(d, sup[j].bogie);
+    const double x1 = d.axles[ab[0]].x, x2 = d.axles[ab[1]].x;
+    const double first = f[j] * (sup[j].x - x2) / (x1 - x2);
+    load[static_cast<size_t>(ab[0])] += first;
+    load[static_cast<size_t>(ab[1])] += f[j] - first;
+  }
+  return load;
+}
+
+void CheckAxles(const TruckData& d) {
+  auto fail = [](const std::string& what, const std::string& entity) {
+    throw InputError(what, {"", 0, entity});
+  };
+  const size_t n = d.axles.size();
+  if (n < 2) fail("a truck needs at least two axles", "truck axles");
+  std::set<std::string> names;
+  double shares = 0;
+  bool driven = false;
+  for (size_t i = 0; i < n; ++i) {
+    const AxleData& a = d.axles[i];
+    const std::string entity = "axle '" + a.name + "'";
+    if (a.name.empty() || a.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
+      fail("an axle's name must be lower-case letters, digits and '_'", entity);
+    if (!names.insert(a.name).second) fail("two axles are named '" + a.name + "'", entity);
+    if (i == 0 && a.x != 0.0) fail("the first axle must be at x = 0 (the vehicle frame's origin)", entity);
+    if (i > 0 && !(a.x < d.axles[i - 1].x)) fail("axles must be listed from front to rear (x decreasing)", entity);
+    if (a.steered != (i == 0))
+      fail(i == 0 ? "the first axle must be steered" : "only the first axle can be steered (yet)", entity);
+    if (!(a.track > 0)) fail("track must be positive", entity);
+    if (!(a.brake_share >= 0 && a.brake_share <= 1)) fail("brake_share must lie in [0, 1]", entity);
+    if (a.bogie >= static_cast<int>(d.bogies.size())) fail("unknown bogie", entity);
+    shares += a.brake_share;
+    driven = driven || a.driven;
+  }
+  if (std::abs(shares - 1.0) > 1e-9) fail("the axles' brake_share must sum to 1", "truck axles");
+  if (!driven) fail("no axle is driven", "truck axles");
+  std::set<std::string> bogie_names;
+  for (size_t b = 0; b < d.bogies.size(); ++b) {
+    const BogieData& bg = d.bogies[b];
+    const std::string entity = "bogie '" + bg.name + "'";
+    if (!bogie_names.insert(bg.name).second) fail("two bogies are named '" + bg.name + "'", entity);
+    int count = 0;
+    for (const AxleData& a : d.axles) count += a.bogie == static_cast<int>(b);
+    if (count != 2) fail("a bogie carries exactly two axles, this one " + std::to_string(count), entity);
+    const std::array<int, 2> ab = BogieAxles(d, static_cast<int>(b));
+    if (ab[1] != ab[0] + 1) fail("a bogie's two axles must be neighbours", entity);
+    if (!(bg.x < d.axles[ab[0]].x && bg.x > d.axles[ab[1]].x))
+      fail("the trunnion must lie between the bogie's axles", entity);
+    if (!(bg.beam.mass > 0) || !(bg.beam.inertia.minCoeff() > 0)) fail("the beam's mass and inertia must be positive", entity);
+  }
+  size_t supports = d.bogies.size();
+  for (const AxleData& a : d.axles) supports += a.bogie < 0;
+  if (supports < 2) fail("the frame needs at least two supports (axles on their own springs or bogies)", "truck axles");
 }
 
 TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared_ptr<const double> steering_wheel,
@@ -318,16 +329,20 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, const Truck
   const auto& steering_wheel = inputs.steering_wheel;
   const auto& drive_torque = inputs.drive_torque;
   const auto& brake_torque = inputs.brake_torque;
-  if (!(d.brake_front_share >= 0 && d.brake_front_share <= 1) || !(d.brake_smoothing_spin > 0))
-    throw InputError("brake front_share must lie in [0, 1] and smoothing_spin be positive", {"", 0, "truck brakes"});
+  if (!(d.brake_smoothing_spin > 0))
+    throw InputError("brake smoothing_spin must be positive", {"", 0, "truck brakes"});
+  CheckAxles(d);
   const double g = -m.gravity_W.z();
-  const std::array<double, 2> loads = StaticAxleLoads(d, g);
+  const std::vector<double> loads = StaticAxleLoads(d, g);
   TruckHandles h;
+  const size_t n_axles = d.axles.size();
   // static wheel-centre heights from the tire deflections
-  const std::array<double, 2> zw = WheelCentreHeights(d, g);
-  const double zf = zw[0], zr = zw[1];
-  h.wheel_centre_z = {zf, zr};
-  const double xr = -d.wheelbase;
+  const std::vector<double> zw = WheelCentreHeights(d, g);
+  const double zf = zw[0], zr = zw.back();
+  h.wheel_centre_z = zw;
+  h.tire_force.assign(2 * n_axles, -1);
+  h.wheel_marker.assign(2 * n_axles, -1);
+  const double x_ref = -Wheelbase(d), x_last = d.axles.back().x;
   const Vec3 zero = Vec3::Zero();
   const Mat3 I = Mat3::Identity();
 
@@ -355,10 +370,11 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, const Truck
   };
   h.frame_ref = m.AddMarker(frame, "ref", d.frame.cg, I);
   h.front_axle_ref = m.AddMarker(frame, "front_axle_ref", Vec3(0, 0, 0), I);
-  h.rear_axle_ref = m.AddMarker(frame, "rear_axle_ref", Vec3(xr, 0, 0), I);
+  h.rear_axle_ref = m.AddMarker(frame, "rear_axle_ref", Vec3(x_ref, 0, 0), I);
   const double hb = 0.5 * d.gauge_width;
   h.gauge = {m.AddMarker(frame, "gauge_fl", Vec3(0, hb, zf), I), m.AddMarker(frame, "gauge_fr", Vec3(0, -hb, zf), I),
-             m.AddMarker(frame, "gauge_rl", Vec3(xr, hb, zr), I), m.AddMarker(frame, "gauge_rr", Vec3(xr, -hb, zr), I)};
+             m.AddMarker(frame, "gauge_rl", Vec3(x_last, hb, zr), I),
+             m.AddMarker(frame, "gauge_rr", Vec3(x_last, -hb, zr), I)};
   // cab, powertrain, cargo on bushings at the mount points, preloaded by
   // their weight shared by the lever rule along x
   for (const auto& [name, part, mounts] :
@@ -385,14 +401,31 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, const Truck
   // the rear tow hitch: an attachment point without a load in this model
   frame_marker("tow_hitch", Vec3(d.ladder.front_x - d.ladder.length, 0, d.ladder.bottom_z + 0.5 * d.ladder.web_height), I);
 
-  // one axle: arm, axle, suspension springs, stabilizer; returns the axle body
-  auto axle = [&](bool front) {
-    const std::string side = front ? "front" : "rear";
-    const SuspensionData& s = front ? d.front : d.rear;
-    const double x = front ? 0.0 : xr, z = front ? zf : zr;
-    const PartData& ap = front ? d.front_axle : d.rear_axle;
+  // balancer bogies: a beam on a trunnion revolute (axis y) on each side
+  std::vector<std::array<int, 2>> bogie_beam(d.bogies.size());
+  for (size_t b = 0; b < d.bogies.size(); ++b) {
+    const BogieData& bg = d.bogies[b];
+    const double y = d.axles[BogieAxles(d, static_cast<int>(b))[0]].suspension.spring_half_spacing;
+    const double z = TrunnionZ(d, static_cast<int>(b), zw);
+    for (int k = 0; k < 2; ++k) {
+      const std::string lr = k == 0 ? "left" : "right";
+      const Vec3 pivot(bg.x, k == 0 ? y : -y, z);
+      bogie_beam[b][k] = AddPart(m, "bogie_" + bg.name + "_" + lr, bg.beam, pivot, speed, zero);
+      m.AddJoint(std::make_unique<RevoluteJoint>("bogie_" + bg.name + "_" + lr + "_trunnion"),
+                 frame_marker("trunnion_" + bg.name + "_" + lr, pivot, AxisY()),
+                 m.AddMarker(bogie_beam[b][k], "trunnion", pivot, AxisY()));
+    }
+  }
+
+  // one axle: arm, axle, suspension springs (to the frame or the bogie's
+  // beams), stabilizer; returns the axle body
+  auto axle = [&](size_t i) {
+    const AxleData& a = d.axles[i];
+    const std::string& side = a.name;
+    const SuspensionData& s = a.suspension;
+    const double x = a.x, z = zw[i];
     const int arm = AddPart(m, side + "_arm", d.arm, Vec3(x + 0.5 * s.arm_length, 0, z), speed, zero);
-    const int ax = AddPart(m, side + "_axle", ap, Vec3(x, 0, z), speed, zero);
+    const int ax = AddPart(m, side + "_axle", a.axle, Vec3(x, 0, z), speed, zero);
     const Vec3 pivot(x + s.arm_length, 0, z), centre(x, 0, z);
     m.AddJoint(std::make_unique<RevoluteJoint>(side + "_arm_pivot"), frame_marker("arm_pivot_" + side, pivot, AxisY()),
                m.AddMarker(arm, "pivot", pivot, AxisY()));
@@ -419,8 +452,8 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, const Truck
     stab.stiffness = s.stabilizer_stiffness;
     stab.damping = s.stabilizer_damping;
     m.AddForce(std::make_unique<RotationalSpringDamper>(side + "_stabilizer", stab), ri, rj);
-    const double unsprung = UnsprungMass(d, front);
-    const double spring_load = 0.5 * (loads[front ? 0 : 1] - (unsprung + 0.5 * d.arm.mass) * g);
+    const double unsprung = UnsprungMass(d, a);
+    const double spring_load = 0.5 * (loads[i] - (unsprung + 0.5 * d.arm.mass) * g);
     for (int k = 0; k < 2; ++k) {
       const double y = k == 0 ? s.spring_half_spacing : -s.spring_half_spacing;
       const std::string lr = k == 0 ? "left" : "right";
@@ -429,27 +462,31 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, const Truck
       law.stiffness = s.spring_stiffness;
       law.damping = s.spring_damping;
       law.preload = -spring_load;
-      m.AddForce(std::make_unique<SpringDamper>(side + "_spring_" + lr, law),
-                 frame_marker("spring_seat_" + side + "_" + lr, Vec3(x, y, z + s.spring_length), I),
+      const Vec3 seat(x, y, z + s.spring_length);
+      const int upper = a.bogie < 0 ? frame_marker("spring_seat_" + side + "_" + lr, seat, I)
+                                    : m.AddMarker(bogie_beam[static_cast<size_t>(a.bogie)][k], side + "_spring", seat, I);
+      m.AddForce(std::make_unique<SpringDamper>(side + "_spring_" + lr, law), upper,
                  m.AddMarker(ax, "spring_" + lr, Vec3(x, y, z), I));
     }
     return ax;
   };
 
-  // wheel with its tire on carrier body `carrier`; returns the wheel joint
-  auto wheel = [&](const std::string& name, int carrier, const PartData& wp, const TireData& td, const Vec3& c, int k) {
+  // wheel `k` (axle i, side k % 2) with its tire on carrier body `carrier`; returns the wheel joint
+  auto wheel = [&](const AxleData& a, int carrier, const Vec3& c, int k) {
+    const std::string name = WheelName(a, k % 2);
+    const TireData& td = a.tire;
     const double re = td.unloaded_radius - td.rolling_radius_factor * (td.unloaded_radius - c.z());
-    const int wb = AddPart(m, name, wp, c, speed, Vec3(0, speed / re, 0));
+    const int wb = AddPart(m, name, a.wheel, c, speed, Vec3(0, speed / re, 0));
     const int jm = m.AddJoint(std::make_unique<RevoluteJoint>(name + "_bearing"),
                               m.AddMarker(carrier, name + "_bearing", c, AxisY()), m.AddMarker(wb, "bearing", c, AxisY()));
     if (brake_torque) {
-      const double share = 0.5 * (k < 2 ? d.brake_front_share : 1.0 - d.brake_front_share);
+      const double share = 0.5 * a.brake_share;
       m.AddForce(std::make_unique<WheelBrake>(name + "_brake", std::make_shared<ScaledSignal>(brake_torque, share),
                                               d.brake_smoothing_spin),
                  m.joints[jm]->marker_i, m.joints[jm]->marker_j);
     }
     const int wm = m.AddMarker(wb, "centre", c, AxisY());
-    h.wheel_marker[k] = wm;
+    h.wheel_marker[static_cast<size_t>(k)] = wm;
     int patch_marker = -1;
     if (td.relaxation_length > 0) {
       // contact-patch body sliding along the spin axis on the carrier, and
@@ -465,26 +502,36 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, const Truck
       else
         m.AddJoint(std::make_unique<PrismaticJoint>(name + "_carcass"), cm, patch_marker);
     }
-    h.tire_force[k] = m.AddForce(std::make_unique<Tire>(name + "_tire", td, mu), wm, patch_marker);
+    h.tire_force[static_cast<size_t>(k)] = m.AddForce(std::make_unique<Tire>(name + "_tire", td, mu), wm, patch_marker);
     return jm;
   };
+  // the drive torque, shared equally by the driven axles' wheels
+  int n_driven = 0;
+  for (const AxleData& a : d.axles) n_driven += a.driven;
+  auto drive = std::make_shared<ScaledSignal>(drive_torque, 0.5 / n_driven);
+  auto add_drive = [&](const std::string& name, int jm) {
+    m.AddForce(std::make_unique<JointMotor>(name + "_drive", m.joints[jm].get(), 0, drive), m.joints[jm]->marker_i,
+               m.joints[jm]->marker_j);
+  };
 
-  const int fa = axle(true);
-  const int ra = axle(false);
-  // steered knuckles on kingpin revolutes
+  std::vector<int> axle_body(n_axles);
+  for (size_t i = 0; i < n_axles; ++i) axle_body[i] = axle(i);
+  // the steered (first) axle: knuckles on kingpin revolutes
+  const AxleData& fa = d.axles[0];
   std::array<int, 2> knuckle{};
   std::array<Vec3, 2> kingpin{};
   for (int k = 0; k < 2; ++k) {
     const double sgn = k == 0 ? 1.0 : -1.0;
     const std::string name = k == 0 ? "knuckle_left" : "knuckle_right";
     kingpin[k] = Vec3(1, sgn, 1).cwiseProduct(LeftKingpin(d, zf));
-    const Vec3 wc(0, sgn * 0.5 * d.front_track, zf);
-    knuckle[k] = AddPart(m, name, d.knuckle, Vec3(0, sgn * (0.5 * d.front_track - 0.5 * d.kingpin_offset), zf),
+    const Vec3 wc(0, sgn * 0.5 * fa.track, zf);
+    knuckle[k] = AddPart(m, name, d.knuckle, Vec3(0, sgn * (0.5 * fa.track - 0.5 * d.kingpin_offset), zf),
                          speed, zero);
     h.kingpin_joint[k] = m.AddJoint(std::make_unique<RevoluteJoint>(name + "_kingpin"),
-                                    m.AddMarker(fa, name + "_kingpin", kingpin[k], I),
+                                    m.AddMarker(axle_body[0], name + "_kingpin", kingpin[k], I),
                                     m.AddMarker(knuckle[k], "kingpin", kingpin[k], I));
-    wheel(k == 0 ? "wheel_fl" : "wheel_fr", knuckle[k], d.front_wheel, d.front_tire, wc, k);
+    const int jm = wheel(fa, knuckle[k], wc, k);
+    if (fa.driven) add_drive(WheelName(fa, k), jm);
   }
   auto servo = [&](const std::string& name, int joint, double gain) {
     auto target = std::make_shared<ScaledSignal>(steering_wheel, gain);
@@ -518,7 +565,7 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, const Truck
     // one-piece tie rod between trapezoid arms aimed at the rear-axle centre
     std::array<Vec3, 2> tr{};
     for (int k = 0; k < 2; ++k) {
-      const Vec3 dir = (Vec3(xr, 0, zf) - kingpin[k]).normalized();
+      const Vec3 dir = (Vec3(x_ref, 0, zf) - kingpin[k]).normalized();
       tr[k] = kingpin[k] + d.tie_rod_arm_length * dir;
     }
     m.AddJoint(std::make_unique<DistanceJoint>("tie_rod", (tr[0] - tr[1]).norm()),
@@ -560,109 +607,29 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, const Truck
                  m.joints[cj]->marker_i, m.joints[cj]->marker_j);
     }
   }
-  // rear wheels with the drive torque, half to each side
-  auto drive = std::make_shared<ScaledSignal>(drive_torque, 0.5);
-  for (int k = 0; k < 2; ++k) {
-    const double sgn = k == 0 ? 1.0 : -1.0;
-    const std::string name = k == 0 ? "wheel_rl" : "wheel_rr";
-    const int jm = wheel(name, ra, d.rear_wheel, d.rear_tire, Vec3(xr, sgn * 0.5 * d.rear_track, zr), 2 + k);
-    m.AddForce(std::make_unique<JointMotor>(name + "_drive", m.joints[jm].get(), 0, drive),
-               m.joints[jm]->marker_i, m.joints[jm]->marker_j);
+  // the other axles' wheels
+  for (size_t i = 1; i < n_axles; ++i) {
+    const AxleData& a = d.axles[i];
+    for (int k = 0; k < 2; ++k) {
+      const double sgn = k == 0 ? 1.0 : -1.0;
+      const int wk = static_cast<int>(2 * i) + k;
+      const int jm = wheel(a, axle_body[i], Vec3(a.x, sgn * 0.5 * a.track, zw[i]), wk);
+      if (a.driven) add_drive(WheelName(a, k), jm);
+    }
+  }
+  // the unsprung parts of each axle, by their names
+  h.body_axle.assign(m.bodies.size(), -1);
+  for (size_t b = 0; b < m.bodies.size(); ++b) {
+    const std::string& name = m.bodies[b]->name();
+    if (name.starts_with("knuckle_")) h.body_axle[b] = 0;
+    for (size_t i = 0; i < n_axles; ++i) {
+      const AxleData& a = d.axles[i];
+      if (name.starts_with(a.name + "_") || name.starts_with(WheelName(a, 0)) || name.starts_with(WheelName(a, 1)) ||
+          (a.bogie >= 0 && name.starts_with("bogie_" + d.bogies[static_cast<size_t>(a.bogie)].name + "_")))
+        h.body_axle[b] = static_cast<int>(i);
+    }
   }
   return h;
-}
-
-TireData ReadTireData(const YAML::Node& t, YamlContext& ctx) {
-  ctx.CheckKeys(t, {"name", "note", "count", "unloaded_radius", "vertical_stiffness", "vertical_damping",
-                    "rolling_radius_factor", "nominal_load", "pcx1", "pdx1", "pdx2", "pex1", "pkx1", "pcy1", "pdy1",
-                    "pdy2", "pey1", "pky1", "pky2", "rbx1", "rby1", "trail", "trail_decay", "rolling_resistance",
-                    "low_speed", "relaxation_length", "patch_mass", "longitudinal_relaxation_length"});
-  TireData d;
-  d.count = ctx.Integer(t, "count", d.count);
-  d.unloaded_radius = ctx.Positive(t, "unloaded_radius");
-  d.vertical_stiffness = ctx.Positive(t, "vertical_stiffness");
-  d.vertical_damping = ctx.Double(t, "vertical_damping", d.vertical_damping);
-  d.rolling_radius_factor = ctx.Double(t, "rolling_radius_factor", d.rolling_radius_factor);
-  d.nominal_load = ctx.Positive(t, "nominal_load");
-  d.pcx1 = ctx.Double(t, "pcx1", d.pcx1);
-  d.pdx1 = ctx.Double(t, "pdx1", d.pdx1);
-  d.pdx2 = ctx.Double(t, "pdx2", d.pdx2);
-  d.pex1 = ctx.Double(t, "pex1", d.pex1);
-  d.pkx1 = ctx.Double(t, "pkx1", d.pkx1);
-  d.pcy1 = ctx.Double(t, "pcy1", d.pcy1);
-  d.pdy1 = ctx.Double(t, "pdy1", d.pdy1);
-  d.pdy2 = ctx.Double(t, "pdy2", d.pdy2);
-  d.pey1 = ctx.Double(t, "pey1", d.pey1);
-  d.pky1 = ctx.Double(t, "pky1", d.pky1);
-  d.pky2 = ctx.Double(t, "pky2", d.pky2);
-  d.rbx1 = ctx.Double(t, "rbx1", d.rbx1);
-  d.rby1 = ctx.Double(t, "rby1", d.rby1);
-  d.trail = ctx.Double(t, "trail", d.trail);
-  d.trail_decay = ctx.Double(t, "trail_decay", d.trail_decay);
-  d.rolling_resistance = ctx.Double(t, "rolling_resistance", d.rolling_resistance);
-  d.low_speed = ctx.Double(t, "low_speed", d.low_speed);
-  d.relaxation_length = ctx.Double(t, "relaxation_length", d.relaxation_length);
-  d.patch_mass = ctx.Double(t, "patch_mass", d.patch_mass);
-  d.longitudinal_relaxation_length = ctx.Double(t, "longitudinal_relaxation_length", d.longitudinal_relaxation_length);
-  // validate now, naming the file
-  ctx.Guard(t, [&] { Tire("check", d, 1.0); });
-  return d;
-}
-
-TireData LoadTireFile(const std::string& path) {
-  if (IsTirPath(path)) {
-    // a Magic Formula property file (tir_file.h); warn of what the simplified model leaves out
-    TirFile tir = ReadTirFile(path);
-    if (!tir.ignored.empty()) {
-      std::string list;
-      for (const std::string& k : tir.ignored) list += (list.empty() ? "" : ", ") + k;
-      LogWarning(path + ": ignored by the simplified tire model (not used, values not neutral): " + list);
-    }
-    return tir.data;
-  }
-  YamlContext ctx(path);
-  const YAML::Node t = LoadDataFileMap(path, "tire", "tire", "tire data", ctx);
-  try {
-    return ReadTireData(t, ctx);
-  } catch (const YAML::Exception& e) {
-    // a value of the wrong YAML kind that the checks above did not catch
-    throw InputError(std::string("cannot read the tire file: ") + e.what(), {path, YamlContext::Line(t), "tire data"});
-  }
-}
-
-TruckData ParseTruck(const YAML::Node& n, YamlContext& ctx, const std::string& dir) {
-  TruckData d;
-  ctx.SetEntity("truck");
-  ctx.CheckKeys(n, {"wheelbase", "front_track", "rear_track", "kingpin_offset", "frame", "cab", "powertrain", "cargo",
-                    "front_axle", "rear_axle", "knuckle", "front_wheel", "rear_wheel", "arm", "front_suspension",
-                    "rear_suspension", "steering", "tires", "gauge_width", "brakes"});
-  d.wheelbase = ctx.Positive(n, "wheelbase");
-  d.front_track = ctx.Positive(n, "front_track");
-  d.rear_track = ctx.Positive(n, "rear_track");
-  d.kingpin_offset = ctx.Double(n, "kingpin_offset", d.kingpin_offset);
-  d.gauge_width = ctx.Positive(n, "gauge_width");
-  ReadPart(n, ctx, "cab", dir, d.cab, &d.cab_mounts);
-  ReadPart(n, ctx, "powertrain", dir, d.powertrain, &d.powertrain_mounts);
-  ReadPart(n, ctx, "cargo", dir, d.cargo, &d.cargo_mounts);
-  ReadPart(n, ctx, "front_axle", dir, d.front_axle);
-  ReadPart(n, ctx, "rear_axle", dir, d.rear_axle);
-  ReadPart(n, ctx, "knuckle", dir, d.knuckle);
-  ReadPart(n, ctx, "front_wheel", dir, d.front_wheel);
-  ReadPart(n, ctx, "rear_wheel", dir, d.rear_wheel);
-  ReadPart(n, ctx, "arm", dir, d.arm);
-  ReadSuspension(n, ctx, "front_suspension", dir, d.front);
-  ReadSuspension(n, ctx, "rear_suspension", dir, d.rear);
-  ReadSteering(n, ctx, dir, d);
-  ReadBrakes(n, ctx, dir, d);
-  ctx.SetEntity("tires");
-  const YAML::Node tires = n["tires"];
-  if (!tires) ctx.Fail(n, "missing 'tires'");
-  ctx.CheckKeys(tires, {"front", "rear"});
-  const std::filesystem::path base(dir);
-  d.front_tire = LoadTireFile((base / ctx.String(tires, "front")).string());
-  d.rear_tire = LoadTireFile((base / ctx.String(tires, "rear")).string());
-  ReadTruckFrame(n, ctx, dir, d);
-  return d;
 }
 
 }  // namespace flexmb::vehicle

@@ -1,12 +1,14 @@
 #pragma once
 /// \file truck.h
-/// The two-axle (4x2) truck template: a ladder frame (rigid, or elastic by a
-/// Craig-Bampton reduced body of the generated shell frame, ladder_frame.h)
-/// with cab, powertrain and cargo on stiff mounts (bushings) at the frame's
-/// interface points, rigid front and rear axles on
-/// leaf-spring suspensions (vertical spring-dampers, a longitudinal arm,
-/// a stabilizer as a roll spring), steered front knuckles, wheels on
-/// revolute joints with tires, and a drive torque on the rear wheels.
+/// The truck template: a ladder frame (rigid, or elastic by a Craig-Bampton
+/// reduced body of the generated shell frame, ladder_frame.h, or of the
+/// user's FE frame) with cab, powertrain and cargo on mounts (bushings) at
+/// the frame's interface points, any number of rigid axles on leaf-spring
+/// suspensions (vertical spring-dampers, a longitudinal arm, a stabilizer as
+/// a roll spring), two of them optionally on a balancer bogie (6x4), the
+/// first axle steered by knuckles and the steering linkage, wheels on
+/// revolute joints with tires, a drive torque on the driven axles' wheels
+/// and brakes on every wheel.
 /// Coordinates: the vehicle frame, x forward from the front-axle centre,
 /// y to the left, z up from the road; at t = 0 it coincides with the world.
 
@@ -73,12 +75,46 @@ struct SuspensionData {
 /// axle's unsprung mass).
 inline constexpr double kAxleHubMass = 1.0;
 
+/// One axle: the rigid-axle template (a beam axle located by a longitudinal
+/// arm, rolling on it against a stabilizer, on two vertical leaf springs),
+/// with a wheel and tire set at each end; steered (knuckles on kingpins,
+/// turned by the steering linkage), driven and braked as set here. Its
+/// springs rest on the frame's spring seats, or with `bogie` on the ends of
+/// that bogie's balancer beams.
+struct AxleData {
+  /// Names the axle's bodies, joints, forces and frame mounts ("front":
+  /// front_axle, wheel_fl, spring_seat_front_left, arm_pivot_front; "rear":
+  /// rear_axle, wheel_rl, ...; any other name n: n_axle, wheel_n_l, ...).
+  std::string name;
+  double x = 0.0;                  ///< axle centre along the vehicle's x [m]; the first axle at 0
+  double track = 2.0;              ///< wheel-centre distance (twin tires: their centre) [m]
+  bool steered = false;            ///< knuckles on kingpins, turned by the steering (the first axle only)
+  bool driven = false;             ///< the drive torque is shared equally by the wheels of all driven axles
+  double brake_share = 0.5;        ///< this axle's share of the total brake torque [-]; the shares sum to 1
+  PartData axle;                   ///< the axle beam (x of cg unused: at x)
+  PartData wheel;                  ///< one wheel (a twin set: both rims)
+  SuspensionData suspension;       ///< springs, arm, stabilizer
+  TireData tire;                   ///< the tire set of one wheel
+  int bogie = -1;                  ///< index into TruckData::bogies, -1: springs on the frame
+};
+
+/// A balancer (tandem) bogie: on each side a beam (the leaf spring of a
+/// balancer suspension) pivots on a trunnion on the frame at `x` and rests
+/// with its ends on the springs of the bogie's two axles, so that the
+/// trunnion load is shared between them by the lever rule.
+struct BogieData {
+  std::string name;                ///< names the beams (bogie_<name>_left) and trunnions (trunnion_<name>_left)
+  double x = 0.0;                  ///< trunnion axis along the vehicle's x [m], between the two axles
+  PartData beam;                   ///< one beam; its centre of mass on the trunnion axis
+};
+
 /// All parameters of the truck (examples/truck_lane_change/README.md gives
 /// the values and their sources).
 struct TruckData {
-  double wheelbase = 4.2;          ///< [m]; the rear axle is at x = -wheelbase
-  double front_track = 2.0;        ///< [m]
-  double rear_track = 1.85;        ///< centre of the twin tires [m]
+  /// The axles from front to rear (the first at x = 0, steered); a truck
+  /// file's front_*/rear_* keys make the two axles "front" and "rear".
+  std::vector<AxleData> axles;
+  std::vector<BogieData> bogies;   ///< balancer bogies of the axles (AxleData::bogie)
   double kingpin_offset = 0.15;    ///< kingpin lateral distance inboard of the wheel centre [m]
   /// Sprung parts. The frame's mass properties are those of the generated
   /// shell frame (ShellMassProperties of `frame_mesh`, non-structural mass
@@ -101,8 +137,7 @@ struct TruckData {
   /// Largest distance of a mount's node from its attachment point [m]; the
   /// offset between them is a rigid lever (a bracket idealized as rigid).
   double mount_tolerance = 0.1;
-  PartData front_axle, rear_axle, knuckle, front_wheel, rear_wheel, arm;  ///< unsprung parts
-  SuspensionData front, rear;      ///< suspensions
+  PartData knuckle, arm;           ///< a knuckle of a steered axle, an axle's longitudinal arm
   double steering_stiffness = 4e5;  ///< knuckle servo stiffness about the kingpin [N m/rad]
   double steering_damping = 4e3;    ///< knuckle servo damping [N m s/rad]
   double steering_ratio = 20.0;    ///< steering-wheel / road-wheel angle [-]
@@ -142,48 +177,70 @@ struct TruckData {
   double column_inertia = 0.2;       ///< about the column axis [kg m^2]
   double column_length = 1.0;        ///< steering gear to steering wheel [m]; centre of mass at its middle
   double column_inclination = 0.35;  ///< column axis from the vertical, leaning rearwards [rad]
-  TireData front_tire, rear_tire;  ///< tires (rear: a twin set per side)
-  /// Front axle's share of the total brake torque [-], in [0, 1]; each axle's
-  /// torque is split equally between its two wheels.
-  double brake_front_share = 0.4;
   /// Smoothing spin omega_s of the wheel brakes [rad/s], > 0 (WheelBrake).
   double brake_smoothing_spin = 0.5;
   double gauge_width = 2.5;        ///< overall width of the vehicle for the gauge points [m]
 };
 
+/// The name of the axle's wheel on side `side` (0 left, 1 right): wheel_fl,
+/// wheel_fr for the axle "front", wheel_rl, wheel_rr for "rear", else
+/// wheel_<name>_l, wheel_<name>_r.
+std::string WheelName(const AxleData& a, int side);
+
+/// Distance from the first axle to the rear axle group's centre [m]: to the
+/// last axle, or to its bogie's trunnion (the effective wheelbase of the
+/// single-track model and of the driver).
+double Wheelbase(const TruckData& d);
+
+/// Checks the axles and bogies of `d` (order, names, steering, shares, each
+/// bogie with two axles around its trunnion); throws InputError naming the
+/// axle or bogie.
+void CheckAxles(const TruckData& d);
+
 /// Generates the ladder frame of `d.ladder` (ladder_frame.h), stores it in
 /// d.frame_mesh and sets d.frame's mass properties from it.
 void SetFrameMesh(TruckData& d);
 
-/// The 26 named attachment points of the frame, vehicle frame [m]: spring
-/// seats (4), arm pivots (2), steering gear (1), cab mounts (4 by default),
-/// powertrain mounts (4), cargo mounts (10) and the rear tow hitch (1), at
-/// the static ride height. The elastic frame's interface nodes are the mesh
+/// The named attachment points of the frame, vehicle frame [m], at the
+/// static ride height: per axle its spring seats (2, not with a bogie) and
+/// arm pivot (1), per bogie its trunnions (2), the steering gear (1), cab,
+/// powertrain and cargo mounts (2 per station) and the rear tow hitch (1):
+/// 26 for the example 4x2. The elastic frame's interface nodes are the mesh
 /// nodes nearest to them (NearestNode).
 std::vector<FrameAttachment> FrameAttachments(const TruckData& d, double g = 9.81);
 
-/// Static axle loads [N] (front, rear) by the lever rule over all parts'
-/// weights: the independent hand computation used to preload the springs
-/// and by the static check.
-std::array<double, 2> StaticAxleLoads(const TruckData& d, double g);
+/// Static axle loads [N], one per axle, the hand computation used to preload
+/// the springs and by the static checks: each axle carries its unsprung
+/// weight and half its arm's; the sprung weights go to the supports (an
+/// axle's springs, a bogie's trunnions) by the lever rule with two
+/// supports, else as on a rigid frame resting on the supports' springs and
+/// tires in series; a bogie's load is shared by its axles by the lever rule.
+std::vector<double> StaticAxleLoads(const TruckData& d, double g);
 
 /// Indices of the entities of a built truck.
 struct TruckHandles {
   int frame_body = -1;                 ///< the frame (RigidBody or FlexibleBody)
   bool elastic = false;                ///< the frame is a FlexibleBody
   int frame_ref = -1;                  ///< frame marker at the frame's centre of mass, vehicle axes
-  int front_axle_ref = -1, rear_axle_ref = -1;  ///< frame markers above the axle centres at road level
+  /// Frame markers at road level above the first axle and the rear axle
+  /// group's centre (at x = -Wheelbase).
+  int front_axle_ref = -1, rear_axle_ref = -1;
   std::array<int, 4> gauge{};          ///< frame gauge markers: front-left, front-right, rear-left, rear-right
-  std::array<int, 4> tire_force{};     ///< tire force elements: FL, FR, RL, RR
-  std::array<int, 4> wheel_marker{};   ///< wheel-centre markers: FL, FR, RL, RR
-  std::array<double, 2> wheel_centre_z{};  ///< static wheel-centre heights front, rear [m]
+  std::vector<int> tire_force;         ///< tire force elements, per axle left then right (FL, FR, RL, RR, ...)
+  std::vector<int> wheel_marker;       ///< wheel-centre markers, as tire_force
+  std::vector<double> wheel_centre_z;  ///< static wheel-centre height per axle [m]
   std::array<int, 2> kingpin_joint{};  ///< kingpin revolutes: left, right
+  /// Per body of the model: the index of the axle whose unsprung part it is
+  /// (its axle, arm, hub, wheels, contact patches, the first axle's
+  /// knuckles, a bogie's beams: its rear axle), -1 for the frame and the
+  /// parts on it.
+  std::vector<int> body_axle;
 };
 
 /// The truck's inputs as functions of time: the steering-wheel angle [rad],
 /// the drive torque on the rear axle [N m] and, when not null, the total
 /// brake torque on all wheels [N m] (WheelBrake on each wheel bearing,
-/// shared by brake_front_share).
+/// shared by the axles' brake_share).
 struct TruckInputs {
   std::shared_ptr<const ScalarFunction> steering_wheel;
   std::shared_ptr<const ScalarFunction> drive_torque;
@@ -200,7 +257,7 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, const Truck
 /// [m/s] on a road with friction `mu`. The steering-wheel angle [rad], the
 /// drive torque on the rear axle [N m] and, when not null, the total brake
 /// torque on all wheels [N m] (WheelBrake on each wheel bearing, shared by
-/// brake_front_share) are read from the shared values (zero-order hold,
+/// the axles' brake_share) are read from the shared values (zero-order hold,
 /// CommandSignal). Throws InputError for bad data.
 TruckHandles BuildTruck(const TruckData& d, double speed, double mu, std::shared_ptr<const double> steering_wheel,
                         std::shared_ptr<const double> drive_torque, Model& model,

@@ -81,11 +81,11 @@ std::vector<BrakeSample> RunBraking(const TruckData& d, double speed, double bra
 // arms, pitman arm, steering column, tire contact patches).
 double TruckMass(const TruckData& d) {
   auto patch = [](const TireData& t) { return t.relaxation_length > 0 ? t.count * t.patch_mass : 0.0; };
-  return d.frame.mass + d.cab.mass + d.powertrain.mass + d.cargo.mass + d.front_axle.mass + d.rear_axle.mass +
-         2 * (d.knuckle.mass + d.front_wheel.mass + d.rear_wheel.mass + d.arm.mass) +
+  return d.frame.mass + d.cab.mass + d.powertrain.mass + d.cargo.mass + d.axles[0].axle.mass + d.axles[1].axle.mass +
+         2 * (d.knuckle.mass + d.axles[0].wheel.mass + d.axles[1].wheel.mass + d.arm.mass) +
          (d.steering_linkage ? d.pitman_arm_mass : 0.0) + (d.steering_linkage && d.steering_column ? d.column_mass : 0.0) +
-         2 * (patch(d.front_tire) + patch(d.rear_tire)) + (d.front.extra_arm_height > 0 ? kAxleHubMass : 0.0) +
-         (d.rear.extra_arm_height > 0 ? kAxleHubMass : 0.0);
+         2 * (patch(d.axles[0].tire) + patch(d.axles[1].tire)) + (d.axles[0].suspension.extra_arm_height > 0 ? kAxleHubMass : 0.0) +
+         (d.axles[1].suspension.extra_arm_height > 0 ? kAxleHubMass : 0.0);
 }
 
 // Reference: a wheel with brake torque T, spin inertia I and the tire's
@@ -123,18 +123,18 @@ TEST(TruckBrakes, StraightLineDecelerationEqualsBrakeTorqueOverTireLever) {
   ASSERT_TRUE(d.steering_linkage && d.steering_column);
   const double g = 9.81, T = 16000.0, V0 = 15.0;
   const double m = TruckMass(d);
-  const std::array<double, 2> loads = StaticAxleLoads(d, g);
+  const std::vector<double> loads = StaticAxleLoads(d, g);
   const auto defl = [&](const TireData& t, double axle_load) {
     return 0.5 * axle_load / (t.count * t.vertical_stiffness);
   };
-  const double df = defl(d.front_tire, loads[0]), dr = defl(d.rear_tire, loads[1]);
-  const double rho_f = d.front_tire.unloaded_radius - df, rho_r = d.rear_tire.unloaded_radius - dr;
-  const double re_f = d.front_tire.unloaded_radius - d.front_tire.rolling_radius_factor * df;
-  const double re_r = d.rear_tire.unloaded_radius - d.rear_tire.rolling_radius_factor * dr;
-  const double tf = d.brake_front_share * T, tr = (1 - d.brake_front_share) * T;
-  const double fr = d.front_tire.rolling_resistance * loads[0] + d.rear_tire.rolling_resistance * loads[1];
+  const double df = defl(d.axles[0].tire, loads[0]), dr = defl(d.axles[1].tire, loads[1]);
+  const double rho_f = d.axles[0].tire.unloaded_radius - df, rho_r = d.axles[1].tire.unloaded_radius - dr;
+  const double re_f = d.axles[0].tire.unloaded_radius - d.axles[0].tire.rolling_radius_factor * df;
+  const double re_r = d.axles[1].tire.unloaded_radius - d.axles[1].tire.rolling_radius_factor * dr;
+  const double tf = d.axles[0].brake_share * T, tr = (1 - d.axles[0].brake_share) * T;
+  const double fr = d.axles[0].tire.rolling_resistance * loads[0] + d.axles[1].tire.rolling_resistance * loads[1];
   const double a_ref = (tf / rho_f + tr / rho_r + fr) /
-                       (m + 2 * d.front_wheel.inertia.y() / (rho_f * re_f) + 2 * d.rear_wheel.inertia.y() / (rho_r * re_r));
+                       (m + 2 * d.axles[0].wheel.inertia.y() / (rho_f * re_f) + 2 * d.axles[1].wheel.inertia.y() / (rho_r * re_r));
   const std::vector<BrakeSample> s = RunBraking(d, V0, T, 0.5, 6.5);
   double st = 0, sv = 0, stt = 0, stv = 0, n = 0, min_kappa = 0, min_spin = 1e300;
   double max_y = 0, max_steer = 0, max_pitch = 0, t_stop = -1;
@@ -161,7 +161,7 @@ TEST(TruckBrakes, StraightLineDecelerationEqualsBrakeTorqueOverTireLever) {
   EXPECT_NEAR(-slope, a_ref, 0.01 * a_ref) << "a_ref " << a_ref << " m " << m;
   EXPECT_GT(a_ref, 2.0);
   // no lockup: every wheel keeps rolling, slip ratios stay in the linear range
-  EXPECT_GT(min_spin, 0.5 * (V0 - 3.5 * a_ref) / d.rear_tire.unloaded_radius);
+  EXPECT_GT(min_spin, 0.5 * (V0 - 3.5 * a_ref) / d.axles[1].tire.unloaded_radius);
   EXPECT_GT(min_kappa, -0.05);
   // straight path with the linkage: the truck stops within the run, the
   // axle pitches (the wind-up is there), the wheels do not steer
@@ -191,7 +191,7 @@ TEST(TruckBrakes, HorizontalDragLinkBrakeSteerFollowsLinkageKinematics) {
   d.steering_arm_height = 0.15;
   d.drag_link_length = 0.65;
   const std::vector<BrakeSample> s = RunBraking(d, 15.0, 16000.0, 0.5, 5.0);
-  const double h = d.steering_arm_height, a = d.pitman_arm_length, R = d.front.arm_length, L = d.drag_link_length;
+  const double h = d.steering_arm_height, a = d.pitman_arm_length, R = d.axles[0].suspension.arm_length, L = d.drag_link_length;
   double max_rel_err = 0, min_pitch = 1e300;
   for (const BrakeSample& r : s) {
     if (r.t < 4.0) continue;  // steady braking

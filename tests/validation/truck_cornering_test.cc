@@ -46,7 +46,7 @@ TEST(TruckValidation, SteadyStateCornering) {
     EXPECT_GT(s.roll, 0.0);
   }
   // constant-steer method: delta = L / R + K a_y / g
-  const double K = -(d.wheelbase * (hi.yaw_rate / hi.speed - lo.yaw_rate / lo.speed)) / ((hi.ay - lo.ay) / g) * deg;
+  const double K = -(Wheelbase(d) * (hi.yaw_rate / hi.speed - lo.yaw_rate / lo.speed)) / ((hi.ay - lo.ay) / g) * deg;
   const double roll_gradient = (hi.roll - lo.roll) / ((hi.ay - lo.ay) / g) * deg;
   std::printf("understeer gradient %.2f deg/g, roll gradient %.2f deg/g, a_y %.2f and %.2f m/s^2\n", K, roll_gradient,
               lo.ay, hi.ay);

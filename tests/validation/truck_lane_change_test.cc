@@ -171,7 +171,7 @@ TEST(TruckValidation, LaneChangeStartsFromStaticEquilibrium) {
   std::ofstream(base + "ride_height.yaml") << yaml;
 
   const TruckData d = LoadLaneChangeTruck(TruckFile());
-  const std::array<double, 2> loads = StaticAxleLoads(d, 9.81);
+  const std::vector<double> loads = StaticAxleLoads(d, 9.81);
   static const std::shared_ptr<const reduction::ReducedBody> body =
       ReduceTruckFrame(d, FrameReductionData{10, 0.02, 30});
   auto run = [&](const char* name) {

@@ -79,12 +79,12 @@ struct HandBuilder {
   double loads[2] = {0, 0};
 
   explicit HandBuilder(const TruckData& data) : d(data) {
-    const std::array<double, 2> al = flexmb::vehicle::StaticAxleLoads(d, kG);
+    const std::vector<double> al = flexmb::vehicle::StaticAxleLoads(d, kG);
     loads[0] = al[0], loads[1] = al[1];
-    zw[0] = d.front_tire.unloaded_radius - 0.5 * loads[0] / (d.front_tire.count * d.front_tire.vertical_stiffness);
-    zw[1] = d.rear_tire.unloaded_radius - 0.5 * loads[1] / (d.rear_tire.count * d.rear_tire.vertical_stiffness);
+    zw[0] = d.axles[0].tire.unloaded_radius - 0.5 * loads[0] / (d.axles[0].tire.count * d.axles[0].tire.vertical_stiffness);
+    zw[1] = d.axles[1].tire.unloaded_radius - 0.5 * loads[1] / (d.axles[1].tire.count * d.axles[1].tire.vertical_stiffness);
   }
-  Vec3 AxleCentre(int a) const { return Vec3(a == 0 ? 0.0 : -d.wheelbase, 0, zw[a]); }
+  Vec3 AxleCentre(int a) const { return Vec3(a == 0 ? 0.0 : -Wheelbase(d), 0, zw[a]); }
   int Io(int a) const { return a == 0 ? 6 : 8; }
   // displacement of a point p of the sprung body
   Rows Sprung(const Vec3& p) const {
@@ -99,12 +99,12 @@ struct HandBuilder {
     return R;
   }
   Vec3 Pivot(int a) const {
-    const auto& s = a == 0 ? d.front : d.rear;
+    const auto& s = d.axles[a].suspension;
     return AxleCentre(a) + Vec3(s.arm_length, 0, 0);
   }
   // arm pitch: (axle heave - pivot heave) / arm length
   Eigen::Matrix<double, 1, kN> ArmPitch(int a) const {
-    const double L = (a == 0 ? d.front : d.rear).arm_length;
+    const double L = d.axles[a].suspension.arm_length;
     Eigen::Matrix<double, 1, kN> r = -Sprung(Pivot(a)).row(2) / L;
     r(Io(a)) += 1.0 / L;
     return r;
@@ -153,7 +153,7 @@ struct HandBuilder {
   HandModel Build() {
     // sprung parts and their centre of mass
     const double zf = zw[0];
-    const Vec3 kingpin(0, 0.5 * d.front_track - d.kingpin_offset, zf);
+    const Vec3 kingpin(0, 0.5 * d.axles[0].track - d.kingpin_offset, zf);
     const Vec3 ball = kingpin + Vec3(d.drag_link_length, -d.pitman_arm_length, d.steering_arm_height);
     const Vec3 pivot = ball + Vec3(0, 0, d.pitman_arm_length);
     const Vec3 ac(-std::sin(d.column_inclination), 0, std::cos(d.column_inclination));
@@ -175,11 +175,11 @@ struct HandBuilder {
     for (int a = 0; a < 2; ++a) {
       const bool front = a == 0;
       const Vec3 A = AxleCentre(a);
-      const PartData& ax = front ? d.front_axle : d.rear_axle;
-      const PartData& wh = front ? d.front_wheel : d.rear_wheel;
-      const auto& tire = front ? d.front_tire : d.rear_tire;
-      const auto& s = front ? d.front : d.rear;
-      const double track = front ? d.front_track : d.rear_track;
+      const PartData& ax = d.axles[a].axle;
+      const PartData& wh = d.axles[a].wheel;
+      const auto& tire = d.axles[a].tire;
+      const auto& s = d.axles[a].suspension;
+      const double track = d.axles[a].track;
       AddMass(ax.mass, Inertia(ax), Axle(a, A), AxleRotation(a));
       if (s.extra_arm_height > 0)
         AddMass(flexmb::vehicle::kAxleHubMass, 0.01 * Mat3::Identity(), Axle(a, A), AxleRotation(a));
@@ -203,7 +203,7 @@ struct HandBuilder {
           AddLink(Axle(a, wc - Vec3(0, 0, zw[a])), Rows::Zero(), Vec3::UnitY(), t.carcass_stiffness(), 0.0);
         }
         // suspension spring and damper from the frame's seat to the axle, compressed by P
-        const double unsprung_load = (front ? 2 * (d.front_wheel.mass + d.knuckle.mass) : 2 * d.rear_wheel.mass) +
+        const double unsprung_load = (front ? 2 * (d.axles[0].wheel.mass + d.knuckle.mass) : 2 * d.axles[1].wheel.mass) +
                                      ax.mass + 2 * tire.count * tire.patch_mass * (tire.relaxation_length > 0) +
                                      (s.extra_arm_height > 0 ? flexmb::vehicle::kAxleHubMass : 0.0);
         const double P = 0.5 * (loads[a] - (unsprung_load + 0.5 * d.arm.mass) * kG);

@@ -12,7 +12,7 @@ namespace truck_static_test {
 
 TEST(TruckValidation, StaticAxleLoadsEqualMassDistribution) {
   const TruckData d = LoadLaneChangeTruck(TruckFile());
-  const double g = 9.81, L = d.wheelbase;
+  const double g = 9.81, L = Wheelbase(d);
   // every part's weight on the axles by the lever rule about the rear axle
   struct Part {
     double m, x;
@@ -21,16 +21,16 @@ TEST(TruckValidation, StaticAxleLoadsEqualMassDistribution) {
                         {d.cab.mass, d.cab.cg.x()},
                         {d.powertrain.mass, d.powertrain.cg.x()},
                         {d.cargo.mass, d.cargo.cg.x()},
-                        {d.front_axle.mass + 2 * d.knuckle.mass + 2 * d.front_wheel.mass, 0.0},
-                        {d.rear_axle.mass + 2 * d.rear_wheel.mass, -L},
+                        {d.axles[0].axle.mass + 2 * d.knuckle.mass + 2 * d.axles[0].wheel.mass, 0.0},
+                        {d.axles[1].axle.mass + 2 * d.axles[1].wheel.mass, -L},
                         // tire contact-patch bodies (relaxation length), on the axles
-                        {2.0 * d.front_tire.count * d.front_tire.patch_mass * (d.front_tire.relaxation_length > 0), 0.0},
-                        {2.0 * d.rear_tire.count * d.rear_tire.patch_mass * (d.rear_tire.relaxation_length > 0), -L},
+                        {2.0 * d.axles[0].tire.count * d.axles[0].tire.patch_mass * (d.axles[0].tire.relaxation_length > 0), 0.0},
+                        {2.0 * d.axles[1].tire.count * d.axles[1].tire.patch_mass * (d.axles[1].tire.relaxation_length > 0), -L},
                         // hubs of the axles with the additional arm
-                        {d.front.extra_arm_height > 0 ? kAxleHubMass : 0.0, 0.0},
-                        {d.rear.extra_arm_height > 0 ? kAxleHubMass : 0.0, -L},
-                        {d.arm.mass, 0.5 * d.front.arm_length},
-                        {d.arm.mass, -L + 0.5 * d.rear.arm_length},
+                        {d.axles[0].suspension.extra_arm_height > 0 ? kAxleHubMass : 0.0, 0.0},
+                        {d.axles[1].suspension.extra_arm_height > 0 ? kAxleHubMass : 0.0, -L},
+                        {d.arm.mass, 0.5 * d.axles[0].suspension.arm_length},
+                        {d.arm.mass, -L + 0.5 * d.axles[1].suspension.arm_length},
                         {d.steering_linkage ? d.pitman_arm_mass : 0.0, d.drag_link_length},
                         // steering column: centre of mass half-way up the column leaning rearwards
                         {d.steering_linkage && d.steering_column ? d.column_mass : 0.0,

@@ -59,14 +59,14 @@ TEST(TruckSubsystemFiles, SplitFileIsTheSameTruck) {
   EXPECT_EQ(b.cab.inertia, a.cab.inertia);
   EXPECT_EQ(b.cab_mounts.x, a.cab_mounts.x);
   EXPECT_EQ(b.cab_mounts.stiffness, a.cab_mounts.stiffness);
-  EXPECT_EQ(b.rear.spring_stiffness, a.rear.spring_stiffness);
-  EXPECT_EQ(b.rear.stabilizer_stiffness, a.rear.stabilizer_stiffness);
-  EXPECT_EQ(b.rear.extra_arm_height, a.rear.extra_arm_height);
+  EXPECT_EQ(b.axles[1].suspension.spring_stiffness, a.axles[1].suspension.spring_stiffness);
+  EXPECT_EQ(b.axles[1].suspension.stabilizer_stiffness, a.axles[1].suspension.stabilizer_stiffness);
+  EXPECT_EQ(b.axles[1].suspension.extra_arm_height, a.axles[1].suspension.extra_arm_height);
   EXPECT_EQ(b.steering_ratio, a.steering_ratio);
   EXPECT_EQ(b.steering_stiffness, a.steering_stiffness);
   EXPECT_EQ(b.column_inclination, a.column_inclination);
   EXPECT_EQ(b.drag_link_length, a.drag_link_length);
-  EXPECT_EQ(b.brake_front_share, a.brake_front_share);
+  EXPECT_EQ(b.axles[0].brake_share, a.axles[0].brake_share);
   EXPECT_EQ(StaticAxleLoads(b, 9.81), StaticAxleLoads(a, 9.81));
   // and it runs the same: 20 m of the lane change at 45 km/h
   LaneChangeOptions o;

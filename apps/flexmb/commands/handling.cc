@@ -34,7 +34,8 @@ constexpr double kDeg = 180.0 / std::numbers::pi;
 // the quantities of one output row
 struct Row {
   double t = 0, speed = 0, delta_sw = 0, delta_road = 0, yaw_rate = 0, ay = 0, beta = 0, roll = 0;
-  double x = 0, y = 0, yaw = 0, pitch = 0, ax = 0, axle_load[2] = {0, 0};
+  double x = 0, y = 0, yaw = 0, pitch = 0, ax = 0;
+  double axle_load[2] = {0, 0};  // the front axle, the rear axles together [N]
 };
 
 // ECE R13 (Annex 4) braking measures from the rows from the brake onset
@@ -225,22 +226,30 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
   auto brake = std::make_shared<double>(0.0);
   const double brake_torque =
       opt.brake_torque.value_or((ref.axle_load[0] + ref.axle_load[1]) / g * opt.decel * 0.5 *
-                                (f.truck.front_tire.unloaded_radius + f.truck.rear_tire.unloaded_radius));
+                                (f.truck.axles.front().tire.unloaded_radius + f.truck.axles.back().tire.unloaded_radius));
   model.name = "truck_handling_" + opt.test;
   model.solver = f.solver;
   const TruckHandles h = BuildTruck(f.truck, v0, f.mu, steer, torque, model, brake);
   model.Finalize();
   const Body& frame_body = *model.bodies[h.frame_body];
   const Marker& frame_ref = model.markers[static_cast<size_t>(h.frame_ref)];
+  const size_t n_axles = f.truck.axles.size(), n_wheels = 2 * n_axles;
+  std::vector<double> fz(n_wheels), ltr(n_axles);  // per step, allocated once
 
   std::FILE* csv = nullptr;
   if (!opt.out_dir.empty()) {
     csv = std::fopen((std::filesystem::path(opt.out_dir) / "results.csv").string().c_str(), "w");
     if (!csv) throw InputError("cannot write results.csv", {opt.out_dir, 0, ""});
+    // per wheel fz_fl_kN, ..., per axle ltr_front, ...
+    std::string fz, ltr;
+    for (const AxleData& a : f.truck.axles) {
+      ltr += "ltr_" + a.name + ",";
+      for (int k = 0; k < 2; ++k) fz += "fz_" + WheelName(a, k).substr(6) + "_kN,";
+    }
     std::fprintf(csv, "time,x,y,speed_kmh,steering_wheel_angle_deg,road_wheel_angle_deg,yaw_rate_degps,"
-                      "lateral_acceleration,sideslip_deg,roll_deg,curvature,fz_fl_kN,fz_fr_kN,fz_rl_kN,fz_rr_kN,"
-                      "ltr_front,ltr_rear,drive_torque_kNm,brake_torque_kNm,yaw_deg,pitch_deg,"
-                      "longitudinal_acceleration\n");
+                      "lateral_acceleration,sideslip_deg,roll_deg,curvature,%s%sdrive_torque_kNm,brake_torque_kNm,"
+                      "yaw_deg,pitch_deg,longitudinal_acceleration\n",
+                 fz.c_str(), ltr.c_str());
     std::fflush(csv);
   }
   // the steering input; constant steer: ramped in over 1 s, the speed rises
@@ -295,18 +304,18 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
       row.yaw = rpy.z();
       row.pitch = rpy.y();
       row.ax = acc.head<3>().dot(ex);
-      double fz[4], ltr[2];
-      for (int k = 0; k < 4; ++k) {
+      for (size_t k = 0; k < n_wheels; ++k) {
         const MarkerState& wm = ws.markers[h.wheel_marker[k]];
         TireContact c;
         static_cast<const Tire&>(*model.forces[h.tire_force[k]]).Wrench(wm.p_WM, wm.R_WM, wm.v_WM, wm.w_WM, &c);
         fz[k] = std::max(c.fz, 0.0);
       }
-      for (int a = 0; a < 2; ++a) {
-        row.axle_load[a] = fz[2 * a] + fz[2 * a + 1];
-        ltr[a] = row.axle_load[a] > 0 ? (fz[2 * a] - fz[2 * a + 1]) / row.axle_load[a] : 0.0;
+      for (size_t a = 0; a < n_axles; ++a) {
+        const double load = fz[2 * a] + fz[2 * a + 1];
+        row.axle_load[a == 0 ? 0 : 1] += load;
+        ltr[a] = load > 0 ? (fz[2 * a] - fz[2 * a + 1]) / load : 0.0;
+        if (st.t >= opt.step_time) max_ltr = std::max(max_ltr, std::abs(ltr[a]));
       }
-      if (st.t >= opt.step_time) max_ltr = std::max({max_ltr, std::abs(ltr[0]), std::abs(ltr[1])});
       // controls held over the next step: steering, PI speed control
       *steer = steering(st.t);
       const double err = target_speed(st.t) - row.speed;
@@ -325,12 +334,13 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
         rows.push_back(row);
         const Vec3 p = fr.p_WM;
         if (csv) {
-          std::fprintf(csv, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,"
-                            "%.6g,%.6g,%.6g,%.6g\n",
-                       st.t, p.x(), p.y(), row.speed * 3.6, row.delta_sw * kDeg, row.delta_road * kDeg,
-                       row.yaw_rate * kDeg, row.ay, row.beta * kDeg, row.roll * kDeg, row.yaw_rate / row.speed,
-                       fz[0] / 1e3, fz[1] / 1e3, fz[2] / 1e3, fz[3] / 1e3, ltr[0], ltr[1], *torque / 1e3,
-                       *brake / 1e3, row.yaw * kDeg, row.pitch * kDeg, row.ax);
+          std::fprintf(csv, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g", st.t, p.x(), p.y(),
+                       row.speed * 3.6, row.delta_sw * kDeg, row.delta_road * kDeg, row.yaw_rate * kDeg, row.ay,
+                       row.beta * kDeg, row.roll * kDeg, row.yaw_rate / row.speed);
+          for (size_t k = 0; k < n_wheels; ++k) std::fprintf(csv, ",%.6g", fz[k] / 1e3);
+          for (size_t a = 0; a < n_axles; ++a) std::fprintf(csv, ",%.6g", ltr[a]);
+          std::fprintf(csv, ",%.6g,%.6g,%.6g,%.6g,%.6g\n", *torque / 1e3, *brake / 1e3, row.yaw * kDeg,
+                       row.pitch * kDeg, row.ax);
           std::fflush(csv);
         }
       }

@@ -413,7 +413,7 @@ void CheckLaneChange(const LaneChangeOptions& opt, std::FILE* out) {
   const LaneChangeFile& f = setup->f;
   ReportModel(setup->model, opt.file, out);
   const double g = -setup->model.gravity_W.z();
-  const std::array<double, 2> axle = StaticAxleLoads(f.truck, g);
+  const std::vector<double> axle = StaticAxleLoads(f.truck, g);
   std::fprintf(out, "lane-change test: entry speed %.1f km/h, run-up %.1f m (%.2f s), %s frame", f.speed_kmh,
                f.course.start_x, f.run_up_time, f.frame.c_str());
   if (f.truck.elastic_frame && f.truck.frame_body)
@@ -427,8 +427,13 @@ void CheckLaneChange(const LaneChangeOptions& opt, std::FILE* out) {
                "test distance %.1f m\n",
                c.section1_length, c.section1_width, c.section2_length, c.section3_width, c.offset,
                setup->course->TestDistance());
-  std::fprintf(out, "static axle loads: front %.2f kN, rear %.2f kN (%.0f kg in all)\n", axle[0] / 1e3, axle[1] / 1e3,
-               (axle[0] + axle[1]) / g);
+  std::fprintf(out, "static axle loads:");
+  double total = 0;
+  for (size_t i = 0; i < axle.size(); ++i) {
+    std::fprintf(out, "%s %s %.2f kN", i ? "," : "", f.truck.axles[i].name.c_str(), axle[i] / 1e3);
+    total += axle[i];
+  }
+  std::fprintf(out, " (%.0f kg in all)\n", total / g);
   if (f.truck.frame_body) {
     // the user's frame: its mounts and the largest lever from node to point
     double largest = 0;
@@ -467,10 +472,11 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
   r.frame = f.frame;
   r.reduction_wall_time_s = setup->reduction_wall_time_s;
   r.entry_speed_kmh = f.speed_kmh;
-  const std::array<double, 2> stat = StaticAxleLoads(f.truck, -model.gravity_W.z());
-  r.static_axle_load[0] = stat[0];
-  r.static_axle_load[1] = stat[1];
-  r.min_axle_load[0] = r.min_axle_load[1] = 1e300;
+  const size_t n_axles = f.truck.axles.size(), n_wheels = 2 * n_axles;
+  r.static_axle_load = StaticAxleLoads(f.truck, -model.gravity_W.z());
+  for (const AxleData& a : f.truck.axles) r.axle_names.push_back(a.name);
+  r.min_axle_load.assign(n_axles, 1e300);
+  r.max_abs_ltr.assign(n_axles, 0.0);
   r.min_corridor_margin = 1e300;
   const double distance = opt.stop_distance ? std::min(*opt.stop_distance, course.TestDistance()) : course.TestDistance();
   const double t_limit = by_time ? 10.0 : 1.5 * distance / v0 + f.run_up_time + 5.0;
@@ -479,11 +485,21 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
   if (!opt.out_dir.empty()) {
     csv = std::fopen((std::filesystem::path(opt.out_dir) / "results.csv").string().c_str(), "w");
     if (!csv) throw InputError("cannot write results.csv", {opt.out_dir, 0, ""});
+    // per axle and wheel: front_axle_load_kN, ..., fz_fl_kN, ..., liftoff_fl, ..., ltr_front, ...
+    std::string axles, fz, lift, ltr;
+    for (const AxleData& a : f.truck.axles) {
+      axles += a.name + "_axle_load_kN,";
+      ltr += ",ltr_" + a.name;
+      for (int k = 0; k < 2; ++k) {
+        fz += "fz_" + WheelName(a, k).substr(6) + "_kN,";
+        lift += "liftoff_" + WheelName(a, k).substr(6) + ",";
+      }
+    }
     std::fprintf(csv,
                  "time,x,y,centre_line_y,speed_kmh,lateral_acceleration,steering_wheel_angle_deg,road_wheel_angle_deg,"
-                 "roll_deg,pitch_deg,yaw_deg,yaw_rate_degps,front_axle_load_kN,rear_axle_load_kN,fz_fl_kN,fz_fr_kN,"
-                 "fz_rl_kN,fz_rr_kN,liftoff_fl,liftoff_fr,liftoff_rl,liftoff_rr,corridor_margin,drive_torque_kNm,"
-                 "wheel_angle_left_deg,wheel_angle_right_deg,ltr_front,ltr_rear%s\n",
+                 "roll_deg,pitch_deg,yaw_deg,yaw_rate_degps,%s%s%scorridor_margin,drive_torque_kNm,"
+                 "wheel_angle_left_deg,wheel_angle_right_deg%s%s\n",
+                 axles.c_str(), fz.c_str(), lift.c_str(), ltr.c_str(),
                  h.elastic ? ",frame_max_displacement_mm,frame_max_displacement_node,frame_max_displacement_x,"
                              "frame_max_stress_MPa,frame_max_stress_element,frame_max_stress_x"
                            : "");
@@ -510,6 +526,9 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
     modal = std::make_unique<durability::ModelModalHistory>(opt.out_dir, model, written);
   }
   FrameResponse frame_response(h.elastic ? static_cast<const FlexibleBody*>(frame_body) : nullptr, csv);
+  const double wheelbase = Wheelbase(f.truck);
+  std::vector<double> fz(n_wheels), axle_load(n_axles), ltr(n_axles);  // per step, allocated once
+  std::vector<int> lift(n_wheels);
   char line[FrameResponse::kRowChars];
   r.frame_modal_coordinates = h.elastic ? f.truck.elastic_frame->invariants.n : 0;
   try {
@@ -530,22 +549,21 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
       const double yaw_rate = fr.w_WM.z();
 
       // controllers, held over the next step
-      driver.Update(VehicleView{st.t, pf.x(), pr.x(), pr.y(), yaw, speed, f.truck.wheelbase, pf.y(), yaw_rate});
+      driver.Update(VehicleView{st.t, pf.x(), pr.x(), pr.y(), yaw, speed, wheelbase, pf.y(), yaw_rate});
 
       // tires, axle loads, lift-off
-      double fz[4];
-      int lift[4];
-      for (int k = 0; k < 4; ++k) {
+      bool lifted = false;
+      for (size_t k = 0; k < n_wheels; ++k) {
         const MarkerState& wm = ws.markers[h.wheel_marker[k]];
         TireContact c;
         static_cast<const Tire&>(*model.forces[h.tire_force[k]]).Wrench(wm.p_WM, wm.R_WM, wm.v_WM, wm.w_WM, &c);
         fz[k] = c.fz;
         lift[k] = c.fz <= 0.0 ? 1 : 0;
+        lifted = lifted || lift[k];
       }
-      const double front = fz[0] + fz[1], rear = fz[2] + fz[3];
-      // load-transfer ratio per axle (a lifted wheel carries no load)
-      double ltr[2];
-      for (int a = 0; a < 2; ++a) {
+      // axle load and load-transfer ratio per axle (a lifted wheel carries no load)
+      for (size_t a = 0; a < n_axles; ++a) {
+        axle_load[a] = fz[2 * a] + fz[2 * a + 1];
         const double left = std::max(fz[2 * a], 0.0), right = std::max(fz[2 * a + 1], 0.0);
         ltr[a] = left + right > 0 ? (left - right) / (left + right) : 0.0;
       }
@@ -566,11 +584,12 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
         r.max_roll_deg = std::max(r.max_roll_deg, std::abs(rpy.x()) * kDeg);
         r.max_steering_wheel_deg = std::max(r.max_steering_wheel_deg, std::abs(*driver.steering_wheel_angle()) * kDeg);
         r.max_yaw_rate_deg = std::max(r.max_yaw_rate_deg, std::abs(yaw_rate) * kDeg);
-        r.min_axle_load[0] = std::min(r.min_axle_load[0], front);
-        r.min_axle_load[1] = std::min(r.min_axle_load[1], rear);
-        for (int a = 0; a < 2; ++a) r.max_abs_ltr[a] = std::max(r.max_abs_ltr[a], std::abs(ltr[a]));
+        for (size_t a = 0; a < n_axles; ++a) {
+          r.min_axle_load[a] = std::min(r.min_axle_load[a], axle_load[a]);
+          r.max_abs_ltr[a] = std::max(r.max_abs_ltr[a], std::abs(ltr[a]));
+        }
         if (margin < 0 && r.corridor_exit_time < 0) r.corridor_exit_time = st.t;
-        if ((lift[0] || lift[1] || lift[2] || lift[3]) && r.lift_off_time < 0) r.lift_off_time = st.t;
+        if (lifted && r.lift_off_time < 0) r.lift_off_time = st.t;
       }
       r.t_end = st.t;
       r.distance = pf.x() - x_start;
@@ -578,15 +597,21 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
       const bool row = st.t >= next_row - 1e-9 || done;
       if (row) next_row = st.t + f.output_interval;
       if (csv && row) {
-        const int len = std::snprintf(
-            line, sizeof(line),
-            "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%d,%d,%d,"
-            "%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g",
-            st.t, pf.x() - x_start, pf.y(), course.CentreLine(pf.x()), speed * 3.6, ay, *driver.steering_wheel_angle() * kDeg,
-            driver.road_wheel_angle() * kDeg, rpy.x() * kDeg, rpy.y() * kDeg, yaw * kDeg, yaw_rate * kDeg, front / 1e3,
-            rear / 1e3, fz[0] / 1e3, fz[1] / 1e3, fz[2] / 1e3, fz[3] / 1e3, lift[0], lift[1], lift[2], lift[3], margin,
-            *driver.drive_torque() / 1e3, KingpinAngle(0) * kDeg, KingpinAngle(1) * kDeg, ltr[0], ltr[1]);
-        if (len < 0 || static_cast<size_t>(len) >= sizeof(line)) throw std::logic_error("results.csv row too long");
+        size_t len = 0;
+        auto put = [&](const char* format, auto... values) {
+          const int n = std::snprintf(line + len, sizeof(line) - len, format, values...);
+          if (n < 0 || len + static_cast<size_t>(n) >= sizeof(line)) throw std::logic_error("results.csv row too long");
+          len += static_cast<size_t>(n);
+        };
+        put("%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g", st.t, pf.x() - x_start, pf.y(),
+            course.CentreLine(pf.x()), speed * 3.6, ay, *driver.steering_wheel_angle() * kDeg,
+            driver.road_wheel_angle() * kDeg, rpy.x() * kDeg, rpy.y() * kDeg, yaw * kDeg, yaw_rate * kDeg);
+        for (size_t a = 0; a < n_axles; ++a) put(",%.6g", axle_load[a] / 1e3);
+        for (size_t k = 0; k < n_wheels; ++k) put(",%.6g", fz[k] / 1e3);
+        for (size_t k = 0; k < n_wheels; ++k) put(",%d", lift[k]);
+        put(",%.6g,%.6g,%.6g,%.6g", margin, *driver.drive_torque() / 1e3, KingpinAngle(0) * kDeg,
+            KingpinAngle(1) * kDeg);
+        for (size_t a = 0; a < n_axles; ++a) put(",%.6g", ltr[a]);
         if (!frame_response.active()) std::fprintf(csv, "%s\n", line);
       }
       // elastic frame: deflection and stress hot spot at the output times
@@ -716,13 +741,18 @@ std::string LaneChangeJson(const LaneChangeResult& r) {
   add("max_roll_deg", JsonNumber(r.max_roll_deg));
   add("max_steering_wheel_deg", JsonNumber(r.max_steering_wheel_deg));
   add("max_yaw_rate_degps", JsonNumber(r.max_yaw_rate_deg));
-  add("min_front_axle_load", JsonNumber(r.min_axle_load[0]));
-  add("min_rear_axle_load", JsonNumber(r.min_axle_load[1]));
-  add("max_ltr_front", JsonNumber(r.max_abs_ltr[0]));
-  add("max_ltr_rear", JsonNumber(r.max_abs_ltr[1]));
-  add("rollover_margin", JsonNumber(1.0 - std::max(r.max_abs_ltr[0], r.max_abs_ltr[1])));
-  add("static_front_axle_load", JsonNumber(r.static_axle_load[0]));
-  add("static_rear_axle_load", JsonNumber(r.static_axle_load[1]));
+  // per axle: min_front_axle_load, ..., max_ltr_front, ..., static_front_axle_load, ...
+  const size_t n_axles = r.axle_names.size();
+  for (size_t a = 0; a < n_axles; ++a)
+    add(("min_" + r.axle_names[a] + "_axle_load").c_str(), JsonNumber(r.min_axle_load[a]));
+  double max_ltr = 0;
+  for (size_t a = 0; a < n_axles; ++a) {
+    add(("max_ltr_" + r.axle_names[a]).c_str(), JsonNumber(r.max_abs_ltr[a]));
+    max_ltr = std::max(max_ltr, r.max_abs_ltr[a]);
+  }
+  add("rollover_margin", JsonNumber(1.0 - max_ltr));
+  for (size_t a = 0; a < n_axles; ++a)
+    add(("static_" + r.axle_names[a] + "_axle_load").c_str(), JsonNumber(r.static_axle_load[a]));
   add("steps", std::to_string(r.steps));
   add("newton_iterations", std::to_string(r.newton_iterations));
   add("factorizations", std::to_string(r.factorizations));

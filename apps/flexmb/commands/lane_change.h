@@ -83,12 +83,13 @@ struct LaneChangeResult {
   double max_roll_deg = 0.0;          ///< max |roll| of the frame [deg]
   double max_steering_wheel_deg = 0.0;  ///< max |steering-wheel angle| [deg]
   double max_yaw_rate_deg = 0.0;      ///< max |yaw rate| [deg/s]
-  double min_axle_load[2] = {0, 0};   ///< smallest front, rear axle load [N]
-  /// Largest |load-transfer ratio| of the front and rear axle [-]: LTR =
+  std::vector<std::string> axle_names;  ///< the truck's axles, front to rear (AxleData::name)
+  std::vector<double> min_axle_load;   ///< smallest load of each axle [N]
+  /// Largest |load-transfer ratio| of each axle [-]: LTR =
   /// (Fz_left - Fz_right) / (Fz_left + Fz_right) of the axle's tire loads;
-  /// 1 when one side's wheels lift off (rollover margin: 1 - the larger).
-  double max_abs_ltr[2] = {0, 0};
-  double static_axle_load[2] = {0, 0};  ///< lever-rule static axle loads [N]
+  /// 1 when one side's wheels lift off (rollover margin: 1 - the largest).
+  std::vector<double> max_abs_ltr;
+  std::vector<double> static_axle_load;  ///< static axle loads (StaticAxleLoads) [N]
   long steps = 0;                     ///< accepted steps
   long newton_iterations = 0;         ///< Newton iterations of all step attempts
   long factorizations = 0;            ///< LU factorizations of the iteration matrix

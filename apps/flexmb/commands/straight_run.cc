@@ -121,7 +121,7 @@ StraightRunResult RunStraight(const StraightRunOptions& opt) {
     StraightRunFail(opt, "--run-up", "must be a time >= 0 [s]");
   f.run_up_time = opt.run_up_time;
   const double run_up = v0 * f.run_up_time;
-  auto profile = std::make_shared<RoadProfile>(StraightRunRoad(opt, 0.5 * (truck.front_track + truck.rear_track)));
+  auto profile = std::make_shared<RoadProfile>(StraightRunRoad(opt, 0.5 * (truck.axles.front().track + truck.axles.back().track)));
   const double road_length = profile->x.back();
   const double distance = opt.distance.value_or(road_length);
   if (!(distance > 0) || !std::isfinite(distance))
@@ -166,10 +166,11 @@ StraightRunResult RunStraight(const StraightRunOptions& opt) {
   model.solver = f.solver;
   const TruckHandles h = BuildTruck(truck, v0, f.mu, driver.steering_wheel_angle(), driver.drive_torque(), model,
                                     driver.brake_torque());
-  // the tires follow the left (FL, RL) and right (FR, RR) tracks
+  // the tires follow the left (FL, RL, ...) and right (FR, RR, ...) tracks
   const std::array<std::shared_ptr<const RoadSurface>, 2> surface = {std::make_shared<RoadSurface>(profile, 0),
                                                                       std::make_shared<RoadSurface>(profile, 1)};
-  for (int k = 0; k < 4; ++k) static_cast<Tire&>(*model.forces[h.tire_force[k]]).SetRoad(surface[k % 2]);
+  const size_t n_axles = truck.axles.size(), n_wheels = 2 * n_axles;
+  for (size_t k = 0; k < n_wheels; ++k) static_cast<Tire&>(*model.forces[h.tire_force[k]]).SetRoad(surface[k % 2]);
   // the mounts and springs on the frame: bushings and spring-dampers with marker i on it
   std::vector<int> mounts;
   for (size_t i = 0; i < model.forces.size(); ++i) {
@@ -185,8 +186,14 @@ StraightRunResult RunStraight(const StraightRunOptions& opt) {
   if (!opt.out_dir.empty()) {
     csv = std::fopen((std::filesystem::path(opt.out_dir) / "results.csv").string().c_str(), "w");
     if (!csv) throw InputError("cannot write results.csv", {opt.out_dir, 0, ""});
-    std::fprintf(csv, "time,x,y,speed_kmh,steering_wheel_angle_deg,drive_torque_kNm,road_fl_mm,road_fr_mm,road_rl_mm,"
-                      "road_rr_mm,fz_fl_kN,fz_fr_kN,fz_rl_kN,fz_rr_kN,front_axle_load_kN,rear_axle_load_kN");
+    std::fprintf(csv, "time,x,y,speed_kmh,steering_wheel_angle_deg,drive_torque_kNm");
+    for (const char* what : {"road_%s_mm", "fz_%s_kN"})
+      for (const AxleData& a : truck.axles)
+        for (int k = 0; k < 2; ++k) {
+          std::fprintf(csv, ",");
+          std::fprintf(csv, what, WheelName(a, k).substr(6).c_str());
+        }
+    for (const AxleData& a : truck.axles) std::fprintf(csv, ",%s_axle_load_kN", a.name.c_str());
     for (int i : mounts) std::fprintf(csv, ",%s_fz_kN", model.forces[static_cast<size_t>(i)]->name().c_str());
     std::fprintf(csv, "\n");
   }
@@ -197,7 +204,8 @@ StraightRunResult RunStraight(const StraightRunOptions& opt) {
     modal = std::make_unique<durability::ModelModalHistory>(opt.out_dir, model, written);
   }
 
-  std::array<StraightRunMoments, 4> tire_moments;
+  std::vector<StraightRunMoments> tire_moments(n_wheels);
+  std::vector<double> fz(n_wheels), road(n_wheels);  // per step, allocated once
   std::vector<StraightRunMoments> mount_moments(mounts.size());
   StraightRunMoments speed_moments;
   ForceEval fe;
@@ -215,7 +223,7 @@ StraightRunResult RunStraight(const StraightRunOptions& opt) {
       const double yaw = std::atan2(fr.R_WM(1, 0), fr.R_WM(0, 0));
       const Vec3 pf = ws.markers[h.front_axle_ref].p_WM, pr = ws.markers[h.rear_axle_ref].p_WM;
       const double speed = fr.v_WM.dot(Vec3(std::cos(yaw), std::sin(yaw), 0));
-      driver.Update(VehicleView{st.t, pf.x(), pr.x(), pr.y(), yaw, speed, truck.wheelbase, pf.y(), fr.w_WM.z()});
+      driver.Update(VehicleView{st.t, pf.x(), pr.x(), pr.y(), yaw, speed, Wheelbase(truck), pf.y(), fr.w_WM.z()});
       r.t_end = st.t;
       // recorded: from the front axle's arrival on the road
       const double x = pf.x() - run_up;
@@ -226,24 +234,24 @@ StraightRunResult RunStraight(const StraightRunOptions& opt) {
       r.distance = x;
       ++r.rows;
       speed_moments.Add(speed * 3.6);
-      double fz[4], road[4];
-      for (int k = 0; k < 4; ++k) {
+      for (size_t k = 0; k < n_wheels; ++k) {
         const MarkerState& wm = ws.markers[h.wheel_marker[k]];
         TireContact c;
         const Tire& tire = static_cast<const Tire&>(*model.forces[h.tire_force[k]]);
         tire.Wrench(wm.p_WM, wm.R_WM, wm.v_WM, wm.w_WM, &c);
         fz[k] = c.fz;
         double slope = 0.0;
-        surface[static_cast<size_t>(k % 2)]->Evaluate(wm.p_WM.x(), &road[k], &slope);
+        surface[k % 2]->Evaluate(wm.p_WM.x(), &road[k], &slope);
         road[k] += 0.0;  // -0 (the faded-in start) written as 0
-        tire_moments[static_cast<size_t>(k)].Add(c.fz);
+        tire_moments[k].Add(c.fz);
       }
-      if (csv)
-        std::fprintf(csv, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g", st.t, x,
-                     pf.y(), speed * 3.6, *driver.steering_wheel_angle() * 180.0 / std::numbers::pi,
-                     *driver.drive_torque() / 1e3, road[0] * 1e3, road[1] * 1e3, road[2] * 1e3, road[3] * 1e3,
-                     fz[0] / 1e3, fz[1] / 1e3, fz[2] / 1e3, fz[3] / 1e3, (fz[0] + fz[1]) / 1e3,
-                     (fz[2] + fz[3]) / 1e3);
+      if (csv) {
+        std::fprintf(csv, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g", st.t, x, pf.y(), speed * 3.6,
+                     *driver.steering_wheel_angle() * 180.0 / std::numbers::pi, *driver.drive_torque() / 1e3);
+        for (size_t k = 0; k < n_wheels; ++k) std::fprintf(csv, ",%.6g", road[k] * 1e3);
+        for (size_t k = 0; k < n_wheels; ++k) std::fprintf(csv, ",%.6g", fz[k] / 1e3);
+        for (size_t a = 0; a < n_axles; ++a) std::fprintf(csv, ",%.6g", (fz[2 * a] + fz[2 * a + 1]) / 1e3);
+      }
       for (size_t m = 0; m < mounts.size(); ++m) {
         const ForceElement& el = *model.forces[static_cast<size_t>(mounts[m])];
         el.Evaluate(ws.markers[el.marker_i], ws.markers[el.marker_j], st.t, fe);
@@ -270,8 +278,10 @@ StraightRunResult RunStraight(const StraightRunOptions& opt) {
   r.cpu_time_s = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
   r.steps = sim.stats().steps;
   r.mean_speed_kmh = speed_moments.mean;
-  const char* tire_names[4] = {"tire_fl", "tire_fr", "tire_rl", "tire_rr"};
-  for (int k = 0; k < 4; ++k) r.tires.push_back(tire_moments[static_cast<size_t>(k)].Result(tire_names[k]));
+  for (size_t k = 0; k < n_wheels; ++k) {
+    const AxleData& a = truck.axles[k / 2];
+    r.tires.push_back(tire_moments[k].Result("tire_" + WheelName(a, static_cast<int>(k % 2)).substr(6)));
+  }
   for (size_t m = 0; m < mounts.size(); ++m)
     r.mounts.push_back(mount_moments[m].Result(model.forces[static_cast<size_t>(mounts[m])]->name()));
   if (!opt.out_dir.empty()) {

@@ -29,21 +29,19 @@ void TruckModesFileSettings(const std::string& path, std::string& frame, double&
   mu = t["road_mu"] ? t["road_mu"].as<double>() : 0.8;
 }
 
-// 0: sprung parts, 1: front axle group, 2: rear axle group (by body name)
-int TruckModesGroup(const std::string& body) {
-  auto starts = [&body](const char* p) { return body.rfind(p, 0) == 0; };
-  if (starts("front_") || starts("knuckle") || starts("wheel_f")) return 1;
-  if (starts("rear_") || starts("wheel_r")) return 2;
-  return 0;
+// 0: sprung parts, 1: the front axle's group, 2: the other axles' (TruckHandles::body_axle)
+int TruckModesGroup(const vehicle::TruckHandles& h, size_t body) {
+  const int axle = body < h.body_axle.size() ? h.body_axle[body] : -1;
+  return axle < 0 ? 0 : axle == 0 ? 1 : 2;
 }
 
 // velocity coordinates of the rigid motions of the bodies of group g about
 // the point c: columns translation x, y, z, rotation about x, y, z (world)
-MatX TruckModesRigidBasis(const Model& m, const State& s, int g, const Vec3& c) {
+MatX TruckModesRigidBasis(const Model& m, const vehicle::TruckHandles& h, const State& s, int g, const Vec3& c) {
   MatX G = MatX::Zero(m.nv, 6);
   for (size_t b = 1; b < m.bodies.size(); ++b) {
     const Body& body = *m.bodies[b];
-    if (body.nv() < 6 || TruckModesGroup(body.name()) != g) continue;
+    if (body.nv() < 6 || TruckModesGroup(h, b) != g) continue;
     const double* q = s.q.data() + body.q_offset;
     const Vec3 p(q[0], q[1], q[2]);
     const Mat3 R = Eigen::Quaterniond(q[3], q[4], q[5], q[6]).normalized().toRotationMatrix();
@@ -121,11 +119,11 @@ std::vector<TruckModeName> NameTruckModes(const Model& m, const vehicle::TruckHa
   std::array<MatX, 3> G;
   std::array<MatX, 3> GMG;
   for (int g = 0; g < 3; ++g) {
-    const MatX G0 = TruckModesRigidBasis(m, s, g, Vec3::Zero());
+    const MatX G0 = TruckModesRigidBasis(m, h, s, g, Vec3::Zero());
     const MatX A0 = G0.transpose() * sys.M * G0;
     const double mass = A0(0, 0);
     const Vec3 c = mass > 0 ? Vec3(Vec3(-A0(2, 4), -A0(0, 5), -A0(1, 3)) / mass) : Vec3(Vec3::Zero());
-    G[g] = TruckModesRigidBasis(m, s, g, c);
+    G[g] = TruckModesRigidBasis(m, h, s, g, c);
     GMG[g] = G[g].transpose() * sys.M * G[g];
   }
   std::vector<std::string> kinds;
