@@ -120,12 +120,13 @@ def test_step_steer_yaw_rate_gain_against_the_single_track_model(cli, variant, t
 
 def test_straight_braking_deceleration_against_the_brake_torque(cli, source_dir, tmp_path):
     """Steady braking: a (m + I / (h r)) = T_f / h_f + T_r / h_r + f_r W, the
-    brake torque shared 0.4 / 0.6 front / rear (brakes.front_share) acting on
+    brake torque shared 0.4 / 0.6 front / rear (the axles' brake_share) acting on
     the loaded radii h = R0 - Fz / (n k) at the axle loads of the MFDD window,
     I the wheels' spin inertia, f_r the rolling resistance."""
     example = os.path.join(source_dir, "examples", "truck_lane_change")
     truck = yaml.safe_load(open(os.path.join(example, "truck.yaml")))["truck"]
-    tires = {k: yaml.safe_load(open(os.path.join(example, truck["tires"][k])))["tire"] for k in ("front", "rear")}
+    axles = {a["name"]: a for a in truck["axles"]}
+    tires = {k: yaml.safe_load(open(os.path.join(example, axles[k]["tire"])))["tire"] for k in ("front", "rear")}
     summary, rows = handling(cli, os.path.join(example, "truck.yaml"), tmp_path / "br", "--test", "braking",
                              "--speed", "60")
     assert summary["status"] == "ok"
@@ -138,9 +139,10 @@ def test_straight_braking_deceleration_against_the_brake_torque(cli, source_dir,
         fz = sum(r[left] + r[right] for r in window) / len(window) * 1e3 / 2
         t = tires[axle]
         h[axle] = float(t["unloaded_radius"]) - fz / (t["count"] * float(t["vertical_stiffness"]))
-    share = float(truck["brakes"]["front_share"])
+    share = float(axles["front"]["brake_share"])
+    assert share + float(axles["rear"]["brake_share"]) == 1.0
     tb = summary["brake_torque"]
-    inertia = 2 * float(truck["front_wheel"]["inertia"][1]) + 2 * float(truck["rear_wheel"]["inertia"][1])
+    inertia = 2 * float(axles["front"]["wheel"]["inertia"][1]) + 2 * float(axles["rear"]["wheel"]["inertia"][1])
     rolling = float(tires["front"]["rolling_resistance"])
     assert rolling == float(tires["rear"]["rolling_resistance"])
     force = share * tb / h["front"] + (1 - share) * tb / h["rear"] + rolling * w
@@ -218,21 +220,23 @@ def yaw_inertia(cli, work, truck, tires, tmp_path):
     for name in ("cab", "powertrain", "cargo"):
         p = truck[name]
         parts.append((num(p["mass"]), num(p["cg"][0]), num(p["cg"][1]), num(p["inertia"][2])))
-    L = num(truck["wheelbase"])
+    fa, ra = truck["axles"]
+    assert len(truck["axles"]) == 2 and num(fa["x"]) == 0.0
+    L = -num(ra["x"])
     tf, tr = tires["front"], tires["rear"]
     patch = lambda t: t["count"] * num(t["patch_mass"]) if num(t["relaxation_length"]) > 0 else 0.0  # noqa: E731
-    fs, rs = truck["front_suspension"], truck["rear_suspension"]
+    fs, rs = fa["suspension"], ra["suspension"]
     hub = lambda s: 1.0 if num(s.get("extra_arm_height", 0)) > 0 else 0.0  # noqa: E731  (truck.h kAxleHubMass)
-    parts.append((num(truck["front_axle"]["mass"]) + hub(fs), 0.0, 0.0, num(truck["front_axle"]["inertia"][2])))
-    parts.append((num(truck["rear_axle"]["mass"]) + hub(rs), -L, 0.0, num(truck["rear_axle"]["inertia"][2])))
+    parts.append((num(fa["axle"]["mass"]) + hub(fs), 0.0, 0.0, num(fa["axle"]["inertia"][2])))
+    parts.append((num(ra["axle"]["mass"]) + hub(rs), -L, 0.0, num(ra["axle"]["inertia"][2])))
     for side in (1, -1):
-        parts.append((num(truck["front_wheel"]["mass"]) + patch(tf), 0.0, side * num(truck["front_track"]) / 2,
-                      num(truck["front_wheel"]["inertia"][2])))
+        parts.append((num(fa["wheel"]["mass"]) + patch(tf), 0.0, side * num(fa["track"]) / 2,
+                      num(fa["wheel"]["inertia"][2])))
         parts.append((num(truck["knuckle"]["mass"]), 0.0,
-                      side * (num(truck["front_track"]) / 2 - num(truck["kingpin_offset"]) / 2),
+                      side * (num(fa["track"]) / 2 - num(truck["kingpin_offset"]) / 2),
                       num(truck["knuckle"]["inertia"][2])))
-        parts.append((num(truck["rear_wheel"]["mass"]) + patch(tr), -L, side * num(truck["rear_track"]) / 2,
-                      num(truck["rear_wheel"]["inertia"][2])))
+        parts.append((num(ra["wheel"]["mass"]) + patch(tr), -L, side * num(ra["track"]) / 2,
+                      num(ra["wheel"]["inertia"][2])))
     arm = num(truck["arm"]["mass"])
     parts.append((arm, num(fs["arm_length"]) / 2, 0.0, 0.0))
     parts.append((arm, -L + num(rs["arm_length"]) / 2, 0.0, 0.0))

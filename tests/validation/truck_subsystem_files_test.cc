@@ -9,6 +9,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -21,8 +22,17 @@ namespace truck_subsystem_files_test {
 
 namespace fs = std::filesystem;
 
-// the example's lane-change file with the truck's `moved` keys in files of
-// their own; returns the new lane-change file's path
+// the truck map's entry at `key`: a key of the truck map, or
+// "axles.<index>.<key>" of an axle's map; returns its parent map and its key
+std::pair<YAML::Node, std::string> TruckEntry(YAML::Node truck, const std::string& key) {
+  if (!key.starts_with("axles.")) return {truck, key};
+  const size_t dot = key.find('.', 6);
+  return {truck["axles"][std::stoi(key.substr(6, dot - 6))], key.substr(dot + 1)};
+}
+
+// the example's lane-change file with the truck's `moved` entries
+// (TruckEntry) in files of their own, named after the entry with '.' as
+// '_'; returns the new lane-change file's path
 std::string SplitTruck(const std::string& dir, const std::vector<std::pair<std::string, std::string>>& moved) {
   fs::create_directories(dir);
   const std::string example = std::string(FLEXMB_SOURCE_DIR) + "/examples/truck_lane_change/";
@@ -30,10 +40,13 @@ std::string SplitTruck(const std::string& dir, const std::vector<std::pair<std::
   for (const char* tire : {"tire_11r22_5.yaml", "tire_11r22_5_twin.yaml"})
     fs::copy_file(example + tire, dir + "/" + tire, fs::copy_options::overwrite_existing);
   for (const auto& [key, kind] : moved) {
+    auto [parent, leaf] = TruckEntry(root["truck"], key);
+    std::string name = key;
+    std::replace(name.begin(), name.end(), '.', '_');
     YAML::Node file;
-    file[kind] = root["truck"][key];
-    std::ofstream(dir + "/" + key + ".yaml") << "# " << key << " of the example truck\n" << YAML::Dump(file) << "\n";
-    root["truck"][key] = key + ".yaml";
+    file[kind] = YAML::Clone(parent[leaf]);
+    std::ofstream(dir + "/" + name + ".yaml") << "# " << key << " of the example truck\n" << YAML::Dump(file) << "\n";
+    parent[leaf] = name + ".yaml";
   }
   const std::string path = dir + "/truck_split.yaml";
   std::ofstream(path) << YAML::Dump(root) << "\n";
@@ -51,8 +64,9 @@ std::string ErrorOf(const std::string& path) {
 
 TEST(TruckSubsystemFiles, SplitFileIsTheSameTruck) {
   const std::string dir = ::testing::TempDir() + "truck_split";
-  const std::string split = SplitTruck(dir, {{"cab", "part"}, {"rear_suspension", "suspension"},
-                                             {"steering", "steering"}, {"brakes", "brakes"}});
+  const std::string split = SplitTruck(dir, {{"cab", "part"}, {"axles.1.suspension", "suspension"},
+                                             {"axles.1.wheel", "part"}, {"steering", "steering"},
+                                             {"brakes", "brakes"}});
   const TruckData a = LoadLaneChangeTruck(TruckFile()), b = LoadLaneChangeTruck(split);
   EXPECT_EQ(b.cab.mass, a.cab.mass);
   EXPECT_EQ(b.cab.cg, a.cab.cg);
@@ -83,29 +97,29 @@ TEST(TruckSubsystemFiles, SplitFileIsTheSameTruck) {
 
 TEST(TruckSubsystemFiles, ErrorsNameTheSubsystemFile) {
   const std::string dir = ::testing::TempDir() + "truck_split_bad";
-  const std::string split = SplitTruck(dir, {{"front_suspension", "suspension"}});
+  const std::string split = SplitTruck(dir, {{"axles.0.suspension", "suspension"}});
   // an unknown key in the suspension file: that file and its line
   std::string text;
   {
-    std::ifstream in(dir + "/front_suspension.yaml");
+    std::ifstream in(dir + "/axles_0_suspension.yaml");
     text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   }
   const size_t at = text.find("spring_damping");
   ASSERT_NE(at, std::string::npos);
   std::string bad = text;
   bad.replace(at, std::string("spring_damping").size(), "spring_dampning");
-  std::ofstream(dir + "/front_suspension.yaml") << bad;
+  std::ofstream(dir + "/axles_0_suspension.yaml") << bad;
   std::string e = ErrorOf(split);
-  EXPECT_NE(e.find("front_suspension.yaml:"), std::string::npos) << e;
+  EXPECT_NE(e.find("axles_0_suspension.yaml:"), std::string::npos) << e;
   EXPECT_NE(e.find("spring_dampning"), std::string::npos) << e;
   EXPECT_EQ(e.find("truck_split.yaml"), std::string::npos) << e;
   // the wrong top-level kind
-  std::ofstream(dir + "/front_suspension.yaml") << "steering:\n  ratio: 20\n";
+  std::ofstream(dir + "/axles_0_suspension.yaml") << "steering:\n  ratio: 20\n";
   e = ErrorOf(split);
-  EXPECT_NE(e.find("front_suspension.yaml:"), std::string::npos) << e;
+  EXPECT_NE(e.find("axles_0_suspension.yaml:"), std::string::npos) << e;
   EXPECT_NE(e.find("'suspension'"), std::string::npos) << e;
   // a file that is not there: the truck file's line
-  fs::remove(dir + "/front_suspension.yaml");
+  fs::remove(dir + "/axles_0_suspension.yaml");
   e = ErrorOf(split);
   EXPECT_NE(e.find("truck_split.yaml:"), std::string::npos) << e;
   EXPECT_NE(e.find("no suspension file"), std::string::npos) << e;
