@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "flexmb/solver/simulator.h"
 #include "apps/flexmb/commands/lane_change.h"
@@ -19,7 +20,7 @@ inline std::string TruckFile() { return std::string(FLEXMB_SOURCE_DIR) + "/examp
 /// Sampled vehicle quantities at one accepted step.
 struct TruckSample {
   double t = 0, speed = 0, yaw_rate = 0, lateral_acceleration = 0, roll = 0;
-  double axle_load[2] = {0, 0};
+  std::vector<double> axle_load;  ///< per axle, front to rear [N]
 };
 
 /// Runs the truck at `speed` [m/s] with the road-wheel angle ramped to
@@ -48,7 +49,8 @@ inline void RunTruck(const TruckData& d, double speed, double road_angle, double
     s.yaw_rate = fr.w_WM.z();
     s.lateral_acceleration = ws.vdot.segment<3>(vo).dot(ey);
     s.roll = std::atan2(fr.R_WM(2, 1), fr.R_WM(2, 2));
-    for (int k = 0; k < 4; ++k) {
+    s.axle_load.assign(d.axles.size(), 0.0);
+    for (size_t k = 0; k < h.wheel_marker.size(); ++k) {
       const MarkerState& w = ws.markers[h.wheel_marker[k]];
       TireContact c;
       static_cast<const Tire&>(*m.forces[h.tire_force[k]]).Wrench(w.p_WM, w.R_WM, w.v_WM, w.w_WM, &c);
