@@ -1,7 +1,7 @@
 #include "flexmb/vehicle/single_track.h"
 
 #include <cmath>
-#include <numeric>
+#include <stdexcept>
 
 #include <Eigen/Dense>
 
@@ -17,76 +17,90 @@ double SingleTrack::SteeringWheelAngleFor(double ay, double v, double g) const {
   return ay / (v * YawRateGain(v, g));
 }
 
+double SingleTrack::CentreOfMassX() const {
+  double w = 0, wx = 0;
+  for (const Axle& a : axles) {
+    w += a.load;
+    wx += a.load * a.x;
+  }
+  return wx / w;
+}
+
+void SingleTrack::SetSteadyState(double g) {
+  const double xc = CentreOfMassX();
+  double s0 = 0, s1 = 0, q0 = 0, q1 = 0, c_s = 0, lever_s = 0;
+  int steered = 0;
+  for (const Axle& a : axles) {
+    const double p = a.x - xc, c = a.cornering_stiffness;
+    s0 += c;
+    s1 += c * p;
+    q0 += c * (p - a.trail);
+    q1 += c * p * (p - a.trail);
+    if (a.steered) {
+      ++steered;
+      c_s = c;
+      lever_s = p - a.trail;
+    }
+  }
+  if (steered != 1) throw std::invalid_argument("single-track model: exactly one axle must be steered");
+  const double den = c_s * (q0 - s0 * lever_s);
+  wheelbase = (s1 * q0 - s0 * q1) / den;
+  understeer_gradient = g * mass * q0 / den;
+}
+
 SingleTrack::Response SingleTrack::FrequencyResponse(double f, double v, double x_point) const {
   using C = std::complex<double>;
-  const double W = axle_load[0] + axle_load[1];
-  const double a = wheelbase * axle_load[1] / W, b = wheelbase * axle_load[0] / W;
+  const double xc = CentreOfMassX();
   const C s(0.0, 2.0 * 3.14159265358979323846 * f);
-  // unknowns (v_y, r, F_f, F_r) for a road-wheel angle of 1 rad
-  Eigen::Matrix<C, 4, 4> A = Eigen::Matrix<C, 4, 4>::Zero();
-  Eigen::Matrix<C, 4, 1> rhs = Eigen::Matrix<C, 4, 1>::Zero();
+  // unknowns (v_y, r, F_1, ..., F_n) for a road-wheel angle of 1 rad
+  const int n = static_cast<int>(axles.size());
+  Eigen::Matrix<C, Eigen::Dynamic, Eigen::Dynamic> A = Eigen::Matrix<C, Eigen::Dynamic, Eigen::Dynamic>::Zero(2 + n, 2 + n);
+  Eigen::Matrix<C, Eigen::Dynamic, 1> rhs = Eigen::Matrix<C, Eigen::Dynamic, 1>::Zero(2 + n);
   A(0, 0) = mass * s;
   A(0, 1) = mass * v;
-  A(0, 2) = -1.0;
-  A(0, 3) = -1.0;
   A(1, 1) = yaw_inertia * s;
-  A(1, 2) = -(a - trail[0]);
-  A(1, 3) = b + trail[1];
-  A(2, 0) = cornering_stiffness[0] / v;
-  A(2, 1) = cornering_stiffness[0] * a / v;
-  A(2, 2) = relaxation_length[0] / v * s + 1.0;
-  rhs(2) = cornering_stiffness[0];
-  A(3, 0) = cornering_stiffness[1] / v;
-  A(3, 1) = -cornering_stiffness[1] * b / v;
-  A(3, 3) = relaxation_length[1] / v * s + 1.0;
-  const Eigen::Matrix<C, 4, 1> x = A.partialPivLu().solve(rhs);
+  for (int i = 0; i < n; ++i) {
+    const Axle& a = axles[static_cast<size_t>(i)];
+    const double p = a.x - xc;
+    A(0, 2 + i) = -1.0;
+    A(1, 2 + i) = -(p - a.trail);
+    A(2 + i, 0) = a.cornering_stiffness / v;
+    A(2 + i, 1) = a.cornering_stiffness * p / v;
+    A(2 + i, 2 + i) = a.relaxation_length / v * s + 1.0;
+    if (a.steered) rhs(2 + i) = a.cornering_stiffness;
+  }
+  const Eigen::Matrix<C, Eigen::Dynamic, 1> x = A.partialPivLu().solve(rhs);
   // per steering-wheel angle; a_y at the point: centre of mass plus r' times the lever
   const C r = x(1) / steering_ratio, vy = x(0) / steering_ratio;
-  return {r, s * vy + v * r + s * r * (x_point + a)};
+  return {r, s * vy + v * r + s * r * (x_point - xc)};
 }
 
 SingleTrack TruckSingleTrack(const TruckData& d, double g) {
   SingleTrack s;
-  const double L = Wheelbase(d);
-  s.wheelbase = L;
   s.steering_ratio = d.steering_ratio;
-  // axle 0 the front, the others one rear axle at x = -L (a bogie's trunnion)
   const std::vector<double> loads = StaticAxleLoads(d, g);
-  const std::array<double, 2> w{loads[0], std::accumulate(loads.begin() + 1, loads.end(), 0.0)};
-  double trail_rear = 0, relax_rear = 0;
+  double weight = 0;
   for (size_t i = 0; i < d.axles.size(); ++i) {
-    const TireData& td = d.axles[i].tire;
+    const AxleData& ax = d.axles[i];
+    const TireData& td = ax.tire;
     const Tire tire("reference", td, 1.0);
+    SingleTrack::Axle a;
+    a.x = ax.x;
+    a.load = loads[i];
+    a.steered = ax.steered;
     // per side: a set of td.count tires sharing the wheel's load
-    const double c = 2.0 * td.count * tire.CorneringStiffness(0.5 * loads[i] / td.count);
+    a.cornering_stiffness = 2.0 * td.count * tire.CorneringStiffness(0.5 * loads[i] / td.count);
+    a.trail = td.trail;
     // relaxation length at the static load: C(F_z) / k with k = C(F_z0) / sigma_0
-    const double sigma = td.relaxation_length * tire.CorneringStiffness(0.5 * loads[i] / td.count) /
-                         tire.CorneringStiffness(td.nominal_load);
-    const int a = i == 0 ? 0 : 1;
-    s.cornering_stiffness[a] += c;
-    if (a == 0) {
-      s.trail[0] = td.trail;
-      s.relaxation_length[0] = sigma;
-    } else {
-      // the rear group's trail and relaxation length weighted by cornering stiffness
-      trail_rear += c * td.trail;
-      relax_rear += c * sigma;
-    }
+    a.relaxation_length = td.relaxation_length * tire.CorneringStiffness(0.5 * loads[i] / td.count) /
+                          tire.CorneringStiffness(td.nominal_load);
+    s.axles.push_back(a);
+    weight += loads[i];
   }
-  s.trail[1] = trail_rear / s.cornering_stiffness[1];
-  s.relaxation_length[1] = relax_rear / s.cornering_stiffness[1];
-  s.axle_load[0] = w[0];
-  s.axle_load[1] = w[1];
-  // centre of mass: a behind the front axle, b ahead of the rear one
-  const double weight = w[0] + w[1], a = L * w[1] / weight, b = L * w[0] / weight;
-  const double arm = L - s.trail[0] + s.trail[1];
-  const double front = weight * (b + s.trail[1]) / arm, rear = weight * (a - s.trail[0]) / arm;
-  s.understeer_gradient = front / s.cornering_stiffness[0] - rear / s.cornering_stiffness[1];
-
-  // mass and yaw inertia about the centre of mass at x = -a: every part's
-  // own moment plus m (dx^2 + dy^2)
   s.mass = weight / g;
-  const double xc = -a;
+
+  // yaw inertia about the centre of mass: every part's own moment plus m (dx^2 + dy^2)
+  const double xc = s.CentreOfMassX();
   double inertia = 0;
   auto add = [&](double mass, double x, double y, double own) {
     inertia += own + mass * ((x - xc) * (x - xc) + y * y);
@@ -109,6 +123,7 @@ SingleTrack TruckSingleTrack(const TruckData& d, double g) {
   if (d.steering_linkage && d.steering_column)
     add(d.column_mass, d.drag_link_length - 0.5 * d.column_length * std::sin(d.column_inclination), 0.0, 0.0);
   s.yaw_inertia = inertia;
+  s.SetSteadyState(g);
   return s;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 /// \file single_track.h
-/// The linear single-track ("bicycle") model of a two-axle vehicle in steady
-/// state (Wong, Theory of Ground Vehicles, 4th ed., sec. 5.2; Gillespie,
+/// The linear single-track ("bicycle") model of a vehicle with two or more
+/// axles in steady state (Wong, Theory of Ground Vehicles, 4th ed., sec. 5.2; Gillespie,
 /// Fundamentals of Vehicle Dynamics, ch. 6): the reference the handling
 /// tests (apps/flexmb/commands/handling.h) print beside the truck's results,
 /// so that a user sees how much of the response is the axles' tires and
@@ -9,43 +9,66 @@
 /// and load transfer).
 
 #include <complex>
+#include <vector>
 
 #include "flexmb/vehicle/truck.h"
 
 namespace flexmb::vehicle {
 
-/// Steady-state coefficients of the single-track model.
+/// The linear single-track model of a vehicle with any number of axles.
 struct SingleTrack {
-  double wheelbase = 0.0;          ///< L [m]
-  double axle_load[2] = {0, 0};    ///< static front, rear axle load W [N]
-  double cornering_stiffness[2] = {0, 0};  ///< front, rear axle C (both sides) [N/rad]
-  double trail[2] = {0, 0};        ///< front, rear pneumatic trail t at zero slip [m]
-  /// Understeer gradient K [rad] per g of lateral acceleration: delta = L /
-  /// R + K a_y / g. The tires' aligning moments -t F_y act on the vehicle,
-  /// so the lateral forces balance about points t behind the axles:
-  /// F_yf (a - t_f) = F_yr (b + t_r), F_yf + F_yr = m a_y, and K = F_yf' /
-  /// C_f - F_yr' / C_r with F' the axle forces per g (Pacejka, Tire and
-  /// Vehicle Dynamics, 3rd ed., sec. 1.3; t = 0 gives W_f / C_f - W_r / C_r).
+  /// One axle (both sides lumped on the centre line).
+  struct Axle {
+    double x = 0.0;                ///< position along the vehicle's x, the first axle at 0 [m]
+    double load = 0.0;             ///< static axle load W [N]
+    double cornering_stiffness = 0.0;  ///< C of both sides [N/rad]
+    double trail = 0.0;            ///< pneumatic trail t at zero slip [m]
+    /// Relaxation length of the axle's tires at their static load [m]
+    /// (sigma = C / k, the lateral carcass stiffness k set at the nominal
+    /// load: Tire); 0: the lateral force follows the slip angle at once.
+    double relaxation_length = 0.0;
+    bool steered = false;          ///< turned by the road-wheel angle
+  };
+  std::vector<Axle> axles;         ///< front to rear
+  /// Equivalent wheelbase L [m] and understeer gradient K [rad per g of
+  /// lateral acceleration] of the steady turn, delta = L / R + K a_y / g
+  /// (SetSteadyState). Two axles: L the wheelbase and K = F_yf' / C_f -
+  /// F_yr' / C_r, the tires' aligning moments -t F_y acting on the vehicle
+  /// so that the lateral forces balance about points t behind the axles,
+  /// F_yf (a - t_f) = F_yr (b + t_r), F_yf + F_yr = m a_y (Pacejka, Tire and
+  /// Vehicle Dynamics, 3rd ed., sec. 1.3; t = 0 gives W_f / C_f - W_r /
+  /// C_r). More axles: the same two balances with every axle's force, which
+  /// makes L longer than the distance to the rear axles' centre (a tandem
+  /// resists the turn; docs/validation.md, "Multi-axle single-track model").
+  double wheelbase = 0.0;
   double understeer_gradient = 0.0;
   double steering_ratio = 1.0;     ///< steering-wheel / road-wheel angle [-]
   double mass = 0.0;               ///< total mass m [kg]
   /// Yaw moment of inertia about the vertical through the centre of mass
   /// [kg m^2] (all parts' own moments plus their masses' offsets).
   double yaw_inertia = 0.0;
-  /// Relaxation length of each axle's tires at their static load [m]
-  /// (sigma = C / k, the lateral carcass stiffness k set at the nominal
-  /// load: Tire); 0: the lateral force follows the slip angle at once.
-  double relaxation_length[2] = {0, 0};
+
+  /// Sets wheelbase and understeer_gradient from the axles and the mass:
+  /// with p_i the axles' positions from the centre of mass (x_c = sum W_i
+  /// x_i / W), the lateral balance sum F_i = m v^2 / R and the yaw balance
+  /// sum F_i (p_i - t_i) = 0 with F_i = C_i (delta_i - beta - p_i / R) give
+  /// delta R = (m v^2 Q0 + S1 Q0 - S0 Q1) / (C_s (Q0 - S0 (p_s - t_s)))
+  /// with S0 = sum C, S1 = sum C p, Q0 = sum C (p - t), Q1 = sum C p (p -
+  /// t), s the steered axle (one). Throws std::invalid_argument without
+  /// exactly one steered axle.
+  void SetSteadyState(double g = 9.81);
+  /// Centre of mass along the vehicle's x from the axle loads [m].
+  double CentreOfMassX() const;
 
   /// Linear response to a sinusoidal steering-wheel angle of frequency f
   /// [Hz] at speed v [m/s], per unit angle: yaw rate [1/s] and lateral
   /// acceleration [m/s^2] at the point x_point of the vehicle frame (x
   /// forward from the front axle). The dynamic single-track model (Mitschke
   /// and Wallentowitz, Dynamik der Kraftfahrzeuge, ch. 30; Pacejka, sec.
-  /// 1.3): lateral and yaw balance m (dv/dt + v r) = F_f + F_r, I r' =
-  /// (a - t_f) F_f - (b + t_r) F_r with each axle's force lagging its slip
-  /// angle, (sigma / v) dF/dt + F = C alpha, alpha_f = delta - (v_y + a r) /
-  /// v, alpha_r = -(v_y - b r) / v. At f -> 0 it is YawRateGain.
+  /// 1.3): lateral and yaw balance m (dv/dt + v r) = sum F_i, I r' = sum
+  /// (p_i - t_i) F_i with each axle's force lagging its slip angle, (sigma_i
+  /// / v) dF_i/dt + F_i = C_i alpha_i, alpha_i = delta_i - (v_y + p_i r) / v
+  /// (two axles: p = a, -b). At f -> 0 it is YawRateGain.
   struct Response {
     std::complex<double> yaw_rate;              ///< [1/s per rad]
     std::complex<double> lateral_acceleration;  ///< [m/s^2 per rad]
@@ -60,11 +83,9 @@ struct SingleTrack {
   double SteeringWheelAngleFor(double ay, double v, double g = 9.81) const;
 };
 
-/// The single-track model of the truck `d`: the static axle loads
-/// (StaticAxleLoads) and each axle's cornering stiffness at its static tire
-/// load (Tire::CorneringStiffness of its tire set, both sides); the axles
-/// behind the first act as one rear axle at x = -Wheelbase(d) (a bogie's
-/// trunnion) with their summed loads and cornering stiffnesses; mass and
+/// The single-track model of the truck `d`: every axle with its static load
+/// (StaticAxleLoads) and its cornering stiffness at that load
+/// (Tire::CorneringStiffness of its tire set, both sides); mass and
 /// yaw inertia summed by hand over the truck's parts (sprung parts with
 /// their own moments, wheels and knuckles at their track positions).
 SingleTrack TruckSingleTrack(const TruckData& d, double g = 9.81);

@@ -225,7 +225,7 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
   auto steer = std::make_shared<double>(0.0), torque = std::make_shared<double>(0.0);
   auto brake = std::make_shared<double>(0.0);
   const double brake_torque =
-      opt.brake_torque.value_or((ref.axle_load[0] + ref.axle_load[1]) / g * opt.decel * 0.5 *
+      opt.brake_torque.value_or(ref.mass * opt.decel * 0.5 *
                                 (f.truck.axles.front().tire.unloaded_radius + f.truck.axles.back().tire.unloaded_radius));
   model.name = "truck_handling_" + opt.test;
   model.solver = f.solver;
@@ -373,8 +373,11 @@ HandlingResult RunHandlingTest(const HandlingOptions& opt) {
   add("steering_ratio", ref.steering_ratio);
   add("wheelbase", ref.wheelbase);
   add("single_track_understeer_gradient_deg_per_g", ref.understeer_gradient * kDeg);
-  add("single_track_front_cornering_stiffness", ref.cornering_stiffness[0]);
-  add("single_track_rear_cornering_stiffness", ref.cornering_stiffness[1]);
+  // the front axle's, the other axles' together
+  double rear_stiffness = 0;
+  for (size_t i = 1; i < ref.axles.size(); ++i) rear_stiffness += ref.axles[i].cornering_stiffness;
+  add("single_track_front_cornering_stiffness", ref.axles[0].cornering_stiffness);
+  add("single_track_rear_cornering_stiffness", rear_stiffness);
   if (step && r.completed) {
     const double t_ref = opt.step_time + 0.5 * opt.rise_time;
     const StepResponse yr = Respond(rows, &Row::yaw_rate, t_ref), ay = Respond(rows, &Row::ay, t_ref);

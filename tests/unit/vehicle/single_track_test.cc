@@ -4,11 +4,15 @@
 // there; without relaxation and trail the classical second-order response
 // (Mitschke and Wallentowitz, ch. 30: the characteristic polynomial
 // m I v s^2 + (m (a^2 C_f + b^2 C_r) + I (C_f + C_r)) s + ..., checked here by
-// the yaw rate's transfer function evaluated by hand).
+// the yaw rate's transfer function evaluated by hand); the steady state of
+// two axles against the classical formulas and of a tandem (three axles)
+// against its equivalent wheelbase and a direct solve of the two balances.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <complex>
+
+#include <Eigen/Dense>
 
 #include "flexmb/vehicle/single_track.h"
 
@@ -17,21 +21,61 @@ namespace {
 
 SingleTrack SingleTrackExample() {
   SingleTrack s;
-  s.wheelbase = 4.2;
-  s.axle_load[0] = 39000.0;
-  s.axle_load[1] = 78000.0;
-  s.cornering_stiffness[0] = 3.0e5;
-  s.cornering_stiffness[1] = 9.0e5;
-  s.trail[0] = 0.045;
-  s.trail[1] = 0.045;
+  s.axles = {{0.0, 39000.0, 3.0e5, 0.045, 0.55, true}, {-4.2, 78000.0, 9.0e5, 0.045, 0.5, false}};
   s.steering_ratio = 20.0;
   s.mass = 117000.0 / 9.81;
   s.yaw_inertia = 58000.0;
-  s.relaxation_length[0] = 0.55;
-  s.relaxation_length[1] = 0.5;
-  const double W = 117000.0, a = 4.2 * 78000.0 / W, b = 4.2 * 39000.0 / W, arm = 4.2;
-  s.understeer_gradient = W * (b + 0.045) / arm / 3.0e5 - W * (a - 0.045) / arm / 9.0e5;
+  s.SetSteadyState(9.81);
   return s;
+}
+
+TEST(SingleTrack, TwoAxlesTheClassicalWheelbaseAndUndersteerGradient) {
+  const SingleTrack s = SingleTrackExample();
+  // the forces balance about the points t behind the axles: F_f (a - t) = F_r (b + t)
+  const double W = 117000.0, a = 4.2 * 78000.0 / W, b = 4.2 * 39000.0 / W, arm = 4.2;
+  const double K = W * (b + 0.045) / arm / 3.0e5 - W * (a - 0.045) / arm / 9.0e5;
+  EXPECT_NEAR(s.wheelbase, 4.2, 1e-14);
+  EXPECT_NEAR(s.understeer_gradient, K, 1e-14);
+  EXPECT_NEAR(s.CentreOfMassX(), -a, 1e-14);
+}
+
+// A tandem (6x4): three axles, no trail. At low speed the turn needs the
+// equivalent wheelbase L_eq = L + (1 + C_t / C_1) C_2 C_3 d^2 / (C_t^2 L)
+// (L to the rear axles' stiffness-weighted centre, d their spacing, C_t =
+// C_2 + C_3: the tandem scrubs and resists the turn; derived from the two
+// balances at m v^2 / R -> 0, docs/validation.md); at speed the steady
+// state of the two balances solved as a 2 x 2 system here.
+TEST(SingleTrack, TandemEquivalentWheelbaseAndSteadyTurn) {
+  SingleTrack s;
+  const double c1 = 3.0e5, c2 = 5.0e5, c3 = 4.0e5, x2 = -3.6, x3 = -4.9;
+  s.axles = {{0.0, 60000.0, c1, 0.0, 0.0, true}, {x2, 85000.0, c2, 0.0, 0.0, false}, {x3, 80000.0, c3, 0.0, 0.0, false}};
+  s.mass = 225000.0 / 9.81;
+  s.steering_ratio = 20.0;
+  s.SetSteadyState(9.81);
+  const double ct = c2 + c3, L = -(c2 * x2 + c3 * x3) / ct, d = x2 - x3;
+  EXPECT_NEAR(s.wheelbase, L + (1 + ct / c1) * c2 * c3 * d * d / (ct * ct * L), 1e-12);
+  EXPECT_GT(s.wheelbase, L + 0.1);
+  for (const double v : {5.0, 15.0, 25.0}) {
+    // unknowns (beta, rho = 1 / R) for delta = 1: sum F = m v^2 rho, sum F p = 0
+    const double xc = s.CentreOfMassX();
+    Eigen::Matrix2d A = Eigen::Matrix2d::Zero();
+    Eigen::Vector2d rhs = Eigen::Vector2d::Zero();
+    for (const SingleTrack::Axle& ax : s.axles) {
+      const double p = ax.x - xc, c = ax.cornering_stiffness, delta = ax.steered ? 1.0 : 0.0;
+      // F = c (delta - beta - p rho)
+      A(0, 0) += c;
+      A(0, 1) += c * p;
+      rhs(0) += c * delta;
+      A(1, 0) += c * p;
+      A(1, 1) += c * p * p;
+      rhs(1) += c * p * delta;
+    }
+    A(0, 1) += s.mass * v * v;
+    const Eigen::Vector2d x = A.partialPivLu().solve(rhs);
+    const double gain = v * x(1) / s.steering_ratio;  // yaw rate per steering-wheel angle
+    EXPECT_NEAR(s.YawRateGain(v), gain, 1e-12 * gain) << v;
+    EXPECT_NEAR(s.FrequencyResponse(1e-7, v, 0.0).yaw_rate.real(), gain, 1e-9 * gain) << v;
+  }
 }
 
 TEST(SingleTrack, FrequencyResponseTendsToTheSteadyGain) {
@@ -46,9 +90,8 @@ TEST(SingleTrack, FrequencyResponseTendsToTheSteadyGain) {
 
 TEST(SingleTrack, WithoutLagAndTrailTheClassicalTransferFunction) {
   SingleTrack s = SingleTrackExample();
-  s.relaxation_length[0] = s.relaxation_length[1] = 0.0;
-  s.trail[0] = s.trail[1] = 0.0;
-  const double m = s.mass, I = s.yaw_inertia, cf = s.cornering_stiffness[0], cr = s.cornering_stiffness[1];
+  for (SingleTrack::Axle& a : s.axles) a.relaxation_length = a.trail = 0.0;
+  const double m = s.mass, I = s.yaw_inertia, cf = s.axles[0].cornering_stiffness, cr = s.axles[1].cornering_stiffness;
   const double a = 4.2 * 78000.0 / 117000.0, b = 4.2 - a, v = 15.0, L = 4.2;
   for (const double f : {0.1, 0.5, 1.0, 2.0}) {
     const std::complex<double> sj(0.0, 2 * M_PI * f);
