@@ -127,4 +127,8 @@ SingleTrack TruckSingleTrack(const TruckData& d, double g) {
   return s;
 }
 
+double DriverWheelbase(const TruckData& d, double g) {
+  return d.axles.size() == 2 ? Wheelbase(d) : TruckSingleTrack(d, g).wheelbase;
+}
+
 }  // namespace flexmb::vehicle

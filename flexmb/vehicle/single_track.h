@@ -90,4 +90,10 @@ struct SingleTrack {
 /// their own moments, wheels and knuckles at their track positions).
 SingleTrack TruckSingleTrack(const TruckData& d, double g = 9.81);
 
+/// The wheelbase the driver steers by (VehicleView::wheelbase) [m]: two
+/// axles the wheelbase, more axles the single-track model's equivalent
+/// wheelbase (a tandem resists the turn: the same curvature needs more
+/// road-wheel angle than the distance to its trunnion gives).
+double DriverWheelbase(const TruckData& d, double g = 9.81);
+
 }  // namespace flexmb::vehicle

@@ -29,6 +29,7 @@
 #include "flexmb/solver/simulator.h"
 #include "flexmb/vehicle/driver.h"
 #include "flexmb/vehicle/lane_change_course.h"
+#include "flexmb/vehicle/single_track.h"
 #include "flexmb/vehicle/truck.h"
 #include "flexmb/vehicle/truck_frame.h"
 #include "flexmb/results/truck_animation.h"
@@ -526,7 +527,7 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
     modal = std::make_unique<durability::ModelModalHistory>(opt.out_dir, model, written);
   }
   FrameResponse frame_response(h.elastic ? static_cast<const FlexibleBody*>(frame_body) : nullptr, csv);
-  const double wheelbase = Wheelbase(f.truck);
+  const double wheelbase = DriverWheelbase(f.truck, -model.gravity_W.z());
   std::vector<double> fz(n_wheels), axle_load(n_axles), ltr(n_axles);  // per step, allocated once
   std::vector<int> lift(n_wheels);
   char line[FrameResponse::kRowChars];

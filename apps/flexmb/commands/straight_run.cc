@@ -20,6 +20,7 @@
 #include "flexmb/vehicle/driver.h"
 #include "flexmb/vehicle/lane_change_course.h"
 #include "flexmb/vehicle/road_surface.h"
+#include "flexmb/vehicle/single_track.h"
 #include "flexmb/vehicle/tire.h"
 
 namespace flexmb::vehicle {
@@ -210,6 +211,7 @@ StraightRunResult RunStraight(const StraightRunOptions& opt) {
   StraightRunMoments speed_moments;
   ForceEval fe;
   fe.tangents = false;
+  const double driver_wheelbase = DriverWheelbase(truck, -model.gravity_W.z());
   Simulator sim(model);
   const auto wall0 = std::chrono::steady_clock::now();
   const std::clock_t cpu0 = std::clock();
@@ -223,7 +225,7 @@ StraightRunResult RunStraight(const StraightRunOptions& opt) {
       const double yaw = std::atan2(fr.R_WM(1, 0), fr.R_WM(0, 0));
       const Vec3 pf = ws.markers[h.front_axle_ref].p_WM, pr = ws.markers[h.rear_axle_ref].p_WM;
       const double speed = fr.v_WM.dot(Vec3(std::cos(yaw), std::sin(yaw), 0));
-      driver.Update(VehicleView{st.t, pf.x(), pr.x(), pr.y(), yaw, speed, Wheelbase(truck), pf.y(), fr.w_WM.z()});
+      driver.Update(VehicleView{st.t, pf.x(), pr.x(), pr.y(), yaw, speed, driver_wheelbase, pf.y(), fr.w_WM.z()});
       r.t_end = st.t;
       // recorded: from the front axle's arrival on the road
       const double x = pf.x() - run_up;
