@@ -2,7 +2,7 @@
 # The main demo: the truck lane change ("perestavka", issue 7) at 55 km/h,
 # once with the rigid and once with the elastic (Craig-Bampton) ladder frame,
 # and the seed's comparison plots (rigid against elastic, frame deflection
-# and stress); the handling tests (step steer, constant steering-wheel angle,
+# and stress); a three-axle 6x4 with a balancer bogie; the handling tests (step steer, constant steering-wheel angle,
 # braking in a turn) and the truck with its frame from a Nastran deck; then
 # Andrews' squeezer (IFToMM A03) and the two-loop four-bar (A02) through the
 # command line; then the crane example's work cycle
@@ -29,6 +29,9 @@ if command -v pvbatch > /dev/null && command -v xvfb-run > /dev/null; then
     --png "$out/truck_elastic/views" --stride 10 || echo "(ParaView render skipped: no virtual display)"
 fi
 echo "truck demo: $(( ($(date +%s%N) - start) / 1000000 )) ms wall time (two runs, the frame's reduction and plots)"
+echo "== a three-axle 6x4 with a balancer bogie (examples/truck_6x4): the same lane change at 45 km/h, rigid frame"
+"$bin" run examples/truck_6x4/truck.yaml --out "$out/truck_6x4" --speed 45
+cat "$out/truck_6x4/summary.json"; echo
 echo "== truck handling: step steer at 60 km/h (ISO 14793), constant steering-wheel angle (ISO 14792), braking in a turn"
 for t in step-steer constant-steer brake-in-turn; do
   speed=(--speed 60)  # constant steer: from 10 km/h up
