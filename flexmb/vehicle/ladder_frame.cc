@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <tuple>
@@ -49,6 +50,16 @@ LadderFrame GenerateLadderFrame(const LadderFrameData& p, const std::vector<Fram
   if (!(p.nu > -1 && p.nu < 0.5)) fail("Poisson's ratio must be in (-1, 0.5)");
   if (p.flange_width >= p.half_spacing) fail("the flanges must not reach the centre plane");
   const double h = p.element_size;
+  // the shells' number, estimated before any int division count is formed:
+  // a mistyped element size must not take the memory or overflow
+  const double estimate = (p.length / h) * (2 * (p.web_height + 2 * p.flange_width) / h + 1) +
+                          p.cross_members.size() * (2 * p.half_spacing / h) * (p.web_height / h + 1);
+  if (!(estimate <= kMaxLadderFrameShells)) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "element_size %g m makes about %.3g shells, more than %d: raise it (0.04 m: about 5,500)",
+                  h, estimate, kMaxLadderFrameShells);
+    fail(buf);
+  }
   const int nx = Divisions(p.length, h), nz = Divisions(p.web_height, h), nf = Divisions(p.flange_width, h);
   const int ny = std::max(2, Divisions(2 * p.half_spacing, h));
   const double dx = p.length / nx, dz = p.web_height / nz, df = p.flange_width / nf, dy = 2 * p.half_spacing / ny;

@@ -15,6 +15,12 @@
 
 namespace flexmb::vehicle {
 
+/// Largest number of shells a generated ladder frame may have (the
+/// example's 0.04 m mesh has 5,478, a 6 mm mesh would have about 245,000,
+/// far more than the frame's reduction needs); GenerateLadderFrame refuses
+/// an element size that makes more.
+inline constexpr int kMaxLadderFrameShells = 200000;
+
 /// Geometry, material and mass of the ladder frame.
 struct LadderFrameData {
   double front_x = 1.2;            ///< x of the rails' front end [m]

@@ -11,7 +11,8 @@
 //   the two bogie axles carry different loads; and the standing truck's tire
 //   loads after settling against the same numbers (the balancer beams'
 //   moment balance holds in the multibody model).
-// - Bad axle lists are errors naming the file and the axle or bogie.
+// - Bad axle lists are errors naming the file and the axle or bogie; so is
+//   a generated frame's element size that would make millions of shells.
 #include <gtest/gtest.h>
 
 #include <yaml-cpp/yaml.h>
@@ -213,6 +214,17 @@ TEST(TruckAxles, BadAxleListsAreErrorsNamingTheFileAndTheAxle) {
   e = ErrorOf6x4With("      x: -3.5 ", "      x: -4.5 ", "bad_trunnion.yaml");
   EXPECT_NE(e.find("bogie 'rear'"), std::string::npos) << e;
   EXPECT_NE(e.find("between the bogie's axles"), std::string::npos) << e;
+}
+
+// a mistyped element size of the generated frame: an error in the file's
+// line before any memory is taken (0.0004 m would make 55 million shells)
+TEST(TruckAxles, MistypedFrameElementSizeIsAnError) {
+  const std::string e = ErrorOf6x4With("    element_size: 0.04", "    element_size: 0.0004", "bad_mesh.yaml");
+  EXPECT_NE(e.find("bad_mesh.yaml:"), std::string::npos) << e;
+  EXPECT_NE(e.find("element_size 0.0004 m makes about"), std::string::npos) << e;
+  LadderFrameData l;
+  l.element_size = 1e-9;  // the division counts would overflow an int
+  EXPECT_THROW(GenerateLadderFrame(l, {}), InputError);
 }
 
 }  // namespace truck_axles_test
