@@ -62,16 +62,25 @@ SubsystemMap Subsystem(const YAML::Node& n, YamlContext& ctx, const char* key, c
   return m;
 }
 
+// Subsystem, required: its errors name `entity`; without it, an error
+// `missing` at the map `n`
+SubsystemMap RequiredSubsystem(const YAML::Node& n, YamlContext& ctx, const char* key, const char* kind,
+                               const std::string& dir, const std::string& entity, const std::string& missing) {
+  SubsystemMap m = Subsystem(n, ctx, key, kind, dir);
+  m.ctx->SetEntity(entity);
+  if (!m.node) m.ctx->Fail(n, missing);
+  return m;
+}
+
 // the part under `key` of map `truck` (a truck or an axle map); `label`
 // names it in errors (default: the key)
 void ReadPart(const YAML::Node& truck, YamlContext& truck_ctx, const char* key, const std::string& dir, PartData& p,
               MountData* mounts = nullptr, const std::string& label = "") {
-  const SubsystemMap sub = Subsystem(truck, truck_ctx, key, "part", dir);
+  const std::string name = label.empty() ? key : label;
+  const SubsystemMap sub =
+      RequiredSubsystem(truck, truck_ctx, key, "part", dir, "truck part '" + name + "'", "missing part '" + name + "'");
   const YAML::Node& node = sub.node;
   YamlContext& ctx = *sub.ctx;
-  const std::string name = label.empty() ? key : label;
-  ctx.SetEntity("truck part '" + name + "'");
-  if (!node) ctx.Fail(truck, "missing part '" + name + "'");
   if (mounts) {
     ctx.CheckKeys(node, {"mass", "cg", "inertia", "note", "mount_x", "mount_stiffness", "mount_damping"});
     const YAML::Node mx = node["mount_x"];
@@ -93,12 +102,11 @@ void ReadPart(const YAML::Node& truck, YamlContext& truck_ctx, const char* key, 
 
 void ReadSuspension(const YAML::Node& truck, YamlContext& truck_ctx, const char* key, const std::string& dir,
                     SuspensionData& s, const std::string& label = "") {
-  const SubsystemMap sub = Subsystem(truck, truck_ctx, key, "suspension", dir);
+  const std::string name = label.empty() ? key : label;
+  const SubsystemMap sub = RequiredSubsystem(truck, truck_ctx, key, "suspension", dir, "suspension '" + name + "'",
+                                             "missing suspension '" + name + "'");
   const YAML::Node& node = sub.node;
   YamlContext& ctx = *sub.ctx;
-  const std::string name = label.empty() ? key : label;
-  ctx.SetEntity("suspension '" + name + "'");
-  if (!node) ctx.Fail(truck, "missing suspension '" + name + "'");
   ctx.CheckKeys(node, {"spring_stiffness", "spring_damping", "spring_half_spacing", "spring_length", "arm_length",
                        "stabilizer_stiffness", "stabilizer_damping", "extra_arm_height"});
   s.spring_stiffness = ctx.Positive(node, "spring_stiffness");
@@ -114,11 +122,9 @@ void ReadSuspension(const YAML::Node& truck, YamlContext& truck_ctx, const char*
 
 // the steering of the truck map `n` (inline or a steering file: Subsystem)
 void ReadSteering(const YAML::Node& n, YamlContext& truck_ctx, const std::string& dir, TruckData& d) {
-  const SubsystemMap sub = Subsystem(n, truck_ctx, "steering", "steering", dir);
+  const SubsystemMap sub = RequiredSubsystem(n, truck_ctx, "steering", "steering", dir, "steering", "missing 'steering'");
   const YAML::Node& st = sub.node;
   YamlContext& ctx = *sub.ctx;
-  ctx.SetEntity("steering");
-  if (!st) ctx.Fail(n, "missing 'steering'");
   ctx.CheckKeys(st, {"ratio", "stiffness", "damping", "linkage", "pitman_arm_length", "tie_rod_arm_length", "column",
                      "column_mass", "column_inertia", "column_length", "column_inclination_deg", "pitman_x",
                      "steering_arm_height"});
