@@ -6,6 +6,12 @@
 #include "flexmb/common/error.h"
 
 namespace flexmb::vehicle {
+namespace {
+
+// the wheelbase of the steering law (VehicleView::steering_wheelbase)
+double SteeringWheelbase(const VehicleView& v) { return v.steering_wheelbase > 0 ? v.steering_wheelbase : v.wheelbase; }
+
+}  // namespace
 
 Driver::Driver(const DriverData& d, const LaneChangeCourse& course, double target_speed)
     : data_(d),
@@ -77,7 +83,7 @@ void Driver::Update(const VehicleView& v) {
       const double dx = xp - v.x_rear, dy = course_.CentreLine(xp) - v.y_rear;
       const double c = std::cos(v.yaw), s = std::sin(v.yaw);
       const double xl = c * dx + s * dy, yl = -s * dx + c * dy;
-      const double road = std::atan(2.0 * v.wheelbase * yl / (xl * xl + yl * yl));
+      const double road = std::atan(2.0 * SteeringWheelbase(v) * yl / (xl * xl + yl * yl));
       target_sw = data_.steering_ratio * road;
     }
   } else {
@@ -94,7 +100,8 @@ void Driver::Update(const VehicleView& v) {
       const double dx = xp - xr, dy = course_.CentreLine(xp) - yr;
       const double xl = c * dx + s * dy, yl = -s * dx + c * dy;
       const double kappa = 2.0 * yl / (xl * xl + yl * yl);
-      const double road = std::atan((v.wheelbase + data_.understeer_gradient * speed * speed / 9.81) * kappa);
+      const double road =
+          std::atan((SteeringWheelbase(v) + data_.understeer_gradient * speed * speed / 9.81) * kappa);
       target_sw = data_.steering_ratio * road;
     }
   }

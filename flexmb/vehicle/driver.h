@@ -82,6 +82,10 @@ struct VehicleView {
   double wheelbase = 4.0;     ///< [m]
   double y_front = 0.0;       ///< y of the front-axle centre [m]
   double yaw_rate = 0.0;      ///< yaw rate of the vehicle [rad/s]
+  /// Wheelbase of the steering law, delta = (L + K v^2 / g) kappa [m]: a
+  /// truck with more than two axles turns as if its wheelbase were the
+  /// single-track model's equivalent one (DriverWheelbase); 0: `wheelbase`.
+  double steering_wheelbase = 0.0;
 };
 
 /// The driver. Its outputs live in shared values read by CommandSignal

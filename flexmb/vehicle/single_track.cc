@@ -128,7 +128,7 @@ SingleTrack TruckSingleTrack(const TruckData& d, double g) {
 }
 
 double DriverWheelbase(const TruckData& d, double g) {
-  return d.axles.size() == 2 ? Wheelbase(d) : TruckSingleTrack(d, g).wheelbase;
+  return d.axles.size() == 2 ? 0.0 : TruckSingleTrack(d, g).wheelbase;
 }
 
 }  // namespace flexmb::vehicle

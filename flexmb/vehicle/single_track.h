@@ -90,10 +90,11 @@ struct SingleTrack {
 /// their own moments, wheels and knuckles at their track positions).
 SingleTrack TruckSingleTrack(const TruckData& d, double g = 9.81);
 
-/// The wheelbase the driver steers by (VehicleView::wheelbase) [m]: two
-/// axles the wheelbase, more axles the single-track model's equivalent
+/// The wheelbase the driver steers by (VehicleView::steering_wheelbase)
+/// [m]: for more than two axles the single-track model's equivalent
 /// wheelbase (a tandem resists the turn: the same curvature needs more
-/// road-wheel angle than the distance to its trunnion gives).
+/// road-wheel angle than the distance to its trunnion gives); 0 (the
+/// geometric wheelbase) for two.
 double DriverWheelbase(const TruckData& d, double g = 9.81);
 
 }  // namespace flexmb::vehicle

@@ -527,7 +527,7 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
     modal = std::make_unique<durability::ModelModalHistory>(opt.out_dir, model, written);
   }
   FrameResponse frame_response(h.elastic ? static_cast<const FlexibleBody*>(frame_body) : nullptr, csv);
-  const double wheelbase = DriverWheelbase(f.truck, -model.gravity_W.z());
+  const double wheelbase = Wheelbase(f.truck), steering_wheelbase = DriverWheelbase(f.truck, -model.gravity_W.z());
   std::vector<double> fz(n_wheels), axle_load(n_axles), ltr(n_axles);  // per step, allocated once
   std::vector<int> lift(n_wheels);
   char line[FrameResponse::kRowChars];
@@ -550,7 +550,7 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
       const double yaw_rate = fr.w_WM.z();
 
       // controllers, held over the next step
-      driver.Update(VehicleView{st.t, pf.x(), pr.x(), pr.y(), yaw, speed, wheelbase, pf.y(), yaw_rate});
+      driver.Update(VehicleView{st.t, pf.x(), pr.x(), pr.y(), yaw, speed, wheelbase, pf.y(), yaw_rate, steering_wheelbase});
 
       // tires, axle loads, lift-off
       bool lifted = false;

@@ -225,7 +225,8 @@ StraightRunResult RunStraight(const StraightRunOptions& opt) {
       const double yaw = std::atan2(fr.R_WM(1, 0), fr.R_WM(0, 0));
       const Vec3 pf = ws.markers[h.front_axle_ref].p_WM, pr = ws.markers[h.rear_axle_ref].p_WM;
       const double speed = fr.v_WM.dot(Vec3(std::cos(yaw), std::sin(yaw), 0));
-      driver.Update(VehicleView{st.t, pf.x(), pr.x(), pr.y(), yaw, speed, driver_wheelbase, pf.y(), fr.w_WM.z()});
+      driver.Update(VehicleView{st.t, pf.x(), pr.x(), pr.y(), yaw, speed, Wheelbase(truck), pf.y(), fr.w_WM.z(),
+                                driver_wheelbase});
       r.t_end = st.t;
       // recorded: from the front axle's arrival on the road
       const double x = pf.x() - run_up;
