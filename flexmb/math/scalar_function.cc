@@ -17,6 +17,24 @@ double ScalarFunction::IntegralFromZero(double x) const {
   return s * h / 3.0;
 }
 
+ViscousCoulombFunction::ViscousCoulombFunction(double viscous, double friction, double smoothing)
+    : c_(viscous), f_(friction), s_(smoothing) {
+  if (!(c_ >= 0) || !(f_ >= 0) || !(s_ > 0) || !std::isfinite(c_) || !std::isfinite(f_) || !std::isfinite(s_))
+    throw InputError("a damper with friction needs damping >= 0, friction force >= 0 and a smoothing rate > 0");
+}
+
+double ViscousCoulombFunction::Value(double x) const { return c_ * x + f_ * std::tanh(x / s_); }
+
+double ViscousCoulombFunction::Derivative(double x) const {
+  const double t = std::tanh(x / s_);
+  return c_ + f_ / s_ * (1.0 - t * t);
+}
+
+double ViscousCoulombFunction::SecondDerivative(double x) const {
+  const double t = std::tanh(x / s_);
+  return -2.0 * f_ / (s_ * s_) * t * (1.0 - t * t);
+}
+
 TableFunction::TableFunction(std::vector<double> x, std::vector<double> y,
                              Interpolation interpolation, bool extrapolate)
     : x_(std::move(x)), y_(std::move(y)), interpolation_(interpolation), extrapolate_(extrapolate) {

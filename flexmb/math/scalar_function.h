@@ -39,6 +39,21 @@ class ConstantFunction final : public ScalarFunction {
   double c_;
 };
 
+/// f(x) = c x + F tanh(x / s): a viscous damper c in parallel with Coulomb
+/// friction of force F, smoothed over the rate s (a rate of s gives 0.76 F);
+/// e.g. the inter-leaf friction of a leaf spring as a force of its rate.
+class ViscousCoulombFunction final : public ScalarFunction {
+ public:
+  /// Throws InputError unless c >= 0, F >= 0 and s > 0 (all finite).
+  ViscousCoulombFunction(double viscous, double friction, double smoothing);
+  double Value(double x) const override;
+  double Derivative(double x) const override;
+  double SecondDerivative(double x) const override;
+
+ private:
+  double c_, f_, s_;
+};
+
 /// Interpolated table (x_i, y_i) with strictly increasing x. Linear or natural
 /// cubic spline interpolation; outside the table the end value is held
 /// (`extrapolate` = false) or the end slope continued (`extrapolate` = true).

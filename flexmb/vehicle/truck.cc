@@ -462,6 +462,9 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, const Truck
       law.stiffness = s.spring_stiffness;
       law.damping = s.spring_damping;
       law.preload = -spring_load;
+      if (s.friction_force > 0)
+        law.force_velocity =
+            std::make_shared<ViscousCoulombFunction>(s.spring_damping, s.friction_force, s.friction_velocity);
       const Vec3 seat(x, y, z + s.spring_length);
       const int upper = a.bogie < 0 ? frame_marker("spring_seat_" + side + "_" + lr, seat, I)
                                     : m.AddMarker(bogie_beam[static_cast<size_t>(a.bogie)][k], side + "_spring", seat, I);

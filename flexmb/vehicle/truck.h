@@ -68,6 +68,12 @@ struct SuspensionData {
   /// rod, frame and hub form a parallelogram holding the axle's pitch.
   /// 0: no additional arm (the axle rolls on the arm).
   double extra_arm_height = 0.0;
+  /// Inter-leaf friction of each spring [N]: a Coulomb force against the
+  /// spring's rate, smoothed over friction_velocity (ViscousCoulombFunction),
+  /// in parallel with spring_damping: the leaf spring's hysteresis loop. 0:
+  /// none.
+  double friction_force = 0.0;
+  double friction_velocity = 0.01;  ///< rate at which the friction reaches 0.76 of its force [m/s], > 0
 };
 
 /// Mass of the hub between arm and axle of a suspension with the additional

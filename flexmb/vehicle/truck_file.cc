@@ -108,7 +108,8 @@ void ReadSuspension(const YAML::Node& truck, YamlContext& truck_ctx, const char*
   const YAML::Node& node = sub.node;
   YamlContext& ctx = *sub.ctx;
   ctx.CheckKeys(node, {"spring_stiffness", "spring_damping", "spring_half_spacing", "spring_length", "arm_length",
-                       "stabilizer_stiffness", "stabilizer_damping", "extra_arm_height"});
+                       "stabilizer_stiffness", "stabilizer_damping", "extra_arm_height", "friction_force",
+                       "friction_velocity", "note"});
   s.spring_stiffness = ctx.Positive(node, "spring_stiffness");
   s.spring_damping = ctx.Double(node, "spring_damping", s.spring_damping);
   s.spring_half_spacing = ctx.Positive(node, "spring_half_spacing");
@@ -118,6 +119,10 @@ void ReadSuspension(const YAML::Node& truck, YamlContext& truck_ctx, const char*
   s.stabilizer_damping = ctx.Double(node, "stabilizer_damping", 0.0);
   s.extra_arm_height = ctx.Double(node, "extra_arm_height", 0.0);
   if (!(s.extra_arm_height >= 0)) ctx.Fail(node, "extra_arm_height must be >= 0");
+  s.friction_force = ctx.Double(node, "friction_force", 0.0);
+  s.friction_velocity = ctx.Double(node, "friction_velocity", s.friction_velocity);
+  if (!(s.friction_force >= 0) || !(s.friction_velocity > 0))
+    ctx.Fail(node, "friction_force must be >= 0 [N] and friction_velocity positive [m/s]");
 }
 
 // the steering of the truck map `n` (inline or a steering file: Subsystem)
