@@ -63,16 +63,21 @@ def main():
     fp = flexmb_plot()
     run_dirs, out = fp.run_dir_arguments()
     runs = [load(r) for r in run_dirs]
+    # per axle and per tire, as many as the (first) truck has
+    columns = list(runs[0][1].keys())
+    axle_loads = [k for k in columns if k.endswith("_axle_load_kN")]
+    tire_loads = [k for k in columns if k.startswith("fz_") and k.endswith("_kN")]
+    ltr = [k for k in columns if k.startswith("ltr_")]
     panels = [
         ("lateral_acceleration", "lateral acceleration [m/s$^2$]", ["lateral_acceleration"]),
         ("steering_wheel_angle", "steering-wheel angle [deg]", ["steering_wheel_angle_deg"]),
         ("roll", "roll angle of the frame [deg]", ["roll_deg"]),
         ("yaw_rate", "yaw rate [deg/s]", ["yaw_rate_degps"]),
-        ("axle_loads", "axle load [kN]", ["front_axle_load_kN", "rear_axle_load_kN"]),
-        ("tire_loads", "tire vertical load [kN] (rear: twin set)", ["fz_fl_kN", "fz_fr_kN", "fz_rl_kN", "fz_rr_kN"]),
+        ("axle_loads", "axle load [kN]", axle_loads),
+        ("tire_loads", "tire vertical load [kN] (rear: twin set)", tire_loads),
     ]
-    if all("ltr_front" in c for _, c in runs):
-        panels.append(("load_transfer", "load-transfer ratio [-] (1: lift-off)", ["ltr_front", "ltr_rear"]))
+    if ltr and all(ltr[0] in c for _, c in runs):
+        panels.append(("load_transfer", "load-transfer ratio [-] (1: lift-off)", ltr))
     fp.overlay(runs, panels, out_dir=out, decorate=mark_run_up)
     elastic = [(label, c) for label, c in runs if "frame_max_displacement_mm" in c]
     for name, key, pos, ylabel in [

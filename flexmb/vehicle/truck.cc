@@ -202,9 +202,14 @@ std::vector<double> StaticAxleLoads(const TruckData& d, double g) {
   for (size_t i = 0; i < n; ++i)
     if (d.axles[i].bogie < 0) sup.push_back({d.axles[i].x, AxleSupportStiffness(d.axles[i]), static_cast<int>(i), -1});
   for (size_t b = 0; b < d.bogies.size(); ++b) {
+    // the trunnion's stiffness through the beam's levers a (ahead) and c:
+    // a load F gives the axles F c / (a + c) and F a / (a + c), and the
+    // trunnion sinks by their deflections weighted the same way
     const std::array<int, 2> ab = BogieAxles(d, static_cast<int>(b));
-    sup.push_back({d.bogies[b].x, AxleSupportStiffness(d.axles[ab[0]]) + AxleSupportStiffness(d.axles[ab[1]]), -1,
-                   static_cast<int>(b)});
+    const double a = d.axles[ab[0]].x - d.bogies[b].x, c = d.bogies[b].x - d.axles[ab[1]].x;
+    const double k = (a + c) * (a + c) /
+                     (c * c / AxleSupportStiffness(d.axles[ab[0]]) + a * a / AxleSupportStiffness(d.axles[ab[1]]));
+    sup.push_back({d.bogies[b].x, k, -1, static_cast<int>(b)});
   }
   // two supports: statically determinate, the lever rule about the rear
   // one; an axle on its own springs then takes its unsprung weight through
@@ -281,11 +286,15 @@ void CheckAxles(const TruckData& d) {
     const std::string entity = "axle '" + a.name + "'";
     if (a.name.empty() || a.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
       fail("an axle's name must be lower-case letters, digits and '_'", entity);
+    for (const char* taken : {"pitman", "relay", "steering", "knuckle", "wheel", "bogie", "frame"})
+      if (a.name == taken) fail("the axle name '" + a.name + "' is taken by the truck's other parts", entity);
     if (!names.insert(a.name).second) fail("two axles are named '" + a.name + "'", entity);
     if (i == 0 && a.x != 0.0) fail("the first axle must be at x = 0 (the vehicle frame's origin)", entity);
     if (i > 0 && !(a.x < d.axles[i - 1].x)) fail("axles must be listed from front to rear (x decreasing)", entity);
-    if (a.steered != (i == 0))
-      fail(i == 0 ? "the first axle must be steered" : "only the first axle can be steered (yet)", entity);
+    if (i == 0 && !a.steered) fail("the first axle must be steered", entity);
+    if (i > 1 && a.steered) fail("only the first two axles can be steered", entity);
+    if (i == 1 && a.steered && (n < 3 || a.bogie >= 0))
+      fail("a second steered axle needs an unsteered axle behind it and its own springs", entity);
     if (!(a.track > 0)) fail("track must be positive", entity);
     if (!(a.brake_share >= 0 && a.brake_share <= 1)) fail("brake_share must lie in [0, 1]", entity);
     if (a.bogie >= static_cast<int>(d.bogies.size())) fail("unknown bogie", entity);
@@ -298,6 +307,8 @@ void CheckAxles(const TruckData& d) {
   for (size_t b = 0; b < d.bogies.size(); ++b) {
     const BogieData& bg = d.bogies[b];
     const std::string entity = "bogie '" + bg.name + "'";
+    if (bg.name.empty() || bg.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
+      fail("a bogie's name must be lower-case letters, digits and '_'", entity);
     if (!bogie_names.insert(bg.name).second) fail("two bogies are named '" + bg.name + "'", entity);
     int count = 0;
     for (const AxleData& a : d.axles) count += a.bogie == static_cast<int>(b);
@@ -306,6 +317,8 @@ void CheckAxles(const TruckData& d) {
     if (ab[1] != ab[0] + 1) fail("a bogie's two axles must be neighbours", entity);
     if (!(bg.x < d.axles[ab[0]].x && bg.x > d.axles[ab[1]].x))
       fail("the trunnion must lie between the bogie's axles", entity);
+    if (d.axles[ab[0]].suspension.spring_half_spacing != d.axles[ab[1]].suspension.spring_half_spacing)
+      fail("the bogie's axles must have the same spring_half_spacing (the beams' lateral positions)", entity);
     if (!(bg.beam.mass > 0) || !(bg.beam.inertia.minCoeff() > 0)) fail("the beam's mass and inertia must be positive", entity);
   }
   size_t supports = d.bogies.size();
@@ -622,15 +635,20 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, const Truck
   }
   // the unsprung parts of each axle, by their names
   h.body_axle.assign(m.bodies.size(), -1);
-  for (size_t b = 0; b < m.bodies.size(); ++b) {
-    const std::string& name = m.bodies[b]->name();
-    if (name.starts_with("knuckle_")) h.body_axle[b] = 0;
-    for (size_t i = 0; i < n_axles; ++i) {
-      const AxleData& a = d.axles[i];
-      if (name.starts_with(a.name + "_") || name.starts_with(WheelName(a, 0)) || name.starts_with(WheelName(a, 1)) ||
-          (a.bogie >= 0 && name.starts_with("bogie_" + d.bogies[static_cast<size_t>(a.bogie)].name + "_")))
-        h.body_axle[b] = static_cast<int>(i);
+  for (size_t i = 0; i < n_axles; ++i) {
+    const AxleData& a = d.axles[i];
+    std::vector<std::string> names = {a.name + "_arm", a.name + "_axle", a.name + "_axle_hub"};
+    for (int k = 0; k < 2; ++k) {
+      const std::string lr = k == 0 ? "_left" : "_right";
+      names.push_back(WheelName(a, k));
+      names.push_back(WheelName(a, k) + "_patch");
+      if (a.steered) names.push_back("knuckle" + (i == 0 ? std::string() : "_" + a.name) + lr);
+      if (a.bogie >= 0 && i + 1 < n_axles && d.axles[i + 1].bogie == a.bogie)  // the beams count with the rear axle
+        continue;
+      if (a.bogie >= 0) names.push_back("bogie_" + d.bogies[static_cast<size_t>(a.bogie)].name + lr);
     }
+    for (const std::string& name : names)
+      if (const int b = m.FindBody(name); b >= 0) h.body_axle[static_cast<size_t>(b)] = static_cast<int>(i);
   }
   return h;
 }

@@ -244,7 +244,7 @@ struct TruckHandles {
 };
 
 /// The truck's inputs as functions of time: the steering-wheel angle [rad],
-/// the drive torque on the rear axle [N m] and, when not null, the total
+/// the drive torque on the driven axles [N m] and, when not null, the total
 /// brake torque on all wheels [N m] (WheelBrake on each wheel bearing,
 /// shared by the axles' brake_share).
 struct TruckInputs {
@@ -261,7 +261,7 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, const Truck
 
 /// Builds the truck into `model` (not finalized) moving forward at `speed`
 /// [m/s] on a road with friction `mu`. The steering-wheel angle [rad], the
-/// drive torque on the rear axle [N m] and, when not null, the total brake
+/// drive torque on the driven axles [N m] and, when not null, the total brake
 /// torque on all wheels [N m] (WheelBrake on each wheel bearing, shared by
 /// the axles' brake_share) are read from the shared values (zero-order hold,
 /// CommandSignal). Throws InputError for bad data.

@@ -49,12 +49,13 @@ struct SubsystemMap {
 // suspension or steering file.
 SubsystemMap Subsystem(const YAML::Node& n, YamlContext& ctx, const char* key, const char* kind,
                        const std::string& dir) {
-  SubsystemMap m;
-  m.ctx = &ctx;
-  m.node = n[key];
+  // copy-constructed: a missing key is yaml-cpp's invalid node, which
+  // assigning (operator=) would throw on
+  SubsystemMap m{ctx.MapChild(n, key), &ctx, nullptr};
   if (!m.node || !m.node.IsScalar()) return m;
   const std::string path = (std::filesystem::path(dir) / m.node.Scalar()).string();
-  if (!std::filesystem::is_regular_file(path))
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
     ctx.Fail(m.node, std::string("'") + key + "': no " + kind + " file '" + path + "'");
   m.file_ctx = std::make_unique<YamlContext>(path);
   m.ctx = m.file_ctx.get();
@@ -190,6 +191,8 @@ void ReadBogies(const YAML::Node& n, YamlContext& ctx, const std::string& dir, T
     ctx.SetEntity("bogie '" + bg.name + "'");
     bg.x = ctx.Double(b, "x");
     ReadPart(b, ctx, "beam", dir, bg.beam, nullptr, "bogie " + bg.name + " beam");
+    if (b["beam"].IsMap() && b["beam"]["cg"])
+      ctx.Fail(b["beam"]["cg"], "a bogie's beam has its centre of mass on the trunnion axis: no 'cg'");
     for (const BogieData& other : d.bogies)
       if (other.name == bg.name) ctx.Fail(b["name"], "two bogies are named '" + bg.name + "'");
     d.bogies.push_back(bg);
@@ -298,6 +301,7 @@ TireData LoadTireFile(const std::string& path) {
 TruckData ParseTruck(const YAML::Node& n, YamlContext& ctx, const std::string& dir) {
   TruckData d;
   ctx.SetEntity("truck");
+  if (!n.IsMap()) ctx.Fail(n, "expected 'truck' as a map");
   if (n["axles"]) {
     ctx.CheckKeys(n, {"axles", "bogies", "kingpin_offset", "frame", "cab", "powertrain", "cargo", "knuckle", "arm",
                       "steering", "gauge_width", "brakes", "note"});

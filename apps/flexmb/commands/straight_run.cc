@@ -172,13 +172,16 @@ StraightRunResult RunStraight(const StraightRunOptions& opt) {
                                                                       std::make_shared<RoadSurface>(profile, 1)};
   const size_t n_axles = truck.axles.size(), n_wheels = 2 * n_axles;
   for (size_t k = 0; k < n_wheels; ++k) static_cast<Tire&>(*model.forces[h.tire_force[k]]).SetRoad(surface[k % 2]);
-  // the mounts and springs on the frame: bushings and spring-dampers with marker i on it
+  // the mounts and springs on the frame: bushings and spring-dampers with
+  // marker i on it (and a bogie's springs with marker i on its beams)
   std::vector<int> mounts;
   for (size_t i = 0; i < model.forces.size(); ++i) {
     const ForceElement& fe = *model.forces[i];
     const std::string type = fe.type();
-    if ((type == "bushing" || type == "spring_damper") &&
-        model.markers[static_cast<size_t>(fe.marker_i)].body == h.frame_body)
+    const int body = model.markers[static_cast<size_t>(fe.marker_i)].body;
+    // on the frame, or a bogie's spring on its balancer beam
+    const bool on_beam = body >= 0 && model.bodies[static_cast<size_t>(body)]->name().starts_with("bogie_");
+    if ((type == "bushing" || type == "spring_damper") && (body == h.frame_body || on_beam))
       mounts.push_back(static_cast<int>(i));
   }
   model.Finalize();
