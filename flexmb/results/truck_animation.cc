@@ -24,7 +24,7 @@ constexpr double kTruckAnimColumnRadius = 0.025;  // steering column [m]
 constexpr double kTruckAnimWheelRadius = 0.25, kTruckAnimWheelThickness = 0.04;  // steering wheel [m]
 // distance joints drawn as lines between their markers (and each axle's
 // additional arm, <axle>_extra_arm)
-constexpr const char* kTruckAnimLinks[] = {"drag_link", "tie_rod"};
+constexpr const char* kTruckAnimLinks[] = {"drag_link", "tie_rod", "relay_rod"};
 
 // shape axes of the steering column: z along the column, leaning rearwards
 // by column_inclination from the vertical
@@ -158,10 +158,10 @@ void SetTruckShapes(const TruckData& d, Model& model) {
       s.size = Vec3(5.0, 2.3, 1.0);
     } else if (TruckAnimAxleShape(d, name, s)) {
       // an axle's part (axle, wheels, arm, hub, contact patches) or a bogie's beam
-    } else if (name == "knuckle_left" || name == "knuckle_right") {
+    } else if (name.starts_with("knuckle_")) {
       s.type = Shape::Type::kBox;
       s.size = Vec3(0.15, 0.15, 0.25);
-    } else if (name == "pitman_arm") {
+    } else if (name == "pitman_arm" || name == "relay_arm") {
       s.type = Shape::Type::kBox;
       s.size = Vec3(0.05, 0.05, d.pitman_arm_length);
     } else if (name == "steering_column") {
@@ -198,7 +198,11 @@ TruckAnimation::TruckAnimation(const std::string& dir, const TruckData& d, const
     writer_->AddShapeMesh(MakeShapeMesh(wheel, b, "steering wheel"));
   }
   std::vector<std::string> links(std::begin(kTruckAnimLinks), std::end(kTruckAnimLinks));
-  for (const AxleData& a : d.axles) links.push_back(a.name + "_extra_arm");
+  for (const AxleData& a : d.axles) {
+    links.push_back(a.name + "_extra_arm");
+    links.push_back("drag_link_" + a.name);  // a second steered axle's
+    links.push_back("tie_rod_" + a.name);
+  }
   for (const std::string& name : links) {
     const int j = model.FindJoint(name);
     if (j >= 0) writer_->AddLink(model.joints[j]->marker_i, model.joints[j]->marker_j);

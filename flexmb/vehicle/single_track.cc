@@ -28,22 +28,18 @@ double SingleTrack::CentreOfMassX() const {
 
 void SingleTrack::SetSteadyState(double g) {
   const double xc = CentreOfMassX();
-  double s0 = 0, s1 = 0, q0 = 0, q1 = 0, c_s = 0, lever_s = 0;
-  int steered = 0;
+  double s0 = 0, s1 = 0, q0 = 0, q1 = 0, r0 = 0, r1 = 0;
   for (const Axle& a : axles) {
     const double p = a.x - xc, c = a.cornering_stiffness;
     s0 += c;
     s1 += c * p;
     q0 += c * (p - a.trail);
     q1 += c * p * (p - a.trail);
-    if (a.steered) {
-      ++steered;
-      c_s = c;
-      lever_s = p - a.trail;
-    }
+    r0 += c * a.steer;
+    r1 += c * a.steer * (p - a.trail);
   }
-  if (steered != 1) throw std::invalid_argument("single-track model: exactly one axle must be steered");
-  const double den = c_s * (q0 - s0 * lever_s);
+  if (r0 == 0) throw std::invalid_argument("single-track model: no axle is steered");
+  const double den = r0 * q0 - s0 * r1;
   wheelbase = (s1 * q0 - s0 * q1) / den;
   understeer_gradient = g * mass * q0 / den;
 }
@@ -67,7 +63,7 @@ SingleTrack::Response SingleTrack::FrequencyResponse(double f, double v, double 
     A(2 + i, 0) = a.cornering_stiffness / v;
     A(2 + i, 1) = a.cornering_stiffness * p / v;
     A(2 + i, 2 + i) = a.relaxation_length / v * s + 1.0;
-    if (a.steered) rhs(2 + i) = a.cornering_stiffness;
+    rhs(2 + i) = a.cornering_stiffness * a.steer;
   }
   const Eigen::Matrix<C, Eigen::Dynamic, 1> x = A.partialPivLu().solve(rhs);
   // per steering-wheel angle; a_y at the point: centre of mass plus r' times the lever
@@ -87,7 +83,7 @@ SingleTrack TruckSingleTrack(const TruckData& d, double g) {
     SingleTrack::Axle a;
     a.x = ax.x;
     a.load = loads[i];
-    a.steered = ax.steered;
+    a.steer = SteerRatio(d, i);
     // per side: a set of td.count tires sharing the wheel's load
     a.cornering_stiffness = 2.0 * td.count * tire.CorneringStiffness(0.5 * loads[i] / td.count);
     a.trail = td.trail;
@@ -120,6 +116,8 @@ SingleTrack TruckSingleTrack(const TruckData& d, double g) {
     for (double side : {1.0, -1.0})
       add(bg.beam.mass, bg.x, side * d.axles.back().suspension.spring_half_spacing, bg.beam.inertia.z());
   if (d.steering_linkage) add(d.pitman_arm_mass, d.drag_link_length, 0.0, 0.0);
+  if (d.steering_linkage && d.axles.size() > 1 && d.axles[1].steered)
+    add(d.pitman_arm_mass, d.axles[1].x + d.drag_link_length, 0.0, 0.0);  // the relay arm
   if (d.steering_linkage && d.steering_column)
     add(d.column_mass, d.drag_link_length - 0.5 * d.column_length * std::sin(d.column_inclination), 0.0, 0.0);
   s.yaw_inertia = inertia;

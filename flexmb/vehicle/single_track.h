@@ -27,7 +27,9 @@ struct SingleTrack {
     /// (sigma = C / k, the lateral carcass stiffness k set at the nominal
     /// load: Tire); 0: the lateral force follows the slip angle at once.
     double relaxation_length = 0.0;
-    bool steered = false;          ///< turned by the road-wheel angle
+    /// Road-wheel angle per the first axle's (SteerRatio): 1 for the first
+    /// axle, 0 for an unsteered one.
+    double steer = 0.0;
   };
   std::vector<Axle> axles;         ///< front to rear
   /// Equivalent wheelbase L [m] and understeer gradient K [rad per g of
@@ -51,11 +53,11 @@ struct SingleTrack {
   /// Sets wheelbase and understeer_gradient from the axles and the mass:
   /// with p_i the axles' positions from the centre of mass (x_c = sum W_i
   /// x_i / W), the lateral balance sum F_i = m v^2 / R and the yaw balance
-  /// sum F_i (p_i - t_i) = 0 with F_i = C_i (delta_i - beta - p_i / R) give
-  /// delta R = (m v^2 Q0 + S1 Q0 - S0 Q1) / (C_s (Q0 - S0 (p_s - t_s)))
-  /// with S0 = sum C, S1 = sum C p, Q0 = sum C (p - t), Q1 = sum C p (p -
-  /// t), s the steered axle (one). Throws std::invalid_argument without
-  /// exactly one steered axle.
+  /// sum F_i (p_i - t_i) = 0 with F_i = C_i (r_i delta - beta - p_i / R)
+  /// (r_i the axle's steer ratio) give delta R = (m v^2 Q0 + S1 Q0 - S0 Q1)
+  /// / (R0 Q0 - S0 R1) with S0 = sum C, S1 = sum C p, Q0 = sum C (p - t), Q1
+  /// = sum C p (p - t), R0 = sum C r, R1 = sum C r (p - t). Throws
+  /// std::invalid_argument without a steered axle.
   void SetSteadyState(double g = 9.81);
   /// Centre of mass along the vehicle's x from the axle loads [m].
   double CentreOfMassX() const;

@@ -100,30 +100,44 @@ double TrunnionZ(const TruckData& d, int b, const std::vector<double>& zw) {
   return 0.5 * (SpringSeatZ(d.axles[ab[0]], zw[ab[0]]) + SpringSeatZ(d.axles[ab[1]], zw[ab[1]]));
 }
 
-// left kingpin on the axle at wheel-centre height zf
-Vec3 LeftKingpin(const TruckData& d, double zf) { return Vec3(0, 0.5 * d.axles[0].track - d.kingpin_offset, zf); }
+// left kingpin of steered axle i at wheel-centre height z
+Vec3 LeftKingpin(const TruckData& d, size_t i, double z) {
+  const AxleData& a = d.axles[i];
+  return Vec3(a.x, 0.5 * a.track - d.kingpin_offset, z);
+}
 
 // ball of the left knuckle's inboard steering arm (drag link's rear end)
-Vec3 SteeringArmBall(const TruckData& d, double zf) {
-  return LeftKingpin(d, zf) + Vec3(0, -d.pitman_arm_length, d.steering_arm_height);
+Vec3 SteeringArmBall(const TruckData& d, size_t i, double z) {
+  return LeftKingpin(d, i, z) + Vec3(0, -d.pitman_arm_length, d.steering_arm_height);
 }
 
-// pitman ball (drag link's front end): the drag link is horizontal
-Vec3 PitmanBall(const TruckData& d, double zf) { return SteeringArmBall(d, zf) + Vec3(d.drag_link_length, 0, 0); }
+// ball of the pitman arm (axle 0) or of the relay arm (axle 1), the drag
+// link's front end: the drag link is horizontal
+Vec3 PitmanBall(const TruckData& d, size_t i, double z) {
+  return SteeringArmBall(d, i, z) + Vec3(d.drag_link_length, 0, 0);
+}
 
-// pitman arm pivot (the steering gear's output shaft) on the frame, the
-// pitman arm hanging down from it to the ball; see BuildTruck
-Vec3 SteeringGearPivot(const TruckData& d, double zf) { return PitmanBall(d, zf) + Vec3(0, 0, d.pitman_arm_length); }
+// pivot on the frame of the pitman arm (the steering gear's output shaft,
+// axle 0) or of the relay arm (axle 1), the arm hanging down from it to the
+// ball; see BuildTruck
+Vec3 SteeringGearPivot(const TruckData& d, size_t i, double z) {
+  return PitmanBall(d, i, z) + Vec3(0, 0, d.pitman_arm_length);
+}
 
-// the steering gear box's mount on the left rail's outer web, mid-height,
-// ahead of the pitman pivot by twice the spider radius: clear of the front
-// arm pivot's bracket (the spring hanger at x = arm_length, where the pitman
-// sits); the elastic frame's interface point of the gear, whose node carries
-// the pitman and column markers offset to the pivot
-Vec3 SteeringGearMount(const TruckData& d, double zf) {
-  return Vec3(SteeringGearPivot(d, zf).x() + 2 * d.ladder.spider_radius, d.ladder.half_spacing,
+// the steering gear box's mount (axle 0; axle 1: the relay arm's bracket) on
+// the left rail's outer web, mid-height, ahead of the arm's pivot by twice
+// the spider radius: clear of the arm pivot's bracket (the spring hanger at
+// x = arm_length, where the pitman sits); the elastic frame's interface
+// point of the gear, whose node carries the pitman and column markers offset
+// to the pivot
+Vec3 SteeringGearMount(const TruckData& d, size_t i, double z) {
+  return Vec3(SteeringGearPivot(d, i, z).x() + 2 * d.ladder.spider_radius, d.ladder.half_spacing,
               d.ladder.bottom_z + 0.5 * d.ladder.web_height);
 }
+
+// the steering relay of a second steered axle: the relay arm on the frame
+// turned by a rod from a lever on the pitman arm (linkage only)
+bool HasSteeringRelay(const TruckData& d) { return d.steering_linkage && d.axles.size() > 1 && d.axles[1].steered; }
 
 // mount points of a part: per station left then right, at the rails' top corners
 std::vector<Vec3> MountPoints(const TruckData& d, const MountData& mounts) {
@@ -153,6 +167,13 @@ std::string WheelName(const AxleData& a, int side) {
   return "wheel_" + a.name + "_" + lr;
 }
 
+double SteerRatio(const TruckData& d, size_t i) {
+  if (!d.axles[i].steered) return 0.0;
+  if (i == 0) return 1.0;
+  const double x_ref = d.axles[0].x - Wheelbase(d);
+  return (d.axles[i].x - x_ref) / (d.axles[0].x - x_ref);
+}
+
 double Wheelbase(const TruckData& d) {
   if (d.axles.empty()) return 0.0;
   const AxleData& last = d.axles.back();
@@ -178,7 +199,8 @@ std::vector<FrameAttachment> FrameAttachments(const TruckData& d, double g) {
     a.push_back({"trunnion_" + d.bogies[b].name + "_left", Vec3(d.bogies[b].x, y, z)});
     a.push_back({"trunnion_" + d.bogies[b].name + "_right", Vec3(d.bogies[b].x, -y, z)});
   }
-  a.push_back({"steering_gear", SteeringGearMount(d, zw[0])});
+  a.push_back({"steering_gear", SteeringGearMount(d, 0, zw[0])});
+  if (HasSteeringRelay(d)) a.push_back({"steering_relay", SteeringGearMount(d, 1, zw[1])});
   for (const auto& [name, mounts] : {std::pair<std::string, const MountData*>{"cab", &d.cab_mounts},
                                      {"powertrain", &d.powertrain_mounts},
                                      {"cargo", &d.cargo_mounts}}) {
@@ -233,6 +255,7 @@ std::vector<double> StaticAxleLoads(const TruckData& d, double g) {
   if (d.steering_linkage) add(d.pitman_arm_mass, d.drag_link_length);
   if (d.steering_linkage && d.steering_column)
     add(d.column_mass, d.drag_link_length - 0.5 * d.column_length * std::sin(d.column_inclination));
+  if (HasSteeringRelay(d)) add(d.pitman_arm_mass, d.axles[1].x + d.drag_link_length);
   for (const BogieData& b : d.bogies) add(2 * b.beam.mass, b.x);
   for (size_t i = 0; i < n; ++i) {
     const AxleData& a = d.axles[i];
@@ -532,23 +555,51 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, const Truck
 
   std::vector<int> axle_body(n_axles);
   for (size_t i = 0; i < n_axles; ++i) axle_body[i] = axle(i);
-  // the steered (first) axle: knuckles on kingpin revolutes
-  const AxleData& fa = d.axles[0];
-  std::array<int, 2> knuckle{};
-  std::array<Vec3, 2> kingpin{};
-  for (int k = 0; k < 2; ++k) {
-    const double sgn = k == 0 ? 1.0 : -1.0;
-    const std::string name = k == 0 ? "knuckle_left" : "knuckle_right";
-    kingpin[k] = Vec3(1, sgn, 1).cwiseProduct(LeftKingpin(d, zf));
-    const Vec3 wc(0, sgn * 0.5 * fa.track, zf);
-    knuckle[k] = AddPart(m, name, d.knuckle, Vec3(0, sgn * (0.5 * fa.track - 0.5 * d.kingpin_offset), zf),
-                         speed, zero);
-    h.kingpin_joint[k] = m.AddJoint(std::make_unique<RevoluteJoint>(name + "_kingpin"),
-                                    m.AddMarker(axle_body[0], name + "_kingpin", kingpin[k], I),
-                                    m.AddMarker(knuckle[k], "kingpin", kingpin[k], I));
-    const int jm = wheel(fa, knuckle[k], wc, k);
-    if (fa.driven) add_drive(WheelName(fa, k), jm);
-  }
+  // a steered axle i: knuckles on kingpin revolutes, with its wheels; `tag`
+  // in the names ("" for the first axle: knuckle_left, ...; "_<axle>" for
+  // the second: knuckle_<axle>_left, ...)
+  struct SteeredAxle {
+    std::array<int, 2> knuckle{}, kingpin_joint{};
+    std::array<Vec3, 2> kingpin{};
+    std::string tag;
+  };
+  auto steered_axle = [&](size_t i) {
+    const AxleData& a = d.axles[i];
+    SteeredAxle sa;
+    sa.tag = i == 0 ? "" : "_" + a.name;
+    for (int k = 0; k < 2; ++k) {
+      const double sgn = k == 0 ? 1.0 : -1.0;
+      const std::string name = "knuckle" + sa.tag + (k == 0 ? "_left" : "_right");
+      sa.kingpin[k] = Vec3(1, sgn, 1).cwiseProduct(LeftKingpin(d, i, zw[i]));
+      const Vec3 wc(a.x, sgn * 0.5 * a.track, zw[i]);
+      sa.knuckle[k] = AddPart(m, name, d.knuckle, Vec3(a.x, sgn * (0.5 * a.track - 0.5 * d.kingpin_offset), zw[i]),
+                              speed, zero);
+      sa.kingpin_joint[k] = m.AddJoint(std::make_unique<RevoluteJoint>(name + "_kingpin"),
+                                       m.AddMarker(axle_body[i], name + "_kingpin", sa.kingpin[k], I),
+                                       m.AddMarker(sa.knuckle[k], "kingpin", sa.kingpin[k], I));
+      const int jm = wheel(a, sa.knuckle[k], wc, static_cast<int>(2 * i) + k);
+      if (a.driven) add_drive(WheelName(a, k), jm);
+    }
+    return sa;
+  };
+  // one-piece tie rod of a steered axle between trapezoid arms aimed at the
+  // rear axle group's centre
+  auto tie_rod = [&](size_t i, const SteeredAxle& sa) {
+    std::array<Vec3, 2> tr{};
+    for (int k = 0; k < 2; ++k) {
+      const Vec3 dir = (Vec3(x_ref, 0, zw[i]) - sa.kingpin[k]).normalized();
+      tr[k] = sa.kingpin[k] + d.tie_rod_arm_length * dir;
+    }
+    m.AddJoint(std::make_unique<DistanceJoint>("tie_rod" + sa.tag, (tr[0] - tr[1]).norm()),
+               m.AddMarker(sa.knuckle[0], "tie_rod_arm", tr[0], I), m.AddMarker(sa.knuckle[1], "tie_rod_arm", tr[1], I));
+  };
+  const SteeredAxle first = steered_axle(0);
+  const std::array<int, 2>& knuckle = first.knuckle;
+  h.kingpin_joint = first.kingpin_joint;
+  // a second steered axle (8x4) turns by SteerRatio of the first's angle
+  const bool second_steered = n_axles > 1 && d.axles[1].steered;
+  SteeredAxle second;
+  if (second_steered) second = steered_axle(1);
   auto servo = [&](const std::string& name, int joint, double gain) {
     auto target = std::make_shared<ScaledSignal>(steering_wheel, gain);
     m.AddForce(std::make_unique<JointMotor>(name, m.joints[joint].get(), 0, nullptr,
@@ -558,6 +609,9 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, const Truck
   if (!d.steering_linkage) {
     for (int k = 0; k < 2; ++k)
       servo(k == 0 ? "knuckle_left_servo" : "knuckle_right_servo", h.kingpin_joint[k], 1.0 / d.steering_ratio);
+    for (int k = 0; second_steered && k < 2; ++k)
+      servo("knuckle" + second.tag + (k == 0 ? "_left_servo" : "_right_servo"), second.kingpin_joint[k],
+            SteerRatio(d, 1) / d.steering_ratio);
   } else {
     // pitman arm on the frame (axis y) hanging down, ahead of the left kingpin;
     // its ball and the end of the left knuckle's inboard steering arm are
@@ -566,10 +620,10 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, const Truck
     // (steering_arm_height 0) axle heave, brake wind-up and roll move the
     // steering arm's ball across the link and do not steer (roll: to first
     // order).
-    const Vec3 arm_end = SteeringArmBall(d, zf);
-    const Vec3 ball = PitmanBall(d, zf);
-    const Vec3 pivot = SteeringGearPivot(d, zf);
-    const FrameAttachment mount{"steering_gear", SteeringGearMount(d, zf)};
+    const Vec3 arm_end = SteeringArmBall(d, 0, zf);
+    const Vec3 ball = PitmanBall(d, 0, zf);
+    const Vec3 pivot = SteeringGearPivot(d, 0, zf);
+    const FrameAttachment mount{"steering_gear", SteeringGearMount(d, 0, zf)};
     PartData pitman;
     pitman.mass = d.pitman_arm_mass;
     pitman.inertia = Vec3(0.03, 0.03, 0.01);
@@ -578,14 +632,27 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, const Truck
                               frame_marker("steering_gear", pivot, AxisY(), &mount), m.AddMarker(pb, "gear", pivot, AxisY()));
     m.AddJoint(std::make_unique<DistanceJoint>("drag_link", (ball - arm_end).norm()), m.AddMarker(pb, "ball", ball, I),
                m.AddMarker(knuckle[0], "steering_arm", arm_end, I));
-    // one-piece tie rod between trapezoid arms aimed at the rear-axle centre
-    std::array<Vec3, 2> tr{};
-    for (int k = 0; k < 2; ++k) {
-      const Vec3 dir = (Vec3(x_ref, 0, zf) - kingpin[k]).normalized();
-      tr[k] = kingpin[k] + d.tie_rod_arm_length * dir;
+    tie_rod(0, first);
+    if (second_steered) {
+      // the relay arm of the second steered axle, on the frame ahead of it
+      // like the pitman arm, drives that axle's drag link; a relay rod joins
+      // levers above the two arms' pivots, b on the pitman arm and b / r on
+      // the relay arm: whatever the rod's slope, both lever ends move along
+      // x, so the relay arm turns by r times the pitman arm's angle
+      const Vec3 end2 = SteeringArmBall(d, 1, zw[1]), ball2 = PitmanBall(d, 1, zw[1]);
+      const Vec3 pivot2 = SteeringGearPivot(d, 1, zw[1]);
+      const FrameAttachment mount2{"steering_relay", SteeringGearMount(d, 1, zw[1])};
+      const int rb = AddPart(m, "relay_arm", pitman, 0.5 * (ball2 + pivot2), speed, zero);
+      m.AddJoint(std::make_unique<RevoluteJoint>("steering_relay"),
+                 frame_marker("steering_relay", pivot2, AxisY(), &mount2), m.AddMarker(rb, "pivot", pivot2, AxisY()));
+      m.AddJoint(std::make_unique<DistanceJoint>("drag_link" + second.tag, (ball2 - end2).norm()),
+                 m.AddMarker(rb, "ball", ball2, I), m.AddMarker(second.knuckle[0], "steering_arm", end2, I));
+      const double b = d.pitman_arm_length;
+      const Vec3 lever1 = pivot + Vec3(0, 0, b), lever2 = pivot2 + Vec3(0, 0, b / SteerRatio(d, 1));
+      m.AddJoint(std::make_unique<DistanceJoint>("relay_rod", (lever1 - lever2).norm()),
+                 m.AddMarker(pb, "relay_lever", lever1, I), m.AddMarker(rb, "relay_lever", lever2, I));
+      tie_rod(1, second);
     }
-    m.AddJoint(std::make_unique<DistanceJoint>("tie_rod", (tr[0] - tr[1]).norm()),
-               m.AddMarker(knuckle[0], "tie_rod_arm", tr[0], I), m.AddMarker(knuckle[1], "tie_rod_arm", tr[1], I));
     if (!d.steering_column) {
       // the servo (column and gear) turns the pitman arm to -road-wheel angle
       servo("steering_servo", pj, -1.0 / d.steering_ratio);
@@ -626,6 +693,7 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, const Truck
   // the other axles' wheels
   for (size_t i = 1; i < n_axles; ++i) {
     const AxleData& a = d.axles[i];
+    if (a.steered) continue;  // with its knuckles above
     for (int k = 0; k < 2; ++k) {
       const double sgn = k == 0 ? 1.0 : -1.0;
       const int wk = static_cast<int>(2 * i) + k;

@@ -94,7 +94,10 @@ struct AxleData {
   std::string name;
   double x = 0.0;                  ///< axle centre along the vehicle's x [m]; the first axle at 0
   double track = 2.0;              ///< wheel-centre distance (twin tires: their centre) [m]
-  bool steered = false;            ///< knuckles on kingpins, turned by the steering (the first axle only)
+  /// Knuckles on kingpins, turned by the steering: the first axle, and
+  /// optionally the second (8x4: a relay arm on the frame, turned by a rod
+  /// from the pitman arm, drives its drag link; SteerRatio).
+  bool steered = false;
   bool driven = false;             ///< the drive torque is shared equally by the wheels of all driven axles
   double brake_share = 0.5;        ///< this axle's share of the total brake torque [-]; the shares sum to 1
   PartData axle;                   ///< the axle beam (x of cg unused: at x)
@@ -197,6 +200,12 @@ std::string WheelName(const AxleData& a, int side);
 /// last axle, or to its bogie's trunnion (the effective wheelbase of the
 /// single-track model and of the driver).
 double Wheelbase(const TruckData& d);
+
+/// Road-wheel angle of axle i per road-wheel angle of the first axle [-]:
+/// 1 for the first axle, 0 for an unsteered one; a second steered axle (8x4)
+/// turns about the same centre on the rear axle group's centre line,
+/// (x_i + Wheelbase) / Wheelbase (the relay linkage's lever ratio).
+double SteerRatio(const TruckData& d, size_t i);
 
 /// Checks the axles and bogies of `d` (order, names, steering, shares, each
 /// bogie with two axles around its trunnion); throws InputError naming the

@@ -24,6 +24,7 @@
 #include <string>
 
 #include "flexmb/common/error.h"
+#include "flexmb/forces/spring_damper.h"
 #include "truck_harness.h"
 
 namespace flexmb::vehicle::testing {
@@ -207,13 +208,105 @@ TEST(TruckAxles, BadAxleListsAreErrorsNamingTheFileAndTheAxle) {
   EXPECT_NE(e.find("no bogie 'tandem'"), std::string::npos) << e;
   e = ErrorOf6x4With("      x: -2.84", "      x: -2.84\n      steered: true", "bad_steer.yaml");
   EXPECT_NE(e.find("axle 'middle'"), std::string::npos) << e;
-  EXPECT_NE(e.find("only the first axle can be steered"), std::string::npos) << e;
+  EXPECT_NE(e.find("needs an unsteered axle behind it and its own springs"), std::string::npos) << e;
+  e = ErrorOf6x4With("      x: -4.16", "      x: -4.16\n      steered: true", "bad_steer3.yaml");
+  EXPECT_NE(e.find("axle 'rear'"), std::string::npos) << e;
+  EXPECT_NE(e.find("only the first two axles can be steered"), std::string::npos) << e;
   e = ErrorOf6x4With("  kingpin_offset: 0.15", "  kingpin_offset: 0.15\n  wheelbase: 4.2", "bad_key.yaml");
   EXPECT_NE(e.find("bad_key.yaml:"), std::string::npos) << e;
   EXPECT_NE(e.find("wheelbase"), std::string::npos) << e;
+  // a missing part: the truck file's line, not yaml-cpp's "invalid node"
+  e = ErrorOf6x4With("  knuckle:    {mass: 45, inertia: [0.7, 0.7, 0.45]}\n", "", "bad_missing.yaml");
+  EXPECT_NE(e.find("bad_missing.yaml:"), std::string::npos) << e;
+  EXPECT_NE(e.find("missing part 'knuckle'"), std::string::npos) << e;
+  e = ErrorOf6x4With("      beam: {mass: 110,", "      beam: {cg: [0, 0, 1], mass: 110,", "bad_beam.yaml");
+  EXPECT_NE(e.find("no 'cg'"), std::string::npos) << e;
+  e = ErrorOf6x4With("    - name: middle", "    - name: pitman", "bad_name.yaml");
+  EXPECT_NE(e.find("is taken by the truck's other parts"), std::string::npos) << e;
   e = ErrorOf6x4With("      x: -3.5 ", "      x: -4.5 ", "bad_trunnion.yaml");
   EXPECT_NE(e.find("bogie 'rear'"), std::string::npos) << e;
   EXPECT_NE(e.find("between the bogie's axles"), std::string::npos) << e;
+}
+
+// inter-leaf friction of the bogie's springs from the file: the springs'
+// rate law is the damper plus the smoothed Coulomb force; the standing truck
+// still starts in equilibrium (the friction acts on rates only)
+TEST(TruckAxles, LeafSpringFrictionActsOnTheSpringsRate) {
+  std::string text = ReadText(Example6x4());
+  const std::string from = "        spring_damping: 2.5e4\n";
+  size_t at = text.find(from);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, from.size(), from + "        friction_force: 3000\n        friction_velocity: 0.02\n");
+  const std::string tires = "../truck_lane_change/", full = std::string(FLEXMB_SOURCE_DIR) + "/examples/truck_lane_change/";
+  for (size_t p = text.find(tires); p != std::string::npos; p = text.find(tires, p + full.size()))
+    text.replace(p, tires.size(), full);
+  const std::string path = ::testing::TempDir() + "friction_6x4.yaml";
+  std::ofstream(path) << text;
+  const TruckData d = LoadLaneChangeTruck(path);
+  EXPECT_EQ(d.axles[1].suspension.friction_force, 3000.0);
+  EXPECT_EQ(d.axles[2].suspension.friction_force, 0.0);
+  auto zero = std::make_shared<double>(0.0);
+  Model m;
+  BuildTruck(d, 0.0, 0.8, zero, zero, m);
+  const auto& spring = dynamic_cast<const SpringDamper&>(*m.forces[static_cast<size_t>(m.FindForce("middle_spring_left"))]);
+  ASSERT_TRUE(spring.law().force_velocity);
+  EXPECT_NEAR(spring.law().force_velocity->Value(0.02), 2.5e4 * 0.02 + 3000.0 * std::tanh(1.0), 1e-9);
+  const auto& rear = dynamic_cast<const SpringDamper&>(*m.forces[static_cast<size_t>(m.FindForce("rear_spring_left"))]);
+  EXPECT_FALSE(rear.law().force_velocity);
+  TruckSample last;
+  RunTruck(d, 0.0, 0.0, 1.0, false, [&](const TruckSample& sample) { last = sample; });
+  const std::vector<double> loads = StaticAxleLoads(d, 9.81);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(last.axle_load[i], loads[i], 2e-3 * loads[i]) << i;
+}
+
+std::string Example8x4() { return std::string(FLEXMB_SOURCE_DIR) + "/examples/truck_8x4/truck.yaml"; }
+
+// The 8x4 (examples/truck_8x4): the second steered axle turns by the
+// Ackermann ratio r = (x_2 + L) / L of the first axle's angle (the relay
+// rod's levers b and b / r), here at 5 m/s with a held steering-wheel angle,
+// both left knuckles' kingpin angles; the three supports (two front axles on
+// their springs and the bogie) start in equilibrium: the standing truck's
+// tire loads equal the static loads.
+TEST(TruckAxles, SecondSteeredAxleTurnsByTheAckermannRatio) {
+  const TruckData d = LoadLaneChangeTruck(Example8x4());
+  ASSERT_EQ(d.axles.size(), 4u);
+  ASSERT_TRUE(d.axles[1].steered);
+  const double L = Wheelbase(d), r = SteerRatio(d, 1);
+  EXPECT_NEAR(L, 5.74, 1e-12);  // to the trunnion
+  EXPECT_NEAR(r, (-1.9 + 5.74) / 5.74, 1e-12);
+  auto steer = std::make_shared<double>(0.0), torque = std::make_shared<double>(0.0);
+  Model m;
+  m.solver.dt = 0.004;
+  m.solver.dt_min = 1e-8;
+  m.solver.newton_tol = 1e-8;
+  const TruckHandles h = BuildTruck(d, 5.0, 0.8, steer, torque, m);
+  const int second = m.FindJoint("knuckle_second_left_kingpin");
+  ASSERT_GE(second, 0);
+  ASSERT_GE(m.FindJoint("relay_rod"), 0);
+  m.Finalize();
+  Simulator sim(m);
+  sim.Initialize();
+  double first_angle = 0, second_angle = 0;
+  sim.Run(3.0, 0.0, [&](const State& st, const Workspace& ws) {
+    auto angle = [&](int joint) {
+      const Joint& j = *m.joints[static_cast<size_t>(joint)];
+      return j.Coordinate(0, ws.markers[j.marker_i], ws.markers[j.marker_j], nullptr);
+    };
+    first_angle = angle(h.kingpin_joint[0]);
+    second_angle = angle(second);
+    *steer = d.steering_ratio * 0.05 * std::min(1.0, st.t);  // 0.05 rad at the road wheels
+  });
+  EXPECT_GT(first_angle, 0.03);
+  EXPECT_NEAR(second_angle / first_angle, r, 0.01 * r);
+  // standing: the static loads of the three supports hold
+  const std::vector<double> loads = StaticAxleLoads(d, 9.81);
+  double total = 0;
+  for (double w : loads) total += w;
+  EXPECT_NEAR(total / 9.81, 30000.0, 2000.0);
+  TruckSample last;
+  RunTruck(d, 0.0, 0.0, 2.0, false, [&](const TruckSample& sample) { last = sample; });
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(last.axle_load[i], loads[i], 2e-3 * loads[i]) << i;
+  EXPECT_NEAR(loads[2], loads[3], 1e-9 * loads[2]);  // the trunnion midway
 }
 
 // a mistyped element size of the generated frame: an error in the file's

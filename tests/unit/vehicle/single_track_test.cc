@@ -21,7 +21,7 @@ namespace {
 
 SingleTrack SingleTrackExample() {
   SingleTrack s;
-  s.axles = {{0.0, 39000.0, 3.0e5, 0.045, 0.55, true}, {-4.2, 78000.0, 9.0e5, 0.045, 0.5, false}};
+  s.axles = {{0.0, 39000.0, 3.0e5, 0.045, 0.55, 1.0}, {-4.2, 78000.0, 9.0e5, 0.045, 0.5, 0.0}};
   s.steering_ratio = 20.0;
   s.mass = 117000.0 / 9.81;
   s.yaw_inertia = 58000.0;
@@ -48,7 +48,7 @@ TEST(SingleTrack, TwoAxlesTheClassicalWheelbaseAndUndersteerGradient) {
 TEST(SingleTrack, TandemEquivalentWheelbaseAndSteadyTurn) {
   SingleTrack s;
   const double c1 = 3.0e5, c2 = 5.0e5, c3 = 4.0e5, x2 = -3.6, x3 = -4.9;
-  s.axles = {{0.0, 60000.0, c1, 0.0, 0.0, true}, {x2, 85000.0, c2, 0.0, 0.0, false}, {x3, 80000.0, c3, 0.0, 0.0, false}};
+  s.axles = {{0.0, 60000.0, c1, 0.0, 0.0, 1.0}, {x2, 85000.0, c2, 0.0, 0.0, 0.0}, {x3, 80000.0, c3, 0.0, 0.0, 0.0}};
   s.mass = 225000.0 / 9.81;
   s.steering_ratio = 20.0;
   s.SetSteadyState(9.81);
@@ -61,7 +61,7 @@ TEST(SingleTrack, TandemEquivalentWheelbaseAndSteadyTurn) {
     Eigen::Matrix2d A = Eigen::Matrix2d::Zero();
     Eigen::Vector2d rhs = Eigen::Vector2d::Zero();
     for (const SingleTrack::Axle& ax : s.axles) {
-      const double p = ax.x - xc, c = ax.cornering_stiffness, delta = ax.steered ? 1.0 : 0.0;
+      const double p = ax.x - xc, c = ax.cornering_stiffness, delta = ax.steer;
       // F = c (delta - beta - p rho)
       A(0, 0) += c;
       A(0, 1) += c * p;
@@ -104,6 +104,26 @@ TEST(SingleTrack, WithoutLagAndTrailTheClassicalTransferFunction) {
     const std::complex<double> got = s.FrequencyResponse(f, v, 0.0).yaw_rate;
     EXPECT_NEAR(std::abs(got - ref), 0.0, 1e-12 * std::abs(ref)) << f;
   }
+}
+
+// Two steered axles (8x4 front) and one rear axle: with the second axle's
+// steer ratio of the Ackermann geometry, r = (x_2 - x_3) / (x_1 - x_3), every
+// axle rolls without slip at low speed about a centre on the rear axle's
+// line, so the equivalent wheelbase is the distance to the rear axle.
+TEST(SingleTrack, AckermannSecondSteeredAxleTurnsAboutTheRearAxle) {
+  SingleTrack s;
+  const double x2 = -1.9, x3 = -6.0;
+  s.axles = {{0.0, 60000.0, 3.0e5, 0.0, 0.0, 1.0},
+             {x2, 60000.0, 3.2e5, 0.0, 0.0, (x2 - x3) / (0.0 - x3)},
+             {x3, 150000.0, 8.0e5, 0.0, 0.0, 0.0}};
+  s.mass = 270000.0 / 9.81;
+  s.steering_ratio = 20.0;
+  s.SetSteadyState(9.81);
+  EXPECT_NEAR(s.wheelbase, -x3, 1e-12);
+  // without the second axle's steering it would turn wider
+  s.axles[1].steer = 0.0;
+  s.SetSteadyState(9.81);
+  EXPECT_GT(s.wheelbase, -x3 + 0.3);
 }
 
 }  // namespace
