@@ -29,8 +29,8 @@ if command -v pvbatch > /dev/null && command -v xvfb-run > /dev/null; then
     --png "$out/truck_elastic/views" --stride 10 || echo "(ParaView render skipped: no virtual display)"
 fi
 echo "truck demo: $(( ($(date +%s%N) - start) / 1000000 )) ms wall time (two runs, the frame's reduction and plots)"
-echo "== a three-axle 6x4 with a balancer bogie (examples/truck_6x4): the same lane change at 45 km/h, rigid frame"
-"$bin" run examples/truck_6x4/truck.yaml --out "$out/truck_6x4" --speed 45
+echo "== a three-axle 6x4 with a balancer bogie (examples/truck_6x4): the same lane change at 40 km/h, rigid frame"
+"$bin" run examples/truck_6x4/truck.yaml --out "$out/truck_6x4" --speed 40
 cat "$out/truck_6x4/summary.json"; echo
 echo "== truck handling: step steer at 60 km/h (ISO 14793), constant steering-wheel angle (ISO 14792), braking in a turn"
 for t in step-steer constant-steer brake-in-turn; do
