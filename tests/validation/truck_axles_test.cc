@@ -166,6 +166,17 @@ TEST(TruckAxles, BogieStaticAxleLoadsMatchTheHandCalculationAndTheStandingTruck)
   }
 }
 
+// writes the 6x4 example's text `text` to the temporary folder as `name`,
+// its tires named by their full paths; returns the path
+std::string Write6x4(std::string text, const std::string& name) {
+  const std::string tires = "../truck_lane_change/", full = std::string(FLEXMB_SOURCE_DIR) + "/examples/truck_lane_change/";
+  for (size_t p = text.find(tires); p != std::string::npos; p = text.find(tires, p + full.size()))
+    text.replace(p, tires.size(), full);
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
 // the error of loading the 6x4 example with `from` replaced by `to` in its text
 std::string ErrorOf6x4With(const std::string& from, const std::string& to, const std::string& name) {
   std::string text = ReadText(Example6x4());
@@ -173,12 +184,7 @@ std::string ErrorOf6x4With(const std::string& from, const std::string& to, const
   EXPECT_NE(at, std::string::npos) << from;
   if (at == std::string::npos) return "";
   text.replace(at, from.size(), to);
-  // in the temporary folder, the tires named by their full paths
-  const std::string tires = "../truck_lane_change/", full = std::string(FLEXMB_SOURCE_DIR) + "/examples/truck_lane_change/";
-  for (size_t p = text.find(tires); p != std::string::npos; p = text.find(tires, p + full.size()))
-    text.replace(p, tires.size(), full);
-  const std::string path = ::testing::TempDir() + name;
-  std::ofstream(path) << text;
+  const std::string path = Write6x4(text, name);
   std::string e;
   try {
     LoadLaneChangeTruck(path);
@@ -237,12 +243,7 @@ TEST(TruckAxles, LeafSpringFrictionActsOnTheSpringsRate) {
   size_t at = text.find(from);
   ASSERT_NE(at, std::string::npos);
   text.replace(at, from.size(), from + "        friction_force: 3000\n        friction_velocity: 0.02\n");
-  const std::string tires = "../truck_lane_change/", full = std::string(FLEXMB_SOURCE_DIR) + "/examples/truck_lane_change/";
-  for (size_t p = text.find(tires); p != std::string::npos; p = text.find(tires, p + full.size()))
-    text.replace(p, tires.size(), full);
-  const std::string path = ::testing::TempDir() + "friction_6x4.yaml";
-  std::ofstream(path) << text;
-  const TruckData d = LoadLaneChangeTruck(path);
+  const TruckData d = LoadLaneChangeTruck(Write6x4(text, "friction_6x4.yaml"));
   EXPECT_EQ(d.axles[1].suspension.friction_force, 3000.0);
   EXPECT_EQ(d.axles[2].suspension.friction_force, 0.0);
   auto zero = std::make_shared<double>(0.0);

@@ -89,6 +89,23 @@ TEST(SpringDamper, CoincidentOriginsThrow) {
   EXPECT_THROW(SpringDamper("bad", Linear(-1.0, 0.0, 1.0, 0.0)), InputError);
 }
 
+// A mass m on a prismatic joint along z from the ground, held by a spring
+// of law `law`, released at height z0 and rest, no gravity; returns the
+// body's index.
+int AddSpringMass(Model& model, double m, double z0, const SpringDamperLaw& law) {
+  model.gravity_W.setZero();
+  RigidBodyData d;
+  d.mass = m;
+  d.inertia_C = 0.1 * Mat3::Identity();
+  d.p_WB = Vec3(0, 0, z0);
+  const int b = model.AddBody(std::make_unique<RigidBody>("mass", d));
+  const int g = model.AddMarker(0, "anchor", Vec3::Zero(), Mat3::Identity());
+  const int s = model.AddMarker(b, "slide", Vec3::Zero(), Mat3::Identity());
+  model.AddJoint(std::make_unique<PrismaticJoint>("slide"), g, s);
+  model.AddForce(std::make_unique<SpringDamper>("spring", law), g, s);
+  return b;
+}
+
 // A 2 kg mass on a prismatic joint along z held by a spring (k = 50 N/m,
 // free length 0.8 m), released 0.2 m stretched: x(t) of the linear
 // oscillator, x0 e^(-zeta w t) (cos wd t + zeta w / wd sin wd t).
@@ -96,16 +113,7 @@ void RunSpringMass(double zeta) {
   const double m = 2.0, k = 50.0, l0 = 0.8, x0 = 0.2;
   const double w = std::sqrt(k / m), c = 2.0 * zeta * std::sqrt(k * m);
   Model model;
-  model.gravity_W.setZero();
-  RigidBodyData d;
-  d.mass = m;
-  d.inertia_C = 0.1 * Mat3::Identity();
-  d.p_WB = Vec3(0, 0, l0 + x0);
-  const int b = model.AddBody(std::make_unique<RigidBody>("mass", d));
-  const int g = model.AddMarker(0, "anchor", Vec3::Zero(), Mat3::Identity());
-  const int s = model.AddMarker(b, "slide", Vec3::Zero(), Mat3::Identity());
-  model.AddJoint(std::make_unique<PrismaticJoint>("slide"), g, s);
-  model.AddForce(std::make_unique<SpringDamper>("spring", Linear(k, c, l0, 0.0)), g, s);
+  const int b = AddSpringMass(model, m, l0 + x0, Linear(k, c, l0, 0.0));
   model.solver.dt = 1e-3;
   model.solver.rho_inf = 1.0;
   model.Finalize();
@@ -163,19 +171,10 @@ TEST(SpringDamper, ViscousCoulombLawAndTangents) {
 TEST(SpringDamper, CoulombFrictionAmplitudeFallsBy2FOverKEveryHalfPeriod) {
   const double m = 2.0, k = 50.0, l0 = 0.8, x0 = 0.2, F = 0.5;
   const double w = std::sqrt(k / m);
-  Model model;
-  model.gravity_W.setZero();
-  RigidBodyData d;
-  d.mass = m;
-  d.inertia_C = 0.1 * Mat3::Identity();
-  d.p_WB = Vec3(0, 0, l0 + x0);
-  const int b = model.AddBody(std::make_unique<RigidBody>("mass", d));
-  const int g = model.AddMarker(0, "anchor", Vec3::Zero(), Mat3::Identity());
-  const int s = model.AddMarker(b, "slide", Vec3::Zero(), Mat3::Identity());
-  model.AddJoint(std::make_unique<PrismaticJoint>("slide"), g, s);
   SpringDamperLaw law = Linear(k, 0.0, l0, 0.0);
   law.force_velocity = std::make_shared<ViscousCoulombFunction>(0.0, F, 1e-4);
-  model.AddForce(std::make_unique<SpringDamper>("spring", law), g, s);
+  Model model;
+  const int b = AddSpringMass(model, m, l0 + x0, law);
   model.solver.dt = 2e-4;
   model.solver.rho_inf = 1.0;
   model.Finalize();
