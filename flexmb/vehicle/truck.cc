@@ -600,6 +600,7 @@ TruckHandles BuildTruck(const TruckData& d, double speed, double mu, const Truck
   const bool second_steered = n_axles > 1 && d.axles[1].steered;
   SteeredAxle second;
   if (second_steered) second = steered_axle(1);
+  h.steered_axles = second_steered ? 2 : 1;
   auto servo = [&](const std::string& name, int joint, double gain) {
     auto target = std::make_shared<ScaledSignal>(steering_wheel, gain);
     m.AddForce(std::make_unique<JointMotor>(name, m.joints[joint].get(), 0, nullptr,

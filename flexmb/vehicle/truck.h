@@ -244,12 +244,13 @@ struct TruckHandles {
   std::vector<int> tire_force;         ///< tire force elements, per axle left then right (FL, FR, RL, RR, ...)
   std::vector<int> wheel_marker;       ///< wheel-centre markers, as tire_force
   std::vector<double> wheel_centre_z;  ///< static wheel-centre height per axle [m]
-  std::array<int, 2> kingpin_joint{};  ///< kingpin revolutes: left, right
+  std::array<int, 2> kingpin_joint{};  ///< the first axle's kingpin revolutes: left, right
   /// Per body of the model: the index of the axle whose unsprung part it is
-  /// (its axle, arm, hub, wheels, contact patches, the first axle's
+  /// (its axle, arm, hub, wheels, contact patches, a steered axle's
   /// knuckles, a bogie's beams: its rear axle), -1 for the frame and the
   /// parts on it.
   std::vector<int> body_axle;
+  int steered_axles = 1;               ///< the first axles that are steered: 1, or 2 (8x4)
 };
 
 /// The truck's inputs as functions of time: the steering-wheel angle [rad],

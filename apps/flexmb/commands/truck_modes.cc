@@ -29,10 +29,11 @@ void TruckModesFileSettings(const std::string& path, std::string& frame, double&
   mu = t["road_mu"] ? t["road_mu"].as<double>() : 0.8;
 }
 
-// 0: sprung parts, 1: the front axle's group, 2: the other axles' (TruckHandles::body_axle)
+// 0: sprung parts, 1: the steered axles' group ("front axle"), 2: the
+// other axles' ("rear axle"; TruckHandles::body_axle)
 int TruckModesGroup(const vehicle::TruckHandles& h, size_t body) {
   const int axle = body < h.body_axle.size() ? h.body_axle[body] : -1;
-  return axle < 0 ? 0 : axle == 0 ? 1 : 2;
+  return axle < 0 ? 0 : axle < h.steered_axles ? 1 : 2;
 }
 
 // velocity coordinates of the rigid motions of the bodies of group g about
