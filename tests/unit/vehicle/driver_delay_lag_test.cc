@@ -5,7 +5,8 @@
 // first-order response u (1 - exp(-t / tau_n)); both together compose.
 // The target is made to jump by moving the vehicle sideways off the centre
 // line of the course (the preview law's target for a lateral offset, read
-// from a driver without delay or lag).
+// from a driver without delay or lag). The steering law's own wheelbase
+// (VehicleView::steering_wheelbase) against the law's formula.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -106,6 +107,31 @@ TEST(DriverDelayLag, LongDelayWithManySamplesAndBadValues) {
     b.neuromuscular_lag = bad;
     EXPECT_THROW(Driver(b, course, 10.0), InputError);
   }
+}
+
+// VehicleView::steering_wheelbase (a multi-axle truck's equivalent
+// wheelbase) enters the steering law, road angle = atan((L_s + K v^2 / g)
+// kappa), and not the preview point, which stays `wheelbase` ahead of the
+// rear axle
+TEST(DriverDelayLag, SteeringWheelbaseScalesTheLawNotThePreviewPoint) {
+  const LaneChangeCourse course(LaneChangeCourseData{});
+  const DriverData d = DriverDelayData();
+  auto road = [&](double steering_wheelbase, double wheelbase) {
+    Driver drv(d, course, 10.0);
+    for (const double t : {0.0, 0.01}) {  // the first sample starts the driver's clock
+      VehicleView v = DriverDelayView(t, 0.3);
+      v.wheelbase = wheelbase;
+      v.steering_wheelbase = steering_wheelbase;
+      drv.Update(v);
+    }
+    return std::tan(*drv.steering_wheel_angle() / d.steering_ratio);
+  };
+  const double k = d.understeer_gradient * 100.0 / 9.81;
+  const double base = road(0.0, 4.0);
+  ASSERT_GT(std::abs(base), 1e-3);
+  EXPECT_NEAR(road(6.0, 4.0) / base, (6.0 + k) / (4.0 + k), 1e-12);
+  EXPECT_EQ(road(4.0, 4.0), base);
+  EXPECT_GT(std::abs(road(6.0, 6.0) / base - (6.0 + k) / (4.0 + k)), 1e-3);  // the preview point moves too
 }
 
 }  // namespace
