@@ -39,9 +39,11 @@ struct SingleTrack {
   /// so that the lateral forces balance about points t behind the axles,
   /// F_yf (a - t_f) = F_yr (b + t_r), F_yf + F_yr = m a_y (Pacejka, Tire and
   /// Vehicle Dynamics, 3rd ed., sec. 1.3; t = 0 gives W_f / C_f - W_r /
-  /// C_r). More axles: the same two balances with every axle's force, which
-  /// makes L longer than the distance to the rear axles' centre (a tandem
-  /// resists the turn; docs/validation.md, "Multi-axle single-track model").
+  /// C_r). More axles: the same two balances with every axle's force and
+  /// steer ratio; an unsteered tandem makes L longer than the distance to
+  /// its centre (it resists the turn), a second axle steered at the
+  /// Ackermann ratio keeps it (docs/validation.md, "Trucks with any number
+  /// of axles").
   double wheelbase = 0.0;
   double understeer_gradient = 0.0;
   double steering_ratio = 1.0;     ///< steering-wheel / road-wheel angle [-]

@@ -370,7 +370,7 @@ def test_multi_axle_step_steer_yaw_rate_gain_against_the_single_track(cli, sourc
     r_ss = sum(math.radians(r["yaw_rate_degps"]) for r in steady) / len(steady)
     delta_sw = math.radians(summary["steering_wheel_angle_deg"])
     print(f"{example} yaw-rate gain {r_ss / delta_sw:.4f} against {gain_ref:.4f} 1/s")
-    # measured 0.1670 against 0.1682 (6x4), 0.1075 against 0.1070 1/s (8x4)
+    # measured 0.1670 against 0.1682 (6x4), 0.1075 against 0.1071 1/s (8x4)
     assert r_ss / delta_sw == pytest.approx(gain_ref, rel=0.02)
     assert summary["single_track_yaw_rate_gain"] == pytest.approx(gain_ref, rel=2e-3)
     assert summary["wheelbase"] > -x_ref + 0.2  # the tandem's equivalent wheelbase beyond the trunnion
