@@ -40,7 +40,36 @@ void IntegrateQuad(const fe::Mesh& mesh, const fe::Element& e, F f) {
     }
 }
 
+// the platform's data against itself and the frame
+template <class Fail>
+void CheckPlatform(const LadderFrameData& p, Fail fail) {
+  const PlatformData& pl = p.platform;
+  for (double v : {pl.length, pl.width, pl.spacer, pl.sill_height, pl.sill_flange_width, pl.sill_thickness,
+                   pl.bearer_spacing, pl.bearer_thickness, pl.side_rail_thickness, pl.bracket_length,
+                   pl.bracket_thickness, pl.bearer_flange_width, pl.side_rail_flange_width, pl.mass})
+    if (!(v > 0) || !std::isfinite(v)) fail("platform: dimensions, thicknesses and mass must be positive");
+  if (!std::isfinite(pl.front_x)) fail("platform: front_x must be finite");
+  if (!(0.5 * pl.width > p.half_spacing + p.element_size))
+    fail("platform: width " + std::to_string(pl.width) + " m leaves no overhang beyond the rails (half spacing " +
+         std::to_string(p.half_spacing) + " m)");
+  if (pl.sill_flange_width >= p.half_spacing) fail("platform: the sill flanges must not reach the centre plane");
+  if (!(0.5 * pl.width - pl.side_rail_flange_width > p.half_spacing))
+    fail("platform: the side rails' flanges reach the sills (width " + std::to_string(pl.width) +
+         " m, side_rail_flange_width " + std::to_string(pl.side_rail_flange_width) + " m)");
+  if (pl.brackets.size() < 2) fail("platform: give at least two 'brackets' (x of the brackets on the rails)");
+  const double rear_x = p.front_x - p.length, prear = pl.front_x - pl.length;
+  for (double xb : pl.brackets) {
+    const double lo = xb - 0.5 * pl.bracket_length, hi = xb + 0.5 * pl.bracket_length;
+    if (!std::isfinite(xb) || lo < std::max(rear_x, prear) - 1e-9 || hi > std::min(p.front_x, pl.front_x) + 1e-9)
+      fail("platform: the bracket at x = " + std::to_string(xb) + " m is not under the platform and on the rails");
+  }
+}
+
 }  // namespace
+
+double PlatformTopZ(const LadderFrameData& p) {
+  return p.bottom_z + p.web_height + p.platform.spacer + p.platform.sill_height;
+}
 
 LadderFrame GenerateLadderFrame(const LadderFrameData& p, const std::vector<FrameAttachment>& attachments) {
   auto fail = [](const std::string& what) { throw InputError(what, {"", 0, "ladder frame"}); };
@@ -54,10 +83,18 @@ LadderFrame GenerateLadderFrame(const LadderFrameData& p, const std::vector<Fram
   // a mistyped element size must not take the memory or overflow
   const double estimate = (p.length / h) * (2 * (p.web_height + 2 * p.flange_width) / h + 1) +
                           p.cross_members.size() * (2 * p.half_spacing / h) * (p.web_height / h + 1);
-  if (!(estimate <= kMaxLadderFrameShells)) {
+  const PlatformData& pl = p.platform;
+  const bool platform = pl.present;
+  if (platform) CheckPlatform(p, fail);
+  const double platform_estimate =
+      platform ? (pl.length / h) * (2 * (pl.sill_height + 2 * pl.sill_flange_width) / h + 2 * pl.sill_height / h + 2) +
+                     (pl.length / pl.bearer_spacing + 2) * (pl.width / h + 3) * (pl.sill_height / h + 1) +
+                     pl.brackets.size() * 2 * (pl.bracket_length / h + 1) * (pl.spacer / h + 1)
+               : 0.0;
+  if (!(estimate + platform_estimate <= kMaxLadderFrameShells)) {
     char buf[160];
     std::snprintf(buf, sizeof buf, "element_size %g m makes about %.3g shells, more than %d: raise it (0.04 m: about 5,500)",
-                  h, estimate, kMaxLadderFrameShells);
+                  h, estimate + platform_estimate, kMaxLadderFrameShells);
     fail(buf);
   }
   const int nx = Divisions(p.length, h), nz = Divisions(p.web_height, h), nf = Divisions(p.flange_width, h);
@@ -76,7 +113,12 @@ LadderFrame GenerateLadderFrame(const LadderFrameData& p, const std::vector<Fram
   steel.G = p.E / (2 * (1 + p.nu));
   steel.rho = p.rho;
   mesh.materials.push_back(steel);
-  for (double t : {p.thickness, p.cross_member_thickness}) {
+  // sections in the order of LadderSection, the platform's only with one
+  std::vector<double> thickness = {p.thickness, p.cross_member_thickness};
+  if (platform)
+    thickness.insert(thickness.end(), {pl.sill_thickness, pl.bearer_thickness, pl.side_rail_thickness,
+                                       pl.bracket_thickness});
+  for (double t : thickness) {
     fe::ShellSection s;
     s.id = static_cast<int>(mesh.shell_sections.size()) + 1;
     s.material = 0;
@@ -110,26 +152,105 @@ LadderFrame GenerateLadderFrame(const LadderFrameData& p, const std::vector<Fram
   };
   for (double side : {-1.0, 1.0}) {
     const double y = side * p.half_spacing;
-    patch(0, nx, nz, [&](int i, int j) { return fe::Vec3(rear_x + i * dx, y, z0 + j * dz); });
+    patch(kRailSection, nx, nz, [&](int i, int j) { return fe::Vec3(rear_x + i * dx, y, z0 + j * dz); });
     for (double zf : {z0, z0 + p.web_height})
-      patch(0, nx, nf, [&](int i, int j) { return fe::Vec3(rear_x + i * dx, y - side * j * df, zf); });
+      patch(kRailSection, nx, nf, [&](int i, int j) { return fe::Vec3(rear_x + i * dx, y - side * j * df, zf); });
   }
   for (double xc : p.cross_members) {
     if (xc > p.front_x + 1e-9 || xc < rear_x - 1e-9) fail("cross member at x = " + std::to_string(xc) + " m is off the rails");
     // on the rails' grid so that it shares the web nodes
     const double x = rear_x + std::round((xc - rear_x) / dx) * dx;
-    patch(1, ny, nz, [&](int i, int j) { return fe::Vec3(x, -p.half_spacing + i * dy, z0 + j * dz); });
+    patch(kCrossMemberSection, ny, nz,
+          [&](int i, int j) { return fe::Vec3(x, -p.half_spacing + i * dy, z0 + j * dz); });
+  }
+  if (platform) {
+    // on the rails' x grid (extended beyond the rails where the platform
+    // overhangs them), so that the brackets share the rails' web nodes
+    auto grid = [&](double x) { return static_cast<int>(std::lround((x - rear_x) / dx)); };
+    auto xi = [&](int i) { return rear_x + i * dx; };
+    const int i0 = grid(pl.front_x - pl.length), i1 = std::max(i0 + 1, grid(pl.front_x));
+    const double z_top = z0 + p.web_height, zs0 = z_top + pl.spacer, zs1 = zs0 + pl.sill_height;
+    const int nzs = Divisions(pl.sill_height, h), nsp = Divisions(pl.spacer, h);
+    const double dzs = pl.sill_height / nzs, dsp = pl.spacer / nsp;
+    // the y stations shared by the cross bearers, the sills' webs and flanges
+    // and the side rails' webs and flanges
+    const double hs = p.half_spacing, we = 0.5 * pl.width, fr = pl.side_rail_flange_width, fs = pl.sill_flange_width;
+    const std::vector<double> breaks = {-we, -we + fr, -hs, -hs + fs, hs - fs, hs, we - fr, we};
+    std::vector<double> ys;
+    std::vector<int> first;  // index in ys of each break
+    for (size_t k = 0; k + 1 < breaks.size(); ++k) {
+      first.push_back(static_cast<int>(ys.size()));
+      const int n = Divisions(breaks[k + 1] - breaks[k], h);
+      for (int j = 0; j < n; ++j) ys.push_back(breaks[k] + j * (breaks[k + 1] - breaks[k]) / n);
+    }
+    first.push_back(static_cast<int>(ys.size()));
+    ys.push_back(we);
+    // the stations of the segment [breaks[k], breaks[k + 1]], walked from `from` (k or k + 1)
+    auto segment = [&](size_t k) { return first[k + 1] - first[k]; };
+    for (double side : {-1.0, 1.0}) {
+      const double y = side * hs, ye = side * we;
+      const size_t sill_flange = side < 0 ? 2 : 4, rail_flange = side < 0 ? 0 : 6;
+      // sill: web and two flanges inwards
+      patch(kSillSection, i1 - i0, nzs, [&](int i, int j) { return fe::Vec3(xi(i0 + i), y, zs0 + j * dzs); });
+      for (double zf : {zs0, zs1})
+        patch(kSillSection, i1 - i0, segment(sill_flange),
+              [&](int i, int j) { return fe::Vec3(xi(i0 + i), ys[static_cast<size_t>(first[sill_flange] + j)], zf); });
+      // side rail: web and a bottom flange inwards
+      patch(kSideRailSection, i1 - i0, nzs, [&](int i, int j) { return fe::Vec3(xi(i0 + i), ye, zs0 + j * dzs); });
+      patch(kSideRailSection, i1 - i0, segment(rail_flange),
+            [&](int i, int j) { return fe::Vec3(xi(i0 + i), ys[static_cast<size_t>(first[rail_flange] + j)], zs0); });
+      // brackets: shear plates over the spacer gap, rail web top to sill web bottom
+      for (double xb : pl.brackets) {
+        const int b0 = grid(xb - 0.5 * pl.bracket_length), b1 = std::max(b0 + 1, grid(xb + 0.5 * pl.bracket_length));
+        patch(kBracketSection, b1 - b0, nsp, [&](int i, int j) { return fe::Vec3(xi(b0 + i), y, z_top + j * dsp); });
+      }
+    }
+    // cross bearers at both ends and evenly between, across the whole width:
+    // a web and a top flange pointing into the platform (beside the sills'
+    // top flanges, not over them)
+    const int nb = std::max(1, static_cast<int>(std::ceil((i1 - i0) * dx / pl.bearer_spacing - 1e-9)));
+    const int kf = std::max(1, static_cast<int>(std::lround(pl.bearer_flange_width / dx)));
+    std::vector<int> bearers;
+    for (int k = 0; k <= nb; ++k) {
+      const int i = i0 + static_cast<int>(std::lround(static_cast<double>(k) * (i1 - i0) / nb));
+      if (!bearers.empty() && i - bearers.back() <= 2 * kf)
+        fail("platform: cross bearers " + std::to_string((i - bearers.back()) * dx) +
+             " m apart leave no room for their flanges (bearer_flange_width " + std::to_string(pl.bearer_flange_width) +
+             " m): raise bearer_spacing");
+      bearers.push_back(i);
+    }
+    const int nys = static_cast<int>(ys.size()) - 1;
+    for (int i : bearers) {
+      const double x = xi(i);
+      patch(kBearerSection, nys, nzs,
+            [&](int a, int j) { return fe::Vec3(x, ys[static_cast<size_t>(a)], zs0 + j * dzs); });
+      const int dir = i == i1 ? -1 : 1;
+      for (size_t k = 0; k + 1 < breaks.size(); ++k)
+        if (k != 2 && k != 4)
+          patch(kBearerSection, segment(k), kf,
+                [&](int a, int m) { return fe::Vec3(xi(i + dir * m), ys[static_cast<size_t>(first[k] + a)], zs1); });
+    }
   }
   mesh.IndexNodes();
 
-  // steel mass, then the non-structural mass of the rails
-  double steel_mass = 0.0, rail_area = 0.0;
+  // steel mass, then the non-structural mass of the rails and the platform
+  double steel_mass = 0.0, rail_area = 0.0, platform_steel = 0.0, platform_area = 0.0;
   for (const fe::Element& e : mesh.elements)
     IntegrateQuad(mesh, e, [&](const fe::Vec3&, double dA) {
-      steel_mass += ArealDensity(mesh, e) * dA;
-      if (e.property == 0) rail_area += dA;
+      (e.property <= kCrossMemberSection ? steel_mass : platform_steel) += ArealDensity(mesh, e) * dA;
+      if (e.property == kRailSection) rail_area += dA;
+      if (e.property == kSillSection || e.property == kBearerSection) platform_area += dA;
     });
   out.steel_mass = steel_mass;
+  out.platform_steel_mass = platform_steel;
+  if (platform) {
+    if (pl.mass < platform_steel * (1 - 1e-12))
+      fail("platform mass " + std::to_string(pl.mass) + " kg is below its steel mass " + std::to_string(platform_steel) +
+           " kg");
+    out.platform_nsm = (pl.mass - platform_steel) / platform_area;
+    for (int k : {kSillSection, kBearerSection})
+      mesh.shell_sections[static_cast<size_t>(k)].nsm = out.platform_nsm;
+  }
   if (p.total_mass > 0) {
     if (p.total_mass < steel_mass * (1 - 1e-12))
       fail("total mass " + std::to_string(p.total_mass) + " kg is below the steel mass " + std::to_string(steel_mass) +

@@ -21,6 +21,42 @@ namespace flexmb::vehicle {
 /// an element size that makes more.
 inline constexpr int kMaxLadderFrameShells = 200000;
 
+/// The steel structure of a flatbed platform on the frame (the seed's FE
+/// model was "the frame and the platform"), of shells like the frame: two
+/// longitudinal sills (C channels, flanges inwards) above the rails, cross
+/// bearers (a web in a y-z plane and a top flange into the platform, as
+/// deep as the sills) across the whole width at most `bearer_spacing`
+/// apart, and a side rail (a web in an x-z plane with a bottom flange
+/// inwards) along each edge; they share their nodes where they meet. The
+/// sills rest on a spacer strip (wood, much softer than the steel: not
+/// modelled, as the seed leaves out the wooden deck and the attachments)
+/// and are joined to the rails only by brackets: shear plates in the webs'
+/// planes bridging the spacer gap over `bracket_length`, sharing the nodes
+/// of the rail's web top edge and of the sill's web bottom edge. The deck,
+/// sides and fittings are the non-structural mass `mass` minus the steel,
+/// smeared over the sills and cross bearers (on the thin side rails' webs
+/// it makes a cluster of nearly equal local modes that a kept-mode count
+/// would cut through). All in the vehicle frame [m].
+struct PlatformData {
+  bool present = false;              ///< whether the frame carries the platform
+  double length = 0.0;               ///< platform length [m]
+  double front_x = 0.0;              ///< x of the platform's front end (runs to front_x - length) [m]
+  double width = 2.5;                ///< outer width (side rails at +-width / 2) [m]
+  double spacer = 0.02;              ///< gap between the rails' top flanges and the sills' bottom flanges [m]
+  double sill_height = 0.12;         ///< depth of the sills, cross bearers and side rails [m]
+  double sill_flange_width = 0.06;   ///< sill flange width, from the web inwards [m]
+  double sill_thickness = 0.005;     ///< [m]
+  double bearer_spacing = 0.6;       ///< largest spacing of the cross bearers (one at each end) [m]
+  double bearer_thickness = 0.004;   ///< [m]
+  double side_rail_thickness = 0.004;  ///< [m]
+  std::vector<double> brackets;      ///< x of the brackets' centres, on both sides [m]; at least two
+  double bracket_length = 0.2;       ///< bracket (shear plate) length along x [m]
+  double bracket_thickness = 0.01;   ///< [m]
+  double bearer_flange_width = 0.05;  ///< cross bearer top flange width along x [m]
+  double side_rail_flange_width = 0.05;  ///< side rail bottom flange width, inwards [m]
+  double mass = 0.0;                 ///< total platform mass: steel, deck, sides, fittings [kg]; not below the steel
+};
+
 /// Geometry, material and mass of the ladder frame.
 struct LadderFrameData {
   double front_x = 1.2;            ///< x of the rails' front end [m]
@@ -43,7 +79,22 @@ struct LadderFrameData {
   /// Radius of the rigid spiders (RBE2) that spread each interface node's
   /// load over the nodes around it, as a bracket does [m] (AddSpiders).
   double spider_radius = 0.1;
+  /// A flatbed platform on the frame (when platform.present).
+  PlatformData platform;
 };
+
+/// Section indices of a generated frame's shells (fe::Mesh::shell_sections).
+enum LadderSection : int {
+  kRailSection = 0,        ///< the rails' channels
+  kCrossMemberSection,     ///< the frame's cross members
+  kSillSection,            ///< the platform's sills
+  kBearerSection,          ///< the platform's cross bearers
+  kSideRailSection,        ///< the platform's side rails
+  kBracketSection,         ///< the platform's brackets on the rails
+};
+
+/// z of the platform's top (the sills' top flanges), where cargo rests [m].
+double PlatformTopZ(const LadderFrameData& data);
 
 /// A wanted attachment point of the frame.
 struct FrameAttachment {
@@ -56,8 +107,10 @@ struct LadderFrame {
   fe::Mesh mesh;                   ///< shells, one steel material; sections 0 rails, 1 cross members
   std::vector<std::string> names;  ///< interface names, in the order of the attachments
   std::vector<int> nodes;          ///< interface node index per name (the node nearest to the point)
-  double steel_mass = 0.0;         ///< mass of the steel alone [kg]
+  double steel_mass = 0.0;         ///< mass of the frame's steel alone (rails, cross members) [kg]
   double nsm = 0.0;                ///< non-structural mass per area of the rails [kg/m^2]
+  double platform_steel_mass = 0.0;  ///< steel of the platform and its brackets [kg]
+  double platform_nsm = 0.0;       ///< non-structural mass per area of the sills and cross bearers [kg/m^2]
 };
 
 /// Mass properties of a body: total mass, centre of mass and the inertia
@@ -72,7 +125,10 @@ struct MassProperties3 {
 /// point gets the mesh node nearest to it (a node may serve several
 /// attachments). Throws InputError for non-positive dimensions, an element
 /// size that leaves fewer than one element across the flange, a cross
-/// member outside the rails, or a total mass below the steel mass.
+/// member outside the rails, a total mass below the steel mass, or a
+/// platform that does not fit the frame (narrower than the rails, sill
+/// flanges reaching the centre plane, fewer than two brackets, a bracket off
+/// the rails or the sills, a mass below its steel).
 LadderFrame GenerateLadderFrame(const LadderFrameData& data, const std::vector<FrameAttachment>& attachments);
 
 /// Index of the mesh node nearest to `point` (the first of equals).

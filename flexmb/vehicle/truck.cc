@@ -142,7 +142,9 @@ bool HasSteeringRelay(const TruckData& d) { return d.steering_linkage && d.axles
 // mount points of a part: per station left then right, at the rails' top corners
 std::vector<Vec3> MountPoints(const TruckData& d, const MountData& mounts) {
   std::vector<Vec3> p;
-  const double top = d.ladder.bottom_z + d.ladder.web_height;
+  // the cargo rests on the platform where there is one, the rest on the rails
+  const double top = &mounts == &d.cargo_mounts && d.ladder.platform.present ? PlatformTopZ(d.ladder)
+                                                                            : d.ladder.bottom_z + d.ladder.web_height;
   for (double x : mounts.x)
     for (double side : {1.0, -1.0}) p.emplace_back(x, side * d.ladder.half_spacing, top);
   return p;

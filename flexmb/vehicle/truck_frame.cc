@@ -26,6 +26,49 @@ std::string Point(const Vec3& p) {
 const std::vector<const char*> kGeneratorKeys = {"mass",      "flange_width",           "thickness",    "cross_members",
                                                  "cross_member_thickness", "element_size", "E", "nu", "rho"};
 
+// reads the frame's `platform` map into f.platform; with a body file only
+// the keys that place the cargo's mounts
+void ReadPlatform(const YAML::Node& frame, YamlContext& ctx, bool body, LadderFrameData& f) {
+  const YAML::Node node = frame["platform"];
+  if (!node) return;
+  ctx.SetEntity("truck frame platform");
+  if (!node.IsMap()) ctx.Fail(node, "expected 'platform' as a map");
+  PlatformData& p = f.platform;
+  p.present = true;
+  if (body) {
+    ctx.CheckKeys(node, {"spacer", "sill_height", "note"});
+  } else {
+    ctx.CheckKeys(node, {"front_x", "length", "width", "spacer", "sill_height", "sill_flange_width", "sill_thickness",
+                         "bearer_spacing", "bearer_thickness", "side_rail_thickness", "brackets", "bracket_length",
+                         "bracket_thickness", "bearer_flange_width", "side_rail_flange_width", "mass", "note"});
+    p.front_x = ctx.Double(node, "front_x");
+    p.length = ctx.Positive(node, "length");
+    p.width = ctx.Positive(node, "width");
+    p.mass = ctx.Positive(node, "mass");
+    p.sill_flange_width = ctx.Double(node, "sill_flange_width", p.sill_flange_width);
+    p.sill_thickness = ctx.Double(node, "sill_thickness", p.sill_thickness);
+    p.bearer_spacing = ctx.Double(node, "bearer_spacing", p.bearer_spacing);
+    p.bearer_thickness = ctx.Double(node, "bearer_thickness", p.bearer_thickness);
+    p.side_rail_thickness = ctx.Double(node, "side_rail_thickness", p.side_rail_thickness);
+    p.bracket_length = ctx.Double(node, "bracket_length", p.bracket_length);
+    p.bracket_thickness = ctx.Double(node, "bracket_thickness", p.bracket_thickness);
+    p.bearer_flange_width = ctx.Double(node, "bearer_flange_width", p.bearer_flange_width);
+    p.side_rail_flange_width = ctx.Double(node, "side_rail_flange_width", p.side_rail_flange_width);
+    const YAML::Node b = node["brackets"];
+    if (!b || !b.IsSequence() || b.size() < 2)
+      ctx.Fail(b ? b : node,
+               "expected 'brackets' as a list of at least two x [m] (the platform's brackets on the rails)");
+    for (const YAML::Node& v : b) p.brackets.push_back(ctx.Number(v, "bracket x"));
+  }
+  // the keys that place the cargo's mounts (the platform's top), also with a body file
+  for (auto [key, value] : {std::pair<const char*, double*>{"spacer", &p.spacer}, {"sill_height", &p.sill_height}}) {
+    *value = ctx.Double(node, key, *value);
+    if (!(*value > 0) || !std::isfinite(*value))
+      ctx.Fail(node[key] ? node[key] : node, std::string("'") + key + "' must be positive [m]");
+  }
+  ctx.SetEntity("truck frame");
+}
+
 // reads the user's frame: body file, mounts, tolerance; checks every mount
 void ReadFrameBody(const YAML::Node& node, YamlContext& ctx, const std::string& dir, TruckData& d) {
   for (const char* key : kGeneratorKeys)
@@ -87,7 +130,7 @@ void ReadTruckFrame(const YAML::Node& n, YamlContext& ctx, const std::string& di
   if (!node) ctx.Fail(n, "missing 'frame'");
   ctx.CheckKeys(node, {"body", "mounts", "mount_tolerance", "mass", "front_x", "length", "half_spacing", "web_height",
                        "flange_width", "thickness", "bottom_z", "cross_members", "cross_member_thickness",
-                       "element_size", "E", "nu", "rho", "spider_radius", "note"});
+                       "element_size", "E", "nu", "rho", "spider_radius", "platform", "note"});
   LadderFrameData& f = d.ladder;
   // the rail geometry: the generated frame's, and where the mounts sit
   f.front_x = ctx.Double(node, "front_x", f.front_x);
@@ -96,6 +139,7 @@ void ReadTruckFrame(const YAML::Node& n, YamlContext& ctx, const std::string& di
   f.web_height = ctx.Double(node, "web_height", f.web_height);
   f.bottom_z = ctx.Double(node, "bottom_z", f.bottom_z);
   f.spider_radius = ctx.Double(node, "spider_radius", f.spider_radius);
+  ReadPlatform(node, ctx, static_cast<bool>(node["body"]), f);
   if (node["body"]) return ReadFrameBody(node, ctx, dir, d);
   for (const char* key : {"mounts", "mount_tolerance"})
     if (node[key]) ctx.Fail(node[key], std::string("'") + key + "' needs 'body' (the frame's body file)");

@@ -35,6 +35,7 @@
 #include "flexmb/solver/assembler.h"
 #include "flexmb/solver/initial_conditions.h"
 #include "flexmb/solver/statics.h"
+#include "flexmb/vehicle/ladder_frame.h"
 #include "truck_harness.h"
 
 namespace flexmb::vehicle::testing {
@@ -49,38 +50,49 @@ struct Fixture {
   std::vector<std::pair<int, double>> loads;  // node, downward force [N]
 };
 
+// the truck of `file` with its frame reduced and read back from a body file
+Fixture LoadFixture(const std::string& file) {
+  Fixture x;
+  x.d = LoadLaneChangeTruck(file);
+  const auto reduced = ReduceTruckFrame(x.d, FrameReductionData{});
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("flexmb_truck_frame_test_" + std::to_string(::getpid()) + ".h5"))
+          .string();
+  io::WriteBody(*reduced, path);
+  x.body = io::ReadBody(path);
+  std::filesystem::remove(path);
+  // part weights shared by the lever rule over their mounts, as BuildTruck's preloads
+  for (const FrameAttachment& a : FrameAttachments(x.d, kG)) {
+    const int node = NearestNode(x.body.mesh, a.point);
+    if (a.name.rfind("spring_seat", 0) == 0) x.seats.push_back(node);
+  }
+  for (const auto& [name, part, mounts] :
+       {std::tuple<std::string, const PartData*, const MountData*>{"cab", &x.d.cab, &x.d.cab_mounts},
+        {"powertrain", &x.d.powertrain, &x.d.powertrain_mounts},
+        {"cargo", &x.d.cargo, &x.d.cargo_mounts}}) {
+    const double n = 2.0 * static_cast<double>(mounts->x.size());
+    double xm = 0, sxx = 0;
+    for (double xs : mounts->x) xm += 2 * xs / n;
+    for (double xs : mounts->x) sxx += 2 * (xs - xm) * (xs - xm);
+    const double top = x.d.ladder.bottom_z + x.d.ladder.web_height;
+    for (double xs : mounts->x)
+      for (double side : {1.0, -1.0}) {
+        const double share = 1.0 / n + (sxx > 0 ? (part->cg.x() - xm) * (xs - xm) / sxx : 0.0);
+        x.loads.emplace_back(NearestNode(x.body.mesh, Vec3(xs, side * x.d.ladder.half_spacing, top)),
+                             share * part->mass * kG);
+      }
+  }
+  return x;
+}
+
 const Fixture& Frame() {
-  static const Fixture f = [] {
-    Fixture x;
-    x.d = LoadLaneChangeTruck(TruckFile());
-    const auto reduced = ReduceTruckFrame(x.d, FrameReductionData{});
-    const std::string path = (std::filesystem::temp_directory_path() / ("flexmb_truck_frame_test_" + std::to_string(::getpid()) + ".h5")).string();
-    io::WriteBody(*reduced, path);
-    x.body = io::ReadBody(path);
-    std::filesystem::remove(path);
-    // part weights shared by the lever rule over their mounts, as BuildTruck's preloads
-    for (const FrameAttachment& a : FrameAttachments(x.d, kG)) {
-      const int node = NearestNode(x.body.mesh, a.point);
-      if (a.name.rfind("spring_seat", 0) == 0) x.seats.push_back(node);
-    }
-    for (const auto& [name, part, mounts] :
-         {std::tuple<std::string, const PartData*, const MountData*>{"cab", &x.d.cab, &x.d.cab_mounts},
-          {"powertrain", &x.d.powertrain, &x.d.powertrain_mounts},
-          {"cargo", &x.d.cargo, &x.d.cargo_mounts}}) {
-      const double n = 2.0 * static_cast<double>(mounts->x.size());
-      double xm = 0, sxx = 0;
-      for (double xs : mounts->x) xm += 2 * xs / n;
-      for (double xs : mounts->x) sxx += 2 * (xs - xm) * (xs - xm);
-      const double top = x.d.ladder.bottom_z + x.d.ladder.web_height;
-      for (double xs : mounts->x)
-        for (double side : {1.0, -1.0}) {
-          const double share = 1.0 / n + (sxx > 0 ? (part->cg.x() - xm) * (xs - xm) / sxx : 0.0);
-          x.loads.emplace_back(NearestNode(x.body.mesh, Vec3(xs, side * x.d.ladder.half_spacing, top)),
-                               share * part->mass * kG);
-        }
-    }
-    return x;
-  }();
+  static const Fixture f = LoadFixture(TruckFile());
+  return f;
+}
+
+// the 6x4 with its platform on brackets (the cargo on the platform)
+const Fixture& Frame6x4() {
+  static const Fixture f = LoadFixture(std::string(FLEXMB_SOURCE_DIR) + "/examples/truck_6x4/truck.yaml");
   return f;
 }
 
@@ -190,8 +202,16 @@ std::vector<Vec3> Deformation(const std::vector<Vec3>& u, const fe::Mesh& mesh) 
   return d;
 }
 
-TEST(TruckFrameValidation, DeflectionInTheStandingTruckEqualsFullFeUnderItsMountForces) {
-  const Fixture& f = Frame();
+// the frame's deformation in the standing truck against the full FE model
+struct StandingTruckDeformation {
+  double scale = 0;         ///< largest deformation of the full FE model [m]
+  double rails_error = 0;   ///< largest difference on the rails and cross members [m]
+  double platform_error = 0;  ///< largest difference on the platform (its brackets included) [m]
+};
+
+// (fills *out; ASSERTs leave it as it was); the rails' difference must stay
+// below `rails_tolerance` of the largest deformation
+void CheckStandingTruck(const Fixture& f, double rails_tolerance, StandingTruckDeformation* out) {
   TruckData d = f.d;
   d.elastic_frame = std::make_shared<reduction::ReducedBody>(f.body);
   Model m;
@@ -277,20 +297,46 @@ TEST(TruckFrameValidation, DeflectionInTheStandingTruckEqualsFullFeUnderItsMount
     u_red[k] = frame.NodeDisplacement(q, static_cast<int>(k));
   }
   const std::vector<Vec3> def_full = Deformation(u_full, mesh), def_red = Deformation(u_red, mesh);
-  double scale = 0, err = 0;
+  // nodes of the rails and cross members, the rest is the platform
+  std::vector<char> rail(nn, 0);
+  for (const fe::Element& e : mesh.elements)
+    if (e.property <= kCrossMemberSection)
+      for (int n : e.nodes) rail[static_cast<size_t>(n)] = 1;
+  StandingTruckDeformation r;
   size_t kmax = 0;
   for (size_t k = 0; k < nn; ++k) {
-    if (def_full[k].norm() > scale) scale = def_full[k].norm(), kmax = k;
+    if (def_full[k].norm() > r.scale) r.scale = def_full[k].norm(), kmax = k;
+    double& err = rail[k] ? r.rails_error : r.platform_error;
     err = std::max(err, (def_full[k] - def_red[k]).norm());
   }
   std::printf("frame deformation in the standing truck: full FE %.4f mm at node %d (x = %.2f m), in the truck "
-              "%.4f mm; largest difference %.2e mm (%.2f %%)\n",
-              scale * 1e3, mesh.nodes[kmax].id, mesh.nodes[kmax].x.x(), def_red[kmax].norm() * 1e3, err * 1e3,
-              100 * err / scale);
-  EXPECT_GT(scale, 1e-4);  // millimetres, not nothing
-  EXPECT_LT(scale, 0.05);
-  // as test 1: the self weight carried by 10 fixed-interface modes
-  EXPECT_LT(err, 0.01 * scale);
+              "%.4f mm; largest difference on the rails %.2e mm (%.2f %%), on the platform %.2e mm (%.2f %%)\n",
+              r.scale * 1e3, mesh.nodes[kmax].id, mesh.nodes[kmax].x.x(), def_red[kmax].norm() * 1e3,
+              r.rails_error * 1e3, 100 * r.rails_error / r.scale, r.platform_error * 1e3,
+              100 * r.platform_error / r.scale);
+  EXPECT_GT(r.scale, 1e-4);  // millimetres, not nothing
+  EXPECT_LT(r.scale, 0.05);
+  // as test 1: the self weight carried by the fixed-interface modes
+  EXPECT_LT(r.rails_error, rails_tolerance * r.scale);
+  *out = r;
+}
+
+TEST(TruckFrameValidation, DeflectionInTheStandingTruckEqualsFullFeUnderItsMountForces) {
+  StandingTruckDeformation r;
+  CheckStandingTruck(Frame(), 0.01, &r);
+  EXPECT_EQ(r.platform_error, 0.0);  // no platform
+}
+
+// the 6x4: three axles on a balancer bogie, the cargo on the platform whose
+// brackets take its load to the rails; the rails agree as the 4x2's. The
+// platform's own sag under its smeared deck mass, away from the interface
+// nodes, is carried by the fixed-interface modes only and is reported, not
+// held to the rails' bound (about 6 % of the largest deformation with 10 or
+// 40 modes: the overhanging bearers' local bending; examples/truck_6x4/README.md).
+TEST(TruckFrameValidation, FrameAndPlatformOfThe6x4InTheStandingTruckEqualFullFe) {
+  StandingTruckDeformation r;
+  CheckStandingTruck(Frame6x4(), 0.01, &r);
+  EXPECT_GT(r.platform_error, 0.0);  // the platform's nodes were compared
 }
 
 TEST(TruckFrameValidation, RigidFrameMassPropertiesEqualTheReducedBody) {
