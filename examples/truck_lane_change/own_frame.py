@@ -25,6 +25,8 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 # rail geometry that places the mounts (the body file gives the rest)
 GEOMETRY = ('front_x', 'length', 'half_spacing', 'web_height', 'bottom_z', 'spider_radius')
+# a platform's keys that place the cargo's mounts on its top
+PLATFORM_PLACEMENT = ('spacer', 'sill_height')
 # the arm pivots hang about 0.3 m below the frame on their brackets (rigid
 # levers): 0.30 m on the 4x2 example, 0.31 m on the more heavily loaded 6x4
 MOUNT_TOLERANCE = 0.35
@@ -49,7 +51,12 @@ def own_frame_file(truck_text, mounts, body='frame.h5'):
     """truck.yaml's text with the frame taken from `body` and `mounts`
     [(name, node id)]; the generated frame's reduction keys dropped."""
     start, end, block = frame_block(truck_text)
-    keep = [l for l in block if l.strip().split(':')[0] in GEOMETRY]
+    top = [l for l in block if not l.startswith('     ')]  # the frame map's own keys, not a platform's
+    keep = [l for l in top if l.strip().split(':')[0] in GEOMETRY]
+    # a platform's keys that place the cargo's mounts (its top); the rest is in the deck
+    platform = [l for l in block if l.startswith('      ') and l.strip().split(':')[0] in PLATFORM_PLACEMENT]
+    if platform:
+        keep += ['    platform:                  # the platform is in the deck; these place the cargo mounts'] + platform
     new = ['  frame:', f'    body: {body}             # flexmb reduce of frame.bdf',
            f'    mount_tolerance: {MOUNT_TOLERANCE}       # m; the arm pivots hang about 0.3 m below the frame on rigid brackets']
     new += keep + ['    mounts:                    # attachment: interface node id of the body file']
