@@ -5,8 +5,8 @@
 // axles' tires may name fuzz_tire.yaml, a valid tire file written beside the
 // scratch file. Each input must give a truck or a flexmb::Error, never a
 // crash, hang or sanitizer report. Seeds: fuzz/corpus/truck_file/ (the 4x2
-// and 6x4 examples with their tires as fuzz_tire.yaml, the 4x2 in the
-// two-axle form).
+// and 6x4 examples with their tires as fuzz_tire.yaml, the 6x4 with its
+// platform, the 4x2 in the two-axle form).
 
 #include <yaml-cpp/yaml.h>
 

@@ -122,3 +122,38 @@ def test_frame_deck_refuses_a_truck_whose_frame_is_a_body_file(cli, files, tmp_p
     r = subprocess.run([cli, "truck", "frame-deck", str(own), "-o", str(tmp_path / "x.bdf")], capture_output=True,
                        text=True)
     assert r.returncode != 0 and "already a body file" in r.stderr
+
+
+@pytest.fixture(scope="module")
+def files_6x4(cli_module, source_dir_module, tmp_path_factory):
+    """(generated, own) of the 6x4, whose frame carries the platform, both tightened."""
+    work = tmp_path_factory.mktemp("own_frame_6x4")
+    truck = os.path.join(source_dir_module, "examples", "truck_6x4", "truck.yaml")
+    subprocess.run([sys.executable, os.path.join(source_dir_module, "examples", "truck_lane_change", "own_frame.py"),
+                    "--truck", truck, "--out", str(work), "--flexmb", cli_module], check=True, capture_output=True)
+    generated = work / "generated.yaml"
+    text = open(truck).read().replace("../truck_lane_change/", "")  # the tire files were copied beside it
+    generated.write_text(text)
+    own = work / "truck_own_frame.yaml"
+    tighten(generated)
+    tighten(own)
+    return generated, own
+
+
+def test_frame_with_platform_from_the_deck_reproduces_the_inline_reduction(cli, files_6x4, tmp_path):
+    """The platform's sills, bearers, side rails and brackets pass through the
+    Nastran deck (PSHELL with NSM per section) unchanged, and its `spacer` and
+    `sill_height` place the cargo mounts on the platform's top as the
+    generated frame does."""
+    generated, own = files_6x4
+    text = open(own).read()
+    assert re.search(r"^    platform: .*\n      spacer: 0\.02 .*\n      sill_height: 0\.12 ", text, re.M), text
+    a = run(cli, generated, "elastic", tmp_path / "generated")
+    b = run(cli, own, "elastic", tmp_path / "own")
+    assert largest_difference(a, b) < 1e-6
+
+
+def test_platform_keys_beside_a_body_file_only_place_the_cargo(cli, files_6x4):
+    _, own = files_6x4
+    check_error(cli, own, [("      spacer: 0.02", "      width: 2.5\n      spacer: 0.02")],
+                r"bad\.yaml:\d+: .*platform.*unknown key 'width'")
