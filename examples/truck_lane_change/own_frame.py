@@ -25,8 +25,6 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 # rail geometry that places the mounts (the body file gives the rest)
 GEOMETRY = ('front_x', 'length', 'half_spacing', 'web_height', 'bottom_z', 'spider_radius')
-# a platform's keys that place the cargo's mounts on its top
-PLATFORM_PLACEMENT = ('spacer', 'sill_height')
 # the arm pivots hang about 0.3 m below the frame on their brackets (rigid
 # levers): 0.30 m on the 4x2 example, 0.31 m on the more heavily loaded 6x4
 MOUNT_TOLERANCE = 0.35
@@ -47,16 +45,17 @@ def frame_block(text):
     return start, end + len('\n'.join(block)) + 1, block
 
 
-def own_frame_file(truck_text, mounts, body='frame.h5'):
+def own_frame_file(truck_text, mounts, platform=None, body='frame.h5'):
     """truck.yaml's text with the frame taken from `body` and `mounts`
-    [(name, node id)]; the generated frame's reduction keys dropped."""
+    [(name, node id)] and, for a frame with a platform, its (spacer,
+    sill_height) as the deck gives them; the generated frame's reduction
+    keys dropped."""
     start, end, block = frame_block(truck_text)
     top = [l for l in block if not l.startswith('     ')]  # the frame map's own keys, not a platform's
     keep = [l for l in top if l.strip().split(':')[0] in GEOMETRY]
-    # a platform's keys that place the cargo's mounts (its top); the rest is in the deck
-    platform = [l for l in block if l.startswith('      ') and l.strip().split(':')[0] in PLATFORM_PLACEMENT]
     if platform:
-        keep += ['    platform:                  # the platform is in the deck; these place the cargo mounts'] + platform
+        # the platform is in the deck; its top places the cargo mounts
+        keep += [f'    platform: {{spacer: {platform[0]}, sill_height: {platform[1]}}}   # the cargo mounts on its top']
     new = ['  frame:', f'    body: {body}             # flexmb reduce of frame.bdf',
            f'    mount_tolerance: {MOUNT_TOLERANCE}       # m; the arm pivots hang about 0.3 m below the frame on rigid brackets']
     new += keep + ['    mounts:                    # attachment: interface node id of the body file']
@@ -78,7 +77,10 @@ def main():
     # the reduce command frame-deck prints: the lane-change file's modes and damping
     reduce = next(l.split() for l in printed.splitlines() if l.strip().startswith('flexmb reduce'))
     subprocess.run([a.flexmb] + reduce[1:], check=True, capture_output=True)
-    mounts = re.findall(r'^\$ mount (\w+): node (\d+)$', open(deck).read(), re.M)
+    deck_text = open(deck).read()
+    mounts = re.findall(r'^\$ mount (\w+): node (\d+)$', deck_text, re.M)
+    # the platform's placement as the generated frame has it (given or by default)
+    platform = re.search(r'^\$ platform: spacer (\S+) sill_height (\S+) ', deck_text, re.M)
     text = open(a.truck).read()
     # the tire files (an axle's `tire:`, or the two-axle form's tires: {front, rear}) beside the new file
     for tire in set(re.findall(r'^\s+(?:-\s+)?(?:front|rear|tire): (\S+\.(?:yaml|tir))', text, re.M)):
@@ -86,7 +88,7 @@ def main():
         text = re.sub(rf'(:\s+){re.escape(tire)}\b', rf'\g<1>{os.path.basename(tire)}', text)
     out = os.path.join(a.out, 'truck_own_frame.yaml')
     with open(out, 'w') as f:
-        f.write(own_frame_file(text, mounts))
+        f.write(own_frame_file(text, mounts, platform.groups() if platform else None))
     print(f'wrote {deck}, {os.path.join(a.out, "frame.h5")} and {out}')
 
 

@@ -40,28 +40,54 @@ void IntegrateQuad(const fe::Mesh& mesh, const fe::Element& e, F f) {
     }
 }
 
+// a number for a message: %g, so 0.02 reads "0.02", not "0.020000"
+std::string Num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
 // the platform's data against itself and the frame
 template <class Fail>
 void CheckPlatform(const LadderFrameData& p, Fail fail) {
   const PlatformData& pl = p.platform;
-  for (double v : {pl.length, pl.width, pl.spacer, pl.sill_height, pl.sill_flange_width, pl.sill_thickness,
-                   pl.bearer_spacing, pl.bearer_thickness, pl.side_rail_thickness, pl.bracket_length,
-                   pl.bracket_thickness, pl.bearer_flange_width, pl.side_rail_flange_width, pl.mass})
-    if (!(v > 0) || !std::isfinite(v)) fail("platform: dimensions, thicknesses and mass must be positive");
-  if (!std::isfinite(pl.front_x)) fail("platform: front_x must be finite");
+  for (const auto& [key, v] : {std::pair<const char*, double>{"length", pl.length},
+                               {"width", pl.width},
+                               {"spacer", pl.spacer},
+                               {"sill_height", pl.sill_height},
+                               {"sill_flange_width", pl.sill_flange_width},
+                               {"sill_thickness", pl.sill_thickness},
+                               {"bearer_spacing", pl.bearer_spacing},
+                               {"bearer_thickness", pl.bearer_thickness},
+                               {"bearer_flange_width", pl.bearer_flange_width},
+                               {"side_rail_thickness", pl.side_rail_thickness},
+                               {"side_rail_flange_width", pl.side_rail_flange_width},
+                               {"bracket_length", pl.bracket_length},
+                               {"bracket_thickness", pl.bracket_thickness},
+                               {"mass", pl.mass}})
+    if (!(v > 0) || !std::isfinite(v)) fail(std::string("platform: '") + key + "' must be positive, not " + Num(v));
+  if (!std::isfinite(pl.front_x)) fail("platform: 'front_x' must be finite");
+  if (pl.front_x > p.front_x + 1e-9)
+    fail("platform: front_x " + Num(pl.front_x) + " m is ahead of the rails' front end (" + Num(p.front_x) + " m)");
   if (!(0.5 * pl.width > p.half_spacing + p.element_size))
-    fail("platform: width " + std::to_string(pl.width) + " m leaves no overhang beyond the rails (half spacing " +
-         std::to_string(p.half_spacing) + " m)");
+    fail("platform: width " + Num(pl.width) + " m leaves no overhang beyond the rails (half spacing " +
+         Num(p.half_spacing) + " m)");
   if (pl.sill_flange_width >= p.half_spacing) fail("platform: the sill flanges must not reach the centre plane");
   if (!(0.5 * pl.width - pl.side_rail_flange_width > p.half_spacing))
-    fail("platform: the side rails' flanges reach the sills (width " + std::to_string(pl.width) +
-         " m, side_rail_flange_width " + std::to_string(pl.side_rail_flange_width) + " m)");
+    fail("platform: the side rails' flanges reach the sills (width " + Num(pl.width) + " m, side_rail_flange_width " +
+         Num(pl.side_rail_flange_width) + " m)");
   if (pl.brackets.size() < 2) fail("platform: give at least two 'brackets' (x of the brackets on the rails)");
   const double rear_x = p.front_x - p.length, prear = pl.front_x - pl.length;
-  for (double xb : pl.brackets) {
-    const double lo = xb - 0.5 * pl.bracket_length, hi = xb + 0.5 * pl.bracket_length;
+  for (size_t k = 0; k < pl.brackets.size(); ++k) {
+    const double xb = pl.brackets[k], lo = xb - 0.5 * pl.bracket_length, hi = xb + 0.5 * pl.bracket_length;
     if (!std::isfinite(xb) || lo < std::max(rear_x, prear) - 1e-9 || hi > std::min(p.front_x, pl.front_x) + 1e-9)
-      fail("platform: the bracket at x = " + std::to_string(xb) + " m is not under the platform and on the rails");
+      fail("platform: the bracket at x = " + Num(xb) + " m (bracket_length " + Num(pl.bracket_length) +
+           " m) is not under the platform (x = " + Num(prear) + " to " + Num(pl.front_x) + " m) and on the rails (" +
+           Num(rear_x) + " to " + Num(p.front_x) + " m)");
+    for (size_t j = 0; j < k; ++j)
+      if (std::abs(pl.brackets[j] - xb) < pl.bracket_length)
+        fail("platform: the brackets at x = " + Num(pl.brackets[j]) + " and " + Num(xb) + " m overlap (bracket_length " +
+             Num(pl.bracket_length) + " m)");
   }
 }
 

@@ -156,7 +156,24 @@ void ReadTruckFrame(const YAML::Node& n, YamlContext& ctx, const std::string& di
     f.cross_members.clear();
     for (const YAML::Node& v : c) f.cross_members.push_back(ctx.Number(v, "cross member x"));
   }
-  ctx.Guard(node, [&] { SetFrameMesh(d); });
+  if (f.platform.present) {
+    // the cargo rests on the platform's sills: its mount stations must lie on it
+    const double rear = f.platform.front_x - f.platform.length;
+    for (double x : d.cargo_mounts.x)
+      if (x < rear - 1e-9 || x > f.platform.front_x + 1e-9) {
+        char buf[200];
+        std::snprintf(buf, sizeof buf, "the cargo's mount station x = %g m is off the platform (x = %g to %g m)", x,
+                      rear, f.platform.front_x);
+        ctx.Fail(node["platform"], buf);
+      }
+  }
+  try {
+    SetFrameMesh(d);
+  } catch (const InputError& e) {
+    // a platform's error at the platform's line
+    const bool platform = std::string(e.what()).find("platform: ") != std::string::npos;
+    ctx.Rethrow(platform ? node["platform"] : node, e);
+  }
 }
 
 MassProperties3 BodyMassProperties(const reduction::ReducedBody& body) {

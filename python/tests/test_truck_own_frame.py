@@ -147,7 +147,7 @@ def test_frame_with_platform_from_the_deck_reproduces_the_inline_reduction(cli, 
     generated frame does."""
     generated, own = files_6x4
     text = open(own).read()
-    assert re.search(r"^    platform: .*\n      spacer: 0\.02 .*\n      sill_height: 0\.12 ", text, re.M), text
+    assert re.search(r"^    platform: \{spacer: 0\.02, sill_height: 0\.12\}", text, re.M), text
     a = run(cli, generated, "elastic", tmp_path / "generated")
     b = run(cli, own, "elastic", tmp_path / "own")
     assert largest_difference(a, b) < 1e-6
@@ -155,5 +155,31 @@ def test_frame_with_platform_from_the_deck_reproduces_the_inline_reduction(cli, 
 
 def test_platform_keys_beside_a_body_file_only_place_the_cargo(cli, files_6x4):
     _, own = files_6x4
-    check_error(cli, own, [("      spacer: 0.02", "      width: 2.5\n      spacer: 0.02")],
+    check_error(cli, own, [("{spacer: 0.02,", "{width: 2.5, spacer: 0.02,")],
                 r"bad\.yaml:\d+: .*platform.*unknown key 'width'")
+
+
+def test_a_platform_at_its_default_placement_keeps_its_cargo_on_top(cli, source_dir_module, tmp_path):
+    """A platform whose `spacer` and `sill_height` are left at their defaults:
+    the deck carries them (a comment) and own_frame.py writes them beside the
+    body file, so the cargo mounts stay on the platform's top (found by a
+    user test: they fell to the rails' top, hidden by the mount tolerance)."""
+    truck = os.path.join(source_dir_module, "examples", "truck_6x4", "truck.yaml")
+    text = open(truck).read().replace("../truck_lane_change/", os.path.join(source_dir_module, "examples",
+                                                                             "truck_lane_change") + "/")
+    text, n = re.subn(r"^      (spacer|sill_height): .*\n", "", text, flags=re.M)
+    assert n == 2
+    path = tmp_path / "defaults.yaml"
+    path.write_text(text)
+    deck = tmp_path / "frame.bdf"
+    printed = subprocess.run([cli, "truck", "frame-deck", str(path), "-o", str(deck)], check=True,
+                             capture_output=True, text=True).stdout
+    assert "platform: {spacer: 0.02, sill_height: 0.12}" in printed
+    sys.path.insert(0, os.path.join(source_dir_module, "examples", "truck_lane_change"))
+    try:
+        import own_frame
+    finally:
+        sys.path.pop(0)
+    placement = re.search(r"^\$ platform: spacer (\S+) sill_height (\S+) ", deck.read_text(), re.M).groups()
+    assert placement == ("0.02", "0.12")
+    assert "    platform: {spacer: 0.02, sill_height: 0.12}" in own_frame.own_frame_file(text, [], placement)

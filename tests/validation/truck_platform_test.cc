@@ -19,9 +19,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <functional>
 #include <numeric>
 #include <set>
+#include <unistd.h>  // getpid: ctest -j runs each test in its own process
 
 #include "flexmb/common/error.h"
 #include "flexmb/vehicle/ladder_frame.h"
@@ -189,7 +193,64 @@ TEST(TruckPlatform, BadPlatformsAreErrors) {
   EXPECT_NE(message(f).find("below its steel mass"), std::string::npos) << message(f);
   f = GridFrame();
   f.platform.sill_height = -0.1;
-  EXPECT_NE(message(f).find("must be positive"), std::string::npos) << message(f);
+  EXPECT_NE(message(f).find("'sill_height' must be positive, not -0.1"), std::string::npos) << message(f);
+  f = GridFrame();
+  f.platform.brackets = {-3.0, -3.0};  // twice the same (found by a user test: the elastic statics then failed)
+  EXPECT_NE(message(f).find("brackets at x = -3 and -3 m overlap"), std::string::npos) << message(f);
+  f.platform.brackets = {-1.5, -1.6};
+  EXPECT_NE(message(f).find("overlap (bracket_length 0.2 m)"), std::string::npos) << message(f);
+  f = GridFrame();
+  f.platform.front_x = 1.5;  // ahead of the rails' front end at 1.0
+  f.platform.brackets = {-1.5, -3.0};
+  EXPECT_NE(message(f).find("ahead of the rails' front end"), std::string::npos) << message(f);
+}
+
+// errors of a truck file's platform name the platform's line
+TEST(TruckPlatform, TruckFileErrorsNameThePlatformsLine) {
+  const std::string example = std::string(FLEXMB_SOURCE_DIR) + "/examples/truck_6x4/truck.yaml";
+  std::ifstream in(example);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  int platform_line = 0;
+  {
+    std::istringstream lines(text);
+    std::string line;
+    for (int n = 1; std::getline(lines, line); ++n)
+      if (line.rfind("    platform:", 0) == 0) platform_line = n;
+  }
+  ASSERT_GT(platform_line, 0);
+  auto message = [&](const std::string& from, const std::string& to) {
+    std::string t = text;
+    const size_t at = t.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) t.replace(at, from.size(), to);
+    // the tire files by absolute paths, the file in the temporary folder
+    for (size_t k; (k = t.find("../truck_lane_change/")) != std::string::npos;)
+      t.replace(k, 2, std::string(FLEXMB_SOURCE_DIR) + "/examples");
+    const std::string path =
+        (std::filesystem::temp_directory_path() / ("flexmb_platform_test_" + std::to_string(::getpid()) + ".yaml"))
+            .string();
+    std::ofstream(path) << t;
+    std::string what = "no error";
+    try {
+      LoadLaneChangeTruck(path);
+    } catch (const InputError& e) {
+      what = e.what();
+    }
+    std::filesystem::remove(path);
+    return what;
+  };
+  // a block map's line is its first key's (yaml-cpp), the line after "platform:"
+  const std::string at = ".yaml:" + std::to_string(platform_line + 1) + ":";
+  // from the generator (the bracket off the platform), at the platform's line, not the frame's
+  std::string m = message("brackets: [-1.0,", "brackets: [-0.5,");
+  EXPECT_NE(m.find(at), std::string::npos) << m;
+  EXPECT_NE(m.find("bracket at x = -0.5 m (bracket_length 0.2 m) is not under the platform"), std::string::npos) << m;
+  // the cargo's mount stations on the platform
+  m = message("mount_x: [-0.9, -1.9, -2.9, -3.9, -4.9]", "mount_x: [-0.5, -1.9, -2.9, -3.9, -4.9]");
+  EXPECT_NE(m.find(at), std::string::npos) << m;
+  EXPECT_NE(m.find("the cargo's mount station x = -0.5 m is off the platform"), std::string::npos) << m;
 }
 
 }  // namespace truck_platform_test

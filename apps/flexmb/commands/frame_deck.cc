@@ -1,6 +1,7 @@
 #include "apps/flexmb/commands/frame_deck.h"
 
 #include <filesystem>
+#include <iterator>
 
 #include "apps/flexmb/commands/lane_change.h"
 #include "flexmb/common/error.h"
@@ -20,6 +21,19 @@ int WriteTruckFrameDeck(const std::string& truck_file, const std::string& deck, 
   extras.comments = {"ladder frame generated from " + truck_file + " (flexmb truck frame-deck)",
                      "basic frame = vehicle frame: x forward from the front-axle centre, y left, z up from the road",
                      "RBE2: the arm pivots' brackets and the spiders at the interface nodes; ASET1: the interface"};
+  // which PSHELL is which part (the section ids are the LadderSection indices + 1)
+  const char* parts[] = {"rails", "cross members", "platform sills", "platform cross bearers", "platform side rails",
+                         "platform brackets"};
+  std::string pshells = "PSHELL";
+  for (size_t k = 0; k < frame.mesh.shell_sections.size() && k < std::size(parts); ++k)
+    pshells += (k ? ", " : " ") + std::to_string(frame.mesh.shell_sections[k].id) + ": " + parts[k];
+  extras.comments.push_back(pshells);
+  const vehicle::PlatformData& pl = d.ladder.platform;
+  char platform[128] = "";
+  if (pl.present) {
+    std::snprintf(platform, sizeof platform, "platform: spacer %.17g sill_height %.17g", pl.spacer, pl.sill_height);
+    extras.comments.push_back(std::string(platform) + " (they place the cargo mounts on its top)");
+  }
   for (const auto& [name, node] : frame.mounts)
     extras.comments.push_back("mount " + name + ": node " + std::to_string(frame.mesh.nodes[static_cast<size_t>(node)].id));
   extras.interface_nodes = frame.interface_nodes;
@@ -34,7 +48,12 @@ int WriteTruckFrameDeck(const std::string& truck_file, const std::string& deck, 
   if (r.keep >= 0) std::fprintf(out, " --keep %d", r.keep);
   std::fprintf(out, " --damping-ratio %g --units SI -o %s\n", r.damping_ratio, body.c_str());
   std::fprintf(out, "and give it to the truck (truck: frame:), with the rail geometry keys kept:\n");
-  std::fprintf(out, "  frame:\n    body: %s\n    mounts:\n", std::filesystem::path(body).filename().c_str());
+  std::fprintf(out, "  frame:\n    body: %s\n    mount_tolerance: 0.35   # m: the arm pivots hang about 0.3 m below the rails\n",
+               std::filesystem::path(body).filename().c_str());
+  if (pl.present)
+    std::fprintf(out, "    platform: {spacer: %g, sill_height: %g}   # the cargo mounts on its top\n", pl.spacer,
+                 pl.sill_height);
+  std::fprintf(out, "    mounts:\n");
   for (const auto& [name, node] : frame.mounts)
     std::fprintf(out, "      %s: %d\n", name.c_str(), frame.mesh.nodes[static_cast<size_t>(node)].id);
   return 0;
