@@ -72,23 +72,30 @@ void CheckPlatform(const LadderFrameData& p, Fail fail) {
   if (!(0.5 * pl.width > p.half_spacing + p.element_size))
     fail("platform: width " + Num(pl.width) + " m leaves no overhang beyond the rails (half spacing " +
          Num(p.half_spacing) + " m)");
-  if (pl.sill_flange_width >= p.half_spacing) fail("platform: the sill flanges must not reach the centre plane");
-  if (!(0.5 * pl.width - pl.side_rail_flange_width > p.half_spacing))
+  // the gaps between the platform's plates across y, and the spacer: at
+  // least a millimetre (nodes are merged on micrometre keys)
+  const double hs = p.half_spacing, we = 0.5 * pl.width;
+  if (pl.spacer < 1e-3) fail("platform: 'spacer' must be at least 1 mm, not " + Num(pl.spacer) + " m");
+  if (hs - 2 * pl.sill_flange_width < 1e-3)
+    fail("platform: the sill flanges (" + Num(pl.sill_flange_width) + " m) leave less than 1 mm between them");
+  if (we - pl.side_rail_flange_width - hs < 1e-3)
     fail("platform: the side rails' flanges reach the sills (width " + Num(pl.width) + " m, side_rail_flange_width " +
          Num(pl.side_rail_flange_width) + " m)");
   if (pl.brackets.size() < 2) fail("platform: give at least two 'brackets' (x of the brackets on the rails)");
   const double rear_x = p.front_x - p.length, prear = pl.front_x - pl.length;
-  for (size_t k = 0; k < pl.brackets.size(); ++k) {
-    const double xb = pl.brackets[k], lo = xb - 0.5 * pl.bracket_length, hi = xb + 0.5 * pl.bracket_length;
+  for (double xb : pl.brackets) {
+    const double lo = xb - 0.5 * pl.bracket_length, hi = xb + 0.5 * pl.bracket_length;
     if (!std::isfinite(xb) || lo < std::max(rear_x, prear) - 1e-9 || hi > std::min(p.front_x, pl.front_x) + 1e-9)
       fail("platform: the bracket at x = " + Num(xb) + " m (bracket_length " + Num(pl.bracket_length) +
            " m) is not under the platform (x = " + Num(prear) + " to " + Num(pl.front_x) + " m) and on the rails (" +
            Num(rear_x) + " to " + Num(p.front_x) + " m)");
-    for (size_t j = 0; j < k; ++j)
-      if (std::abs(pl.brackets[j] - xb) < pl.bracket_length)
-        fail("platform: the brackets at x = " + Num(pl.brackets[j]) + " and " + Num(xb) + " m overlap (bracket_length " +
-             Num(pl.bracket_length) + " m)");
   }
+  std::vector<double> sorted = pl.brackets;
+  std::sort(sorted.begin(), sorted.end());
+  for (size_t k = 1; k < sorted.size(); ++k)
+    if (sorted[k] - sorted[k - 1] < pl.bracket_length)
+      fail("platform: the brackets at x = " + Num(sorted[k - 1]) + " and " + Num(sorted[k]) +
+           " m overlap (bracket_length " + Num(pl.bracket_length) + " m)");
 }
 
 }  // namespace
@@ -112,15 +119,23 @@ LadderFrame GenerateLadderFrame(const LadderFrameData& p, const std::vector<Fram
   const PlatformData& pl = p.platform;
   const bool platform = pl.present;
   if (platform) CheckPlatform(p, fail);
+  // (sills and side rails along the platform, bearers' webs and flanges
+  // across it, brackets; rounded up)
+  const double along = pl.length / h + 1, across = pl.width / h + 8;
   const double platform_estimate =
-      platform ? (pl.length / h) * (2 * (pl.sill_height + 2 * pl.sill_flange_width) / h + 2 * pl.sill_height / h + 2) +
-                     (pl.length / pl.bearer_spacing + 2) * (pl.width / h + 3) * (pl.sill_height / h + 1) +
-                     pl.brackets.size() * 2 * (pl.bracket_length / h + 1) * (pl.spacer / h + 1)
+      platform ? 2 * along * ((pl.sill_height + 2 * pl.sill_flange_width) / h + 3) +
+                     2 * along * ((pl.sill_height + pl.side_rail_flange_width) / h + 2) +
+                     (pl.length / pl.bearer_spacing + 2) * across *
+                         ((pl.sill_height + pl.bearer_flange_width) / h + 2) +
+                     static_cast<double>(pl.brackets.size()) * 2 * (pl.bracket_length / h + 1) * (pl.spacer / h + 1)
                : 0.0;
   if (!(estimate + platform_estimate <= kMaxLadderFrameShells)) {
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "element_size %g m makes about %.3g shells, more than %d: raise it (0.04 m: about 5,500)",
-                  h, estimate + platform_estimate, kMaxLadderFrameShells);
+    char buf[240];
+    std::snprintf(buf, sizeof buf,
+                  "element_size %g m makes about %.3g shells, more than %d: raise it (0.04 m: about 5,500 for the "
+                  "rails, 12,000 with the 6x4's platform)%s",
+                  h, estimate + platform_estimate, kMaxLadderFrameShells,
+                  platform_estimate > estimate ? ", or check the platform's size and bearer_spacing" : "");
     fail(buf);
   }
   const int nx = Divisions(p.length, h), nz = Divisions(p.web_height, h), nf = Divisions(p.flange_width, h);
@@ -211,8 +226,18 @@ LadderFrame GenerateLadderFrame(const LadderFrameData& p, const std::vector<Fram
     }
     first.push_back(static_cast<int>(ys.size()));
     ys.push_back(we);
-    // the stations of the segment [breaks[k], breaks[k + 1]], walked from `from` (k or k + 1)
+    // the number of stations' intervals in the segment [breaks[k], breaks[k + 1]]
     auto segment = [&](size_t k) { return first[k + 1] - first[k]; };
+    // the brackets' cells on the grid: at least one each, none shared
+    std::vector<std::pair<int, int>> bracket_cells;
+    for (double xb : pl.brackets) {
+      const int b0 = grid(xb - 0.5 * pl.bracket_length), b1 = std::max(b0 + 1, grid(xb + 0.5 * pl.bracket_length));
+      for (const auto& [c0, c1] : bracket_cells)
+        if (b0 < c1 && c0 < b1)
+          fail("platform: the bracket at x = " + Num(xb) + " m shares its elements with another on the " + Num(dx) +
+               " m element grid: space the brackets further apart");
+      bracket_cells.emplace_back(b0, b1);
+    }
     for (double side : {-1.0, 1.0}) {
       const double y = side * hs, ye = side * we;
       const size_t sill_flange = side < 0 ? 2 : 4, rail_flange = side < 0 ? 0 : 6;
@@ -226,10 +251,8 @@ LadderFrame GenerateLadderFrame(const LadderFrameData& p, const std::vector<Fram
       patch(kSideRailSection, i1 - i0, segment(rail_flange),
             [&](int i, int j) { return fe::Vec3(xi(i0 + i), ys[static_cast<size_t>(first[rail_flange] + j)], zs0); });
       // brackets: shear plates over the spacer gap, rail web top to sill web bottom
-      for (double xb : pl.brackets) {
-        const int b0 = grid(xb - 0.5 * pl.bracket_length), b1 = std::max(b0 + 1, grid(xb + 0.5 * pl.bracket_length));
+      for (const auto& [b0, b1] : bracket_cells)
         patch(kBracketSection, b1 - b0, nsp, [&](int i, int j) { return fe::Vec3(xi(b0 + i), y, z_top + j * dsp); });
-      }
     }
     // cross bearers at both ends and evenly between, across the whole width:
     // a web and a top flange pointing into the platform (beside the sills'
@@ -240,9 +263,9 @@ LadderFrame GenerateLadderFrame(const LadderFrameData& p, const std::vector<Fram
     for (int k = 0; k <= nb; ++k) {
       const int i = i0 + static_cast<int>(std::lround(static_cast<double>(k) * (i1 - i0) / nb));
       if (!bearers.empty() && i - bearers.back() <= 2 * kf)
-        fail("platform: cross bearers " + std::to_string((i - bearers.back()) * dx) +
-             " m apart leave no room for their flanges (bearer_flange_width " + std::to_string(pl.bearer_flange_width) +
-             " m): raise bearer_spacing");
+        fail("platform: cross bearers " + Num((i - bearers.back()) * dx) +
+             " m apart leave no room for their flanges (bearer_flange_width " + Num(pl.bearer_flange_width) + " m): " +
+             (i1 - i0 <= 2 * kf ? "the platform is too short for them" : "raise bearer_spacing"));
       bearers.push_back(i);
     }
     const int nys = static_cast<int>(ys.size()) - 1;
@@ -250,11 +273,14 @@ LadderFrame GenerateLadderFrame(const LadderFrameData& p, const std::vector<Fram
       const double x = xi(i);
       patch(kBearerSection, nys, nzs,
             [&](int a, int j) { return fe::Vec3(x, ys[static_cast<size_t>(a)], zs0 + j * dzs); });
-      const int dir = i == i1 ? -1 : 1;
+      // the flange rearwards of the front bearer, forwards of the others;
+      // meshed along +x then +y, so that its normal is +z as the sills' flanges'
+      const int start = i == i1 ? i - kf : i;
       for (size_t k = 0; k + 1 < breaks.size(); ++k)
         if (k != 2 && k != 4)
-          patch(kBearerSection, segment(k), kf,
-                [&](int a, int m) { return fe::Vec3(xi(i + dir * m), ys[static_cast<size_t>(first[k] + a)], zs1); });
+          patch(kBearerSection, kf, segment(k), [&](int m, int a) {
+            return fe::Vec3(xi(start + m), ys[static_cast<size_t>(first[k] + a)], zs1);
+          });
     }
   }
   mesh.IndexNodes();
@@ -271,8 +297,7 @@ LadderFrame GenerateLadderFrame(const LadderFrameData& p, const std::vector<Fram
   out.platform_steel_mass = platform_steel;
   if (platform) {
     if (pl.mass < platform_steel * (1 - 1e-12))
-      fail("platform mass " + std::to_string(pl.mass) + " kg is below its steel mass " + std::to_string(platform_steel) +
-           " kg");
+      fail("platform: mass " + Num(pl.mass) + " kg is below its steel mass " + Num(platform_steel) + " kg");
     out.platform_nsm = (pl.mass - platform_steel) / platform_area;
     for (int k : {kSillSection, kBearerSection})
       mesh.shell_sections[static_cast<size_t>(k)].nsm = out.platform_nsm;
@@ -306,7 +331,15 @@ int NearestNode(const fe::Mesh& mesh, const fe::Vec3& point) {
   return best;
 }
 
-void AddSpiders(fe::Mesh& mesh, const std::vector<int>& nodes, double radius) {
+std::vector<int> FramePartOfNodes(const fe::Mesh& mesh) {
+  std::vector<int> part(mesh.nodes.size(), 0);
+  for (const fe::Element& e : mesh.elements)
+    if (e.property >= kSillSection && e.property <= kSideRailSection)
+      for (int n : e.nodes) part[static_cast<size_t>(n)] = 1;
+  return part;
+}
+
+void AddSpiders(fe::Mesh& mesh, const std::vector<int>& nodes, double radius, const std::vector<int>* part) {
   std::vector<char> taken(mesh.nodes.size(), 0);
   for (int n : nodes) taken[static_cast<size_t>(n)] = 1;
   for (const fe::RigidLink& l : mesh.rigid_links)
@@ -320,7 +353,8 @@ void AddSpiders(fe::Mesh& mesh, const std::vector<int>& nodes, double radius) {
     link.independent = n;
     const fe::Vec3& c = mesh.nodes[static_cast<size_t>(n)].x;
     for (size_t k = 0; k < mesh.nodes.size(); ++k)
-      if (!taken[k] && (mesh.nodes[k].x - c).norm() <= radius) {
+      if (!taken[k] && (mesh.nodes[k].x - c).norm() <= radius &&
+          (part == nullptr || (*part)[k] == (*part)[static_cast<size_t>(n)])) {
         link.dependent.push_back(static_cast<int>(k));
         taken[k] = 1;
       }

@@ -26,7 +26,7 @@ inline constexpr int kMaxLadderFrameShells = 200000;
 /// longitudinal sills (C channels, flanges inwards) above the rails, cross
 /// bearers (a web in a y-z plane and a top flange into the platform, as
 /// deep as the sills) across the whole width at most `bearer_spacing`
-/// apart, and a side rail (a web in an x-z plane with a bottom flange
+/// apart (plus the rounding to the element grid), and a side rail (a web in an x-z plane with a bottom flange
 /// inwards) along each edge; they share their nodes where they meet. The
 /// sills rest on a spacer strip (wood, much softer than the steel: not
 /// modelled, as the seed leaves out the wooden deck and the attachments)
@@ -72,9 +72,11 @@ struct LadderFrameData {
   double E = 2.1e11;               ///< Young's modulus [Pa]
   double nu = 0.3;                 ///< Poisson's ratio
   double rho = 7850.0;             ///< density [kg/m^3]
-  /// Total mass of the frame [kg] including non-structural mass (platform,
-  /// brackets, fuel tank...) smeared on the rails as a non-structural mass
-  /// per area; 0: steel only. Must not be below the steel mass.
+  /// Total mass of the rails and cross members [kg] including
+  /// non-structural mass (brackets, fuel tank, batteries...; a platform
+  /// without its own `platform` map) smeared on the rails as a
+  /// non-structural mass per area; 0: steel only. Must not be below their
+  /// steel mass. A `platform` brings its own mass.
   double total_mass = 0.0;
   /// Radius of the rigid spiders (RBE2) that spread each interface node's
   /// load over the nodes around it, as a bracket does [m] (AddSpiders).
@@ -104,7 +106,7 @@ struct FrameAttachment {
 
 /// The generated frame.
 struct LadderFrame {
-  fe::Mesh mesh;                   ///< shells, one steel material; sections 0 rails, 1 cross members
+  fe::Mesh mesh;                   ///< shells, one steel material; sections in the order of LadderSection
   std::vector<std::string> names;  ///< interface names, in the order of the attachments
   std::vector<int> nodes;          ///< interface node index per name (the node nearest to the point)
   double steel_mass = 0.0;         ///< mass of the frame's steel alone (rails, cross members) [kg]
@@ -126,9 +128,11 @@ struct MassProperties3 {
 /// attachments). Throws InputError for non-positive dimensions, an element
 /// size that leaves fewer than one element across the flange, a cross
 /// member outside the rails, a total mass below the steel mass, or a
-/// platform that does not fit the frame (narrower than the rails, sill
-/// flanges reaching the centre plane, fewer than two brackets, a bracket off
-/// the rails or the sills, a mass below its steel).
+/// platform that does not fit the frame (narrower than the rails, ahead of
+/// the rails' front end, sill flanges reaching the centre plane, a gap
+/// between its plates under 1 mm, fewer than two brackets, a bracket off the
+/// rails or the sills, overlapping brackets, too short for its bearers'
+/// flanges, a mass below its steel).
 LadderFrame GenerateLadderFrame(const LadderFrameData& data, const std::vector<FrameAttachment>& attachments);
 
 /// Index of the mesh node nearest to `point` (the first of equals).
@@ -138,8 +142,15 @@ int NearestNode(const fe::Mesh& mesh, const fe::Vec3& point);
 /// node within `radius` of it [m], so that the loads of an attachment are
 /// spread over a patch instead of one shell node (a point load on a shell
 /// is singular). A node already dependent, or itself in `nodes`, is left
-/// out. No mass is added.
-void AddSpiders(fe::Mesh& mesh, const std::vector<int>& nodes, double radius);
+/// out. With `part` (one entry per node) only nodes of the independent
+/// node's part are taken: a spider on a rail must not reach the platform's
+/// sills above it (they meet only at the brackets). No mass is added.
+void AddSpiders(fe::Mesh& mesh, const std::vector<int>& nodes, double radius, const std::vector<int>* part = nullptr);
+
+/// The part of each node of a generated frame's mesh: 1 for the platform's
+/// sills, bearers and side rails, 0 for the rest (rails, cross members; a
+/// bracket's nodes are on the rail's or the sill's edge).
+std::vector<int> FramePartOfNodes(const fe::Mesh& mesh);
 
 /// Adds a rigid bracket (RBE2, all six DOF) from `node` to the nodes within
 /// `radius` of each of `points` [m] and of the node itself (nodes already

@@ -215,7 +215,9 @@ GeneratedFrameModel BuildGeneratedFrameModel(const TruckData& d, double g) {
                  lf.spider_radius);
     }
   }
-  AddSpiders(out.mesh, out.interface_nodes, lf.spider_radius);
+  // a spider on the rails must not reach the platform above them, nor one on the platform the rails
+  const std::vector<int> part = FramePartOfNodes(out.mesh);
+  AddSpiders(out.mesh, out.interface_nodes, lf.spider_radius, &part);
   return out;
 }
 

@@ -74,7 +74,10 @@ Fixture LoadFixture(const std::string& file) {
     double xm = 0, sxx = 0;
     for (double xs : mounts->x) xm += 2 * xs / n;
     for (double xs : mounts->x) sxx += 2 * (xs - xm) * (xs - xm);
-    const double top = x.d.ladder.bottom_z + x.d.ladder.web_height;
+    // the cargo on a platform's top, the rest on the rails
+    const double top = part == &x.d.cargo && x.d.ladder.platform.present
+                           ? PlatformTopZ(x.d.ladder)
+                           : x.d.ladder.bottom_z + x.d.ladder.web_height;
     for (double xs : mounts->x)
       for (double side : {1.0, -1.0}) {
         const double share = 1.0 / n + (sxx > 0 ? (part->cg.x() - xm) * (xs - xm) / sxx : 0.0);

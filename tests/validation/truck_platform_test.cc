@@ -168,6 +168,21 @@ TEST(TruckPlatform, CargoRestsOnThePlatformTheCabOnTheRails) {
   }
   EXPECT_EQ(cargo, 10);
   EXPECT_EQ(cab, 4);
+  // no spider joins the rails to the platform (they meet only at the
+  // brackets): the powertrain's rear mounts at x = -1.1 m sit on the rails
+  // under the platform, 0.02 m below its sills (found by a review)
+  const std::vector<int> part = FramePartOfNodes(model.mesh);
+  int under_platform = 0;
+  for (const fe::RigidLink& link : model.mesh.rigid_links) {
+    const fe::Vec3& x = model.mesh.nodes[static_cast<size_t>(link.independent)].x;
+    if (x.x() < d.ladder.platform.front_x && part[static_cast<size_t>(link.independent)] == 0 &&
+        x.z() > d.ladder.bottom_z + 0.5 * d.ladder.web_height)
+      ++under_platform;
+    for (int n : link.dependent)
+      EXPECT_EQ(part[static_cast<size_t>(n)], part[static_cast<size_t>(link.independent)])
+          << "rigid link " << link.id << " at x = " << x.x();
+  }
+  EXPECT_GE(under_platform, 2);  // the powertrain's two rear mounts: the case is there
 }
 
 TEST(TruckPlatform, BadPlatformsAreErrors) {
@@ -199,6 +214,23 @@ TEST(TruckPlatform, BadPlatformsAreErrors) {
   EXPECT_NE(message(f).find("brackets at x = -3 and -3 m overlap"), std::string::npos) << message(f);
   f.platform.brackets = {-1.5, -1.6};
   EXPECT_NE(message(f).find("overlap (bracket_length 0.2 m)"), std::string::npos) << message(f);
+  f = GridFrame();
+  f.platform.bracket_length = 0.01;  // shorter than an element: both land on one element of the grid
+  f.platform.brackets = {-3.0, -3.015};
+  EXPECT_NE(message(f).find("shares its elements with another"), std::string::npos) << message(f);
+  f = GridFrame();
+  f.platform.spacer = 1e-4;
+  EXPECT_NE(message(f).find("'spacer' must be at least 1 mm"), std::string::npos) << message(f);
+  f = GridFrame();
+  f.platform.mass = 10;  // at the platform's line in a truck file: the message starts with "platform: "
+  EXPECT_EQ(message(f).rfind("ladder frame: platform: mass 10 kg is below its steel mass", 0), 0u) << message(f);
+  f = GridFrame();
+  f.platform.width = 30;  // the shell count's estimate must see the bearers' flanges and side rails
+  f.platform.side_rail_flange_width = 14;
+  f.platform.bearer_spacing = 6.3;
+  f.platform.bearer_flange_width = 3;
+  f.element_size = 0.02;
+  EXPECT_NE(message(f).find("or check the platform's size and bearer_spacing"), std::string::npos) << message(f);
   f = GridFrame();
   f.platform.front_x = 1.5;  // ahead of the rails' front end at 1.0
   f.platform.brackets = {-1.5, -3.0};
