@@ -131,7 +131,7 @@ PYBIND11_MODULE(_core, m) {
                      int modes, double cutoff_hz, int keep, const std::string& fix, const std::string& rayleigh,
                      const std::string& damping_ratio, const std::string& modes_file, bool geometric_stiffening,
                      const std::string& units, bool solid_corner_stress, bool deformation_stiffening,
-                     const std::string& frame) {
+                     const std::string& frame, bool acceleration_modes) {
     flexmb::io::ReduceOptions o;
     o.model_path = model;
     o.output = output;
@@ -148,13 +148,15 @@ PYBIND11_MODULE(_core, m) {
     o.solid_corner_stress = solid_corner_stress;
     o.deformation_stiffening = deformation_stiffening;
     o.frame = frame;
+    o.acceleration_modes = acceleration_modes;
     o.json = true;
     return ModuleJson([&](std::ostream& out) { flexmb::io::Reduce(o, out); });
   }, py::arg("model"), py::arg("output"), py::arg("interface") = "", py::arg("modes") = -1,
         py::arg("cutoff_hz") = 0.0, py::arg("keep") = -1, py::arg("fix") = "", py::arg("rayleigh") = "",
         py::arg("damping_ratio") = "", py::arg("modes_file") = "", py::arg("geometric_stiffening") = false,
         py::arg("units") = "SI", py::arg("solid_corner_stress") = false,
-        py::arg("deformation_stiffening") = false, py::arg("frame") = "", "`flexmb reduce --json`.");
+        py::arg("deformation_stiffening") = false, py::arg("frame") = "", py::arg("acceleration_modes") = false,
+        "`flexmb reduce --json`.");
   m.def("body_info", [](const std::string& body) {
     flexmb::io::BodyInfoOptions o{body, true};
     return ModuleJson([&](std::ostream& out) { flexmb::io::BodyInfo(o, out); });

@@ -376,6 +376,9 @@ int main(int argc, char** argv) {
   reduce->add_flag("--deformation-stiffening", reduce_opt.deformation_stiffening,
                    "also store the geometric stiffness of the body's own deformation (P-delta of the "
                    "interface forces; beams, shells, solids)");
+  reduce->add_flag("--acceleration-modes", reduce_opt.acceleration_modes,
+                   "also add the static responses to the six rigid-body accelerations (own weight, uniform "
+                   "acceleration) as basis vectors: distributed mass away from the interface");
   reduce->add_flag("--solid-corner-stress", reduce_opt.solid_corner_stress,
                    "also store solid stress modes at the corner nodes (post: stresses at nodes; a larger body "
                    "file)");

@@ -376,7 +376,7 @@ ReducedBody ReduceBasis(const fe::FeModel& model, const fe::AssembledModel& a, c
   body.mesh = mesh;
   body.interface_nodes = options.interface_nodes;
   body.static_modes = nb;
-  body.normal_modes = basis.normal_modes();
+  body.normal_modes = basis.normal_modes() - basis.acceleration_modes;
   body.rigid_modes_removed = split.count;
 
   std::string ratios;
@@ -407,7 +407,8 @@ ReducedBody ReduceBasis(const fe::FeModel& model, const fe::AssembledModel& a, c
       {"damping_ratios", ratios},
       {"free_dof", std::to_string(a.dofs.n_free)},
       {"static_modes", std::to_string(nb)},
-      {"normal_modes", std::to_string(basis.normal_modes())},
+      {"normal_modes", std::to_string(basis.normal_modes() - basis.acceleration_modes)},
+      {"acceleration_modes", std::to_string(basis.acceleration_modes)},
       {"rigid_modes_removed", std::to_string(split.count)},
       {"flexible_modes", std::to_string(nk)},
       {"geometric_stiffening",

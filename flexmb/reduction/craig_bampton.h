@@ -55,6 +55,15 @@ struct ReductionOptions {
   /// P-delta of the forces at the interface nodes). Every element type;
   /// not for imported matrices (InputError).
   bool deformation_stiffening = false;
+  /// Also add the acceleration modes (static correction modes): the
+  /// interior's static response, interface held, to the inertial loads of
+  /// the six rigid-body accelerations (M r), M-orthonormalized against the
+  /// normal modes. With them the body's deformation under its own weight or
+  /// any uniform acceleration is in the basis exactly, however few normal
+  /// modes are kept (distributed mass away from the interface nodes: a
+  /// platform's deck, a boom's own weight). Not with imported modes or the
+  /// PETSc backend (InputError).
+  bool acceleration_modes = false;
   /// Also store the stress modes of solids at their corner nodes
   /// (StressModes::solid_node: 6 rows per corner, up to 8 per element, so
   /// the body file grows by about that factor for the solid part).

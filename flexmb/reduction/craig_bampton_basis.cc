@@ -96,6 +96,45 @@ void RemoveRigidRoundOff(const fe::Mesh& mesh, const fe::AssembledModel& model, 
   ProjectRigidMotions(rb, ri, basis.psi);
 }
 
+// Appends to basis.phi the acceleration modes: K_ii^-1 (M r)_i for the six
+// rigid-body vectors r (about the nodes' centroid), each M_ii-orthogonalized
+// against the columns before it (twice, classical Gram-Schmidt) and
+// normalized; one already in their span (below 1e-6 of its norm) is left out.
+void AppendAccelerationModes(const fe::Mesh& mesh, const fe::AssembledModel& model, const fe::SparseMat& k_ii,
+                             const fe::SparseMat& m_ii, const fe::SparseCholesky& factor, CraigBamptonBasis& basis) {
+  const int ni = static_cast<int>(basis.interior.size());
+  fe::Vec3 origin = fe::Vec3::Zero();
+  for (const fe::Node& node : mesh.nodes) origin += node.x;
+  origin /= static_cast<double>(std::max<size_t>(mesh.nodes.size(), 1));
+  const Eigen::MatrixXd mr = model.M * RigidBodyVectors(mesh, model.dofs, origin);
+  Eigen::MatrixXd load(ni, 6);
+  for (int j = 0; j < ni; ++j) load.row(j) = mr.row(basis.interior[j]);
+  const Eigen::MatrixXd a = factor.Solve(load);
+  const int nf = static_cast<int>(basis.phi.cols());
+  Eigen::MatrixXd phi(ni, nf + 6);
+  phi.leftCols(nf) = basis.phi;
+  std::vector<double> hz(basis.fixed_interface_hz.data(), basis.fixed_interface_hz.data() + nf);
+  int n = nf;
+  for (int c = 0; c < 6; ++c) {
+    Eigen::VectorXd v = a.col(c);
+    const double norm0 = std::sqrt(std::max(0.0, v.dot(m_ii * v)));
+    if (!(norm0 > 0.0)) continue;  // no mass moves in this direction
+    for (int pass = 0; pass < 2; ++pass) {
+      const Eigen::VectorXd mv = m_ii * v;
+      v -= phi.leftCols(n) * (phi.leftCols(n).transpose() * mv);
+    }
+    const double norm = std::sqrt(std::max(0.0, v.dot(m_ii * v)));
+    if (!(norm > 1e-6 * norm0)) continue;
+    v /= norm;
+    phi.col(n) = v;
+    hz.push_back(std::sqrt(std::max(0.0, v.dot(k_ii * v))) / (2.0 * 3.14159265358979323846));
+    ++n;
+  }
+  basis.phi = phi.leftCols(n);
+  basis.fixed_interface_hz = Eigen::Map<const Eigen::VectorXd>(hz.data(), static_cast<Eigen::Index>(hz.size()));
+  basis.acceleration_modes = n - nf;
+}
+
 }  // namespace
 
 double StiffnessScale(const fe::SparseMat& k, const fe::SparseMat& m) {
@@ -236,7 +275,7 @@ CraigBamptonBasis BuildCraigBamptonBasis(const fe::Mesh& mesh, const fe::Assembl
   // the eigen solvers need a mass: a deck written for statics often has none
   // (no density on its materials), which they would report only as a failed
   // decomposition
-  if (count > 0) {
+  if (count > 0 || options.acceleration_modes) {
     double m_max = 0.0;
     for (Eigen::Index i = 0; i < m.ii.rows(); ++i) m_max = std::max(m_max, m.ii.coeff(i, i));
     RequireInteriorMass(m_max, mesh.source);
@@ -321,6 +360,12 @@ CraigBamptonBasis BuildCraigBamptonBasis(const fe::Mesh& mesh, const fe::Assembl
   if (static_thread.joinable()) static_thread.join();
   one_blas_thread.reset();
   if (static_error) std::rethrow_exception(static_error);
+  // 4b. acceleration modes on the same factor
+  if (options.acceleration_modes) {
+    t0 = Clock::now();
+    AppendAccelerationModes(mesh, model, k.ii, m.ii, factor, basis);
+    t.normal_modes += Seconds(t0);
+  }
 
   // 5. reduced matrices, coordinates (u_b, eta)
   t0 = Clock::now();

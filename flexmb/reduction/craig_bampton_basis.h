@@ -32,8 +32,14 @@ struct CraigBamptonBasis {
   /// (K r = 0 for the six geometric rigid-body vectors r) the solve's
   /// round-off along the rigid directions is removed, Psi r_b = r_i exactly.
   Eigen::MatrixXd psi;
-  Eigen::MatrixXd phi;           ///< n_i x n_f fixed-interface normal modes, Phi^T M_ii Phi = I
-  Eigen::VectorXd fixed_interface_hz;  ///< their frequencies [Hz], ascending
+  /// n_i x n_f fixed-interface normal modes, Phi^T M_ii Phi = I; with
+  /// ReductionOptions::acceleration_modes the acceleration modes follow
+  /// (M_ii-orthonormal to them and each other, not eigenvectors)
+  Eigen::MatrixXd phi;
+  /// their frequencies [Hz]: the normal modes' ascending, then the
+  /// acceleration modes' Rayleigh quotients
+  Eigen::VectorXd fixed_interface_hz;
+  int acceleration_modes = 0;    ///< how many of phi's last columns are acceleration modes
   Eigen::MatrixXd mass;          ///< M_CB = H^T M H, m x m, m = n_b + n_f
   /// K_CB = H^T K H, m x m. BuildCraigBamptonBasis forms it without a
   /// product over the interior: with K_ii Psi = -K_ib the static block is

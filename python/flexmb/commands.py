@@ -40,7 +40,7 @@ def fe_export(model, hb_dir, fix="", interface="", modes=10):
 
 def reduce(model, output, interface="", modes=-1, cutoff_hz=0.0, keep=-1, fix="", rayleigh="",
            damping_ratio="", modes_file="", geometric_stiffening=False, units="SI", solid_corner_stress=False,
-           deformation_stiffening=False, frame=""):
+           deformation_stiffening=False, frame="", acceleration_modes=False):
     """`flexmb reduce --json`: Craig-Bampton reduction of a part into the body
     file `output` (.h5). interface: node ids "1,2,3" or a node set; modes:
     fixed-interface normal modes (or cutoff_hz [Hz]); keep: lowest flexible
@@ -50,8 +50,10 @@ def reduce(model, output, interface="", modes=-1, cutoff_hz=0.0, keep=-1, fix=""
     deformation_stiffening: `--geometric-stiffening` (centrifugal) and
     `--deformation-stiffening` (the body's own deformation); frame: the
     floating frame, "mean" (also "tisserand", "buckens") or "node:ID" (or
-    a node id), `--frame` (default: mean axes, or the fix nodes). Returns
-    the report (frame, frequencies_hz, mass_kg, timings_s, ...)."""
+    a node id), `--frame` (default: mean axes, or the fix nodes);
+    acceleration_modes: `--acceleration-modes` (the static responses to the
+    rigid-body accelerations in the basis: own weight). Returns the report
+    (frame, frequencies_hz, mass_kg, timings_s, ...)."""
     if isinstance(interface, (list, tuple)):
         interface = ",".join(str(i) for i in interface)
     if isinstance(fix, (list, tuple)):
@@ -66,7 +68,7 @@ def reduce(model, output, interface="", modes=-1, cutoff_hz=0.0, keep=-1, fix=""
         damping_ratio = repr(float(damping_ratio))
     return json.loads(_core.reduce(os.fspath(model), os.fspath(output), interface, modes, cutoff_hz, keep, fix,
                                    rayleigh, damping_ratio, os.fspath(modes_file), geometric_stiffening, units,
-                                   solid_corner_stress, deformation_stiffening, frame))
+                                   solid_corner_stress, deformation_stiffening, frame, acceleration_modes))
 
 
 def body_info(body):

@@ -46,6 +46,7 @@ int WriteTruckFrameDeck(const std::string& truck_file, const std::string& deck, 
   std::fprintf(out, "reduce it as the lane-change file does:\n  flexmb reduce %s --interface ASET --modes %d", deck.c_str(),
                r.normal_modes);
   if (r.keep >= 0) std::fprintf(out, " --keep %d", r.keep);
+  if (r.acceleration_modes) std::fprintf(out, " --acceleration-modes");
   std::fprintf(out, " --damping-ratio %g --units SI -o %s\n", r.damping_ratio, body.c_str());
   std::fprintf(out, "and give it to the truck (truck: frame:), with the rail geometry keys kept:\n");
   std::fprintf(out, "  frame:\n    body: %s\n    mount_tolerance: 0.35   # m: the arm pivots hang about 0.3 m below the rails\n",

@@ -95,7 +95,8 @@ LaneChangeFile ReadFile(const std::string& path) {
   ctx.CheckKeys(root, {"lane_change_test", "truck", "name", "note"});
   const YAML::Node t = root["lane_change_test"];
   ctx.SetEntity("lane_change_test");
-  ctx.CheckKeys(t, {"entry_speed_kmh", "run_up_time", "frame", "frame_modes", "frame_damping", "frame_keep_modes", "road_mu", "course", "driver", "solver",
+  ctx.CheckKeys(t, {"entry_speed_kmh", "run_up_time", "frame", "frame_modes", "frame_damping", "frame_keep_modes",
+                     "frame_acceleration_modes", "road_mu", "course", "driver", "solver",
                      "animation", "animation_fps", "animation_deformation_scale"});
   f.speed_kmh = ctx.Double(t, "entry_speed_kmh", f.speed_kmh);
   f.run_up_time = ctx.Double(t, "run_up_time", f.run_up_time);
@@ -107,6 +108,7 @@ LaneChangeFile ReadFile(const std::string& path) {
   fr.damping_ratio = ctx.Double(t, "frame_damping", fr.damping_ratio);
   if (!(fr.damping_ratio >= 0)) ctx.Fail(t["frame_damping"], "frame_damping must be >= 0");
   fr.keep = ctx.Integer(t, "frame_keep_modes", fr.keep);
+  fr.acceleration_modes = ctx.Bool(t, "frame_acceleration_modes", fr.acceleration_modes);
   f.mu = ctx.Positive(t, "road_mu");
   f.animation = ctx.Bool(t, "animation", f.animation);
   f.animation_data.fps = ctx.Double(t, "animation_fps", f.animation_data.fps);
@@ -170,12 +172,12 @@ LaneChangeFile ReadFile(const std::string& path) {
   // the user's frame comes reduced: its modes and damping are the body file's
   if (f.truck.frame_body) {
     ctx.SetEntity("lane_change_test");
-    for (const char* key : {"frame_modes", "frame_keep_modes", "frame_damping"})
+    for (const char* key : {"frame_modes", "frame_keep_modes", "frame_damping", "frame_acceleration_modes"})
       if (t[key])
         ctx.Fail(t[key], std::string("'") + key +
                              "' applies to the generated frame; the truck's frame is the body file " +
                              f.truck.frame_body_file + " (set modes and damping when reducing it: flexmb reduce "
-                             "--modes, --keep, --damping-ratio)");
+                             "--modes, --keep, --damping-ratio, --acceleration-modes)");
   }
   f.driver.steering_ratio = f.truck.steering_ratio;
   return f;
@@ -333,6 +335,7 @@ std::shared_ptr<const reduction::ReducedBody> ReduceTruckFrame(const TruckData& 
   o.interface_nodes = std::move(frame.interface_nodes);
   o.normal_modes = r.normal_modes;
   o.keep = r.keep;
+  o.acceleration_modes = r.acceleration_modes;
   o.damping_ratios = {r.damping_ratio};
   return std::make_shared<reduction::ReducedBody>(reduction::ReduceCraigBampton(model, o));
 }

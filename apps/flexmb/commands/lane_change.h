@@ -162,6 +162,9 @@ struct FrameReductionData {
   int normal_modes = 10;           ///< fixed-interface normal modes (seed: 10)
   double damping_ratio = 0.02;     ///< modal damping ratio of every mode
   int keep = -1;                   ///< keep the lowest N flexible modes (-1: all, as the seed)
+  /// add the acceleration modes (ReductionOptions::acceleration_modes): the
+  /// frame's sag under its own distributed mass in the basis
+  bool acceleration_modes = false;
 };
 
 /// The truck's elastic frame: the user's body file (d.frame_body, as it

@@ -130,6 +130,9 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
   ro.keep = opt.keep;
   ro.geometric_stiffening = opt.geometric_stiffening;
   ro.deformation_stiffening = opt.deformation_stiffening;
+  ro.acceleration_modes = opt.acceleration_modes;
+  if (opt.acceleration_modes && imported_modes)
+    throw InputError("--acceleration-modes needs the FE model's factor: not with --modes-file");
   ro.solid_corner_stress = opt.solid_corner_stress;
   ro.eigen_tolerance = opt.eigen_tolerance;
   if (imported_modes && opt.reducer) {
@@ -244,7 +247,11 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
     s << "\n";
     if (!frame.empty()) s << "floating frame: " << frame << "\n";
     if (opt.reducer) s << "factorization and modes: " << opt.backend << "\n";
-    s << "Craig-Bampton basis: " << body.static_modes << " static + " << body.normal_modes << " normal modes; "
+    std::string acceleration;
+    for (const auto& [key, value] : body.provenance)
+      if (key == "acceleration_modes" && value != "0") acceleration = " + " + value + " acceleration";
+    s << "Craig-Bampton basis: " << body.static_modes << " static + " << body.normal_modes << " normal" << acceleration
+      << " modes; "
       << body.rigid_modes_removed << " rigid-body modes removed; " << nk << " flexible modes kept\n";
     if (mp.mass > 0.0) s << "mass " << Short(mp.mass) << " kg, centre of mass " << ShortVector(mp.center) << " m\n";
     command::WriteFrequencyTable(s, body.frequencies_hz);

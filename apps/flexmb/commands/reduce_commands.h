@@ -51,6 +51,9 @@ struct ReduceOptions {
   /// Also compute the geometric stiffness of the body's own deformation
   /// (reduction/deformation_stiffness.h).
   bool deformation_stiffening = false;
+  /// Also add the acceleration (static correction) modes
+  /// (ReductionOptions::acceleration_modes).
+  bool acceleration_modes = false;
   /// Also store solid stress modes at the corner nodes (the solid_node
   /// table: stresses at nodes for `flexmb post`; a larger body file).
   bool solid_corner_stress = false;

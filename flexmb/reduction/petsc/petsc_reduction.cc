@@ -509,6 +509,8 @@ ReducedBody ReduceCraigBamptonPetsc(const fe::FeModel& model, const ReductionOpt
                      "--backend petsc",
                      where);
   }
+  if (options.acceleration_modes)
+    throw InputError("the acceleration modes are not distributed yet: reduce without --backend petsc", where);
   if (options.geometric_stiffening || options.deformation_stiffening) {
     throw InputError("the stiffening options are not distributed yet: reduce without --backend petsc", where);
   }
