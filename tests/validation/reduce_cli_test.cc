@@ -279,6 +279,26 @@ TEST_F(ReduceCli, BodyFromExportedModesEqualsDirectReduction) {
          "nodes: [{id: 900001, x: [-0.1, 0.025, 0]}]\n"
          "rigid_links: [{independent: 900001, dependent: [2]}]\n";
   ExpectFailure("reduce ex/links.yaml --modes-file ex/modes.mtx -o b.h5", 2, {"modes.mtx", "renumbers"});
+  // the acceleration modes need the model's factor
+  ExpectFailure("reduce ex --modes-file ex/modes.mtx --acceleration-modes -o b.h5", 2,
+                {"--acceleration-modes", "--modes-file"});
+}
+
+// --acceleration-modes: six more basis vectors, counted in the report and
+// the provenance; the mass and the kept count follow
+TEST_F(ReduceCli, AccelerationModes) {
+  const Json plain = Reduce("--interface " + kEnds + " --modes 4", "plain.h5");
+  const Json acc = Reduce("--interface " + kEnds + " --modes 4 --acceleration-modes", "acc.h5");
+  EXPECT_EQ(acc["normal_modes"].number, 4);
+  EXPECT_EQ(acc["frequencies_hz"].Numbers().size(), plain["frequencies_hz"].Numbers().size() + 6);
+  EXPECT_NEAR(acc["mass_kg"].number, plain["mass_kg"].number, 1e-12 * plain["mass_kg"].number);
+  const flexmb::reduction::ReducedBody b = flexmb::io::ReadBody((dir_ / "acc.h5").string());
+  bool found = false;
+  for (const auto& [key, value] : b.provenance)
+    if (key == "acceleration_modes") found = value == "6";
+  EXPECT_TRUE(found);
+  const CliResult text = RunCli(dir_, "reduce '" + kStrip + "' --interface " + kEnds + " --modes 4 --acceleration-modes -o t.h5");
+  EXPECT_NE(text.out.find("static + 4 normal + 6 acceleration modes"), std::string::npos) << text.out;
 }
 
 TEST_F(ReduceCli, FrameOption) {
