@@ -251,8 +251,11 @@ LadderFrame GenerateLadderFrame(const LadderFrameData& p, const std::vector<Fram
       patch(kSideRailSection, i1 - i0, segment(rail_flange),
             [&](int i, int j) { return fe::Vec3(xi(i0 + i), ys[static_cast<size_t>(first[rail_flange] + j)], zs0); });
       // brackets: shear plates over the spacer gap, rail web top to sill web bottom
-      for (const auto& [b0, b1] : bracket_cells)
-        patch(kBracketSection, b1 - b0, nsp, [&](int i, int j) { return fe::Vec3(xi(b0 + i), y, z_top + j * dsp); });
+      for (const std::pair<int, int>& cell : bracket_cells) {
+        const int b0 = cell.first;  // a local, not a structured binding: lambdas capture it (C++17)
+        patch(kBracketSection, cell.second - b0, nsp,
+              [&](int i, int j) { return fe::Vec3(xi(b0 + i), y, z_top + j * dsp); });
+      }
     }
     // cross bearers at both ends and evenly between, across the whole width:
     // a web and a top flange pointing into the platform (beside the sills'
