@@ -61,7 +61,7 @@ def own_frame_file(truck_text, mounts, platform=None, body='frame.h5'):
     new += keep + ['    mounts:                    # attachment: interface node id of the body file']
     new += [f'      {name}: {node}' for name, node in mounts]
     text = truck_text[:start] + '\n'.join(new) + '\n' + truck_text[end:]
-    return re.sub(r'^  frame_(modes|keep_modes|damping):.*\n', '', text, flags=re.M)
+    return re.sub(r'^  frame_(modes|keep_modes|damping|acceleration_modes):.*\n', '', text, flags=re.M)
 
 
 def main():

@@ -288,7 +288,8 @@ ReducedBody ReduceBasis(const fe::FeModel& model, const fe::AssembledModel& a, c
   if (options.keep > available) {
     throw InputError("keep = " + std::to_string(options.keep) + " flexible modes asked, but the basis has only " +
                          std::to_string(available) + " (" + std::to_string(nb) + " static + " +
-                         std::to_string(basis.normal_modes()) + " normal - " + std::to_string(split.count) +
+                         std::to_string(basis.normal_modes() - basis.acceleration_modes) + " normal + " +
+                         std::to_string(basis.acceleration_modes) + " acceleration - " + std::to_string(split.count) +
                          " rigid)",
                      {mesh.source, 0, "reduction options"});
   }

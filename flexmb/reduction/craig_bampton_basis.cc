@@ -99,14 +99,20 @@ void RemoveRigidRoundOff(const fe::Mesh& mesh, const fe::AssembledModel& model, 
 // Appends to basis.phi the acceleration modes: K_ii^-1 (M r)_i for the six
 // rigid-body vectors r (about the nodes' centroid), each M_ii-orthogonalized
 // against the columns before it (twice, classical Gram-Schmidt) and
-// normalized; one already in their span (below 1e-6 of its norm) is left out.
+// normalized; one already in their span (below 1e-4 of its norm) is left out.
 void AppendAccelerationModes(const fe::Mesh& mesh, const fe::AssembledModel& model, const fe::SparseMat& k_ii,
                              const fe::SparseMat& m_ii, const fe::SparseCholesky& factor, CraigBamptonBasis& basis) {
   const int ni = static_cast<int>(basis.interior.size());
   fe::Vec3 origin = fe::Vec3::Zero();
   for (const fe::Node& node : mesh.nodes) origin += node.x;
   origin /= static_cast<double>(std::max<size_t>(mesh.nodes.size(), 1));
-  const Eigen::MatrixXd mr = model.M * RigidBodyVectors(mesh, model.dofs, origin);
+  // the inertial loads through the mass of every active DOF (T^T M_full
+  // r_full): the mass that couples to clamped or constrained DOF loads the
+  // interior too (T r_free is zero there)
+  const Eigen::MatrixXd mr = model.M_full.rows() == model.dofs.n_full && model.T.rows() == model.dofs.n_full
+                                 ? Eigen::MatrixXd(model.T.transpose() *
+                                                   (model.M_full * RigidBodyVectorsFull(mesh, model.dofs, origin)))
+                                 : Eigen::MatrixXd(model.M * RigidBodyVectors(mesh, model.dofs, origin));
   Eigen::MatrixXd load(ni, 6);
   for (int j = 0; j < ni; ++j) load.row(j) = mr.row(basis.interior[j]);
   const Eigen::MatrixXd a = factor.Solve(load);
@@ -124,7 +130,9 @@ void AppendAccelerationModes(const fe::Mesh& mesh, const fe::AssembledModel& mod
       v -= phi.leftCols(n) * (phi.leftCols(n).transpose() * mv);
     }
     const double norm = std::sqrt(std::max(0.0, v.dot(m_ii * v)));
-    if (!(norm > 1e-6 * norm0)) continue;
+    // nearly in the span already: normalizing the remainder would scale the
+    // solve's round-off (about the model's condition times 1e-16) by 1 / ratio
+    if (!(norm > 1e-4 * norm0)) continue;
     v /= norm;
     phi.col(n) = v;
     hz.push_back(std::sqrt(std::max(0.0, v.dot(k_ii * v))) / (2.0 * 3.14159265358979323846));
@@ -176,7 +184,8 @@ void ProjectRigidMotions(const Eigen::MatrixXd& rb, const Eigen::MatrixXd& ri, E
 void RequireInteriorMass(double largest_diagonal, const std::string& source) {
   if (largest_diagonal > 0.0) return;
   throw NumericalError("the model has no mass at its interior DOF, so it has no fixed-interface modes: give its "
-                       "materials a density (Nastran MAT1 RHO, Abaqus *DENSITY) or reduce with --modes 0",
+                       "materials a density (Nastran MAT1 RHO, Abaqus *DENSITY) or reduce with --modes 0 and "
+                       "without --acceleration-modes",
                        {source, 0, "Craig-Bampton reduction"});
 }
 

@@ -1,23 +1,29 @@
 #include "flexmb/reduction/rigid_modes.h"
 
 #include <Eigen/Dense>
+#include <array>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "flexmb/common/error.h"
 
 namespace flexmb::reduction {
 
-Eigen::MatrixXd RigidBodyVectors(const fe::Mesh& mesh, const fe::DofMap& dofs, const fe::Vec3& origin) {
-  if (dofs.free.size() != mesh.nodes.size()) {
-    throw InputError("rigid-body vectors: the DOF map has " + std::to_string(dofs.free.size()) +
+namespace {
+
+// rows: `numbering` (free or full) of every node and component; n rows
+Eigen::MatrixXd RigidVectors(const fe::Mesh& mesh, const std::vector<std::array<int, 6>>& numbering, int n_rows,
+                             const fe::Vec3& origin) {
+  if (numbering.size() != mesh.nodes.size()) {
+    throw InputError("rigid-body vectors: the DOF map has " + std::to_string(numbering.size()) +
                      " nodes, the mesh " + std::to_string(mesh.nodes.size()));
   }
-  Eigen::MatrixXd r = Eigen::MatrixXd::Zero(dofs.n_free, 6);
+  Eigen::MatrixXd r = Eigen::MatrixXd::Zero(n_rows, 6);
   for (size_t n = 0; n < mesh.nodes.size(); ++n) {
     const fe::Vec3 x = mesh.nodes[n].x - origin;
     for (int c = 0; c < 6; ++c) {
-      const int f = dofs.free[n][c];
+      const int f = numbering[n][static_cast<size_t>(c)];
       if (f < 0) continue;
       r(f, c) = 1.0;
       if (c < 3) {
@@ -29,6 +35,16 @@ Eigen::MatrixXd RigidBodyVectors(const fe::Mesh& mesh, const fe::DofMap& dofs, c
     }
   }
   return r;
+}
+
+}  // namespace
+
+Eigen::MatrixXd RigidBodyVectors(const fe::Mesh& mesh, const fe::DofMap& dofs, const fe::Vec3& origin) {
+  return RigidVectors(mesh, dofs.free, dofs.n_free, origin);
+}
+
+Eigen::MatrixXd RigidBodyVectorsFull(const fe::Mesh& mesh, const fe::DofMap& dofs, const fe::Vec3& origin) {
+  return RigidVectors(mesh, dofs.full, dofs.n_full, origin);
 }
 
 RigidSplit SplitRigidMotions(const Eigen::MatrixXd& mass, const Eigen::MatrixXd& stiffness,

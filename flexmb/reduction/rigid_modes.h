@@ -22,6 +22,11 @@ namespace flexmb::reduction {
 /// motion of every active DOF.
 Eigen::MatrixXd RigidBodyVectors(const fe::Mesh& mesh, const fe::DofMap& dofs, const fe::Vec3& origin);
 
+/// The same on the full numbering (DofMap::full, n_full x 6): every active
+/// DOF, those of dependent (rigid-link) and constrained nodes included, for
+/// loads through AssembledModel::M_full.
+Eigen::MatrixXd RigidBodyVectorsFull(const fe::Mesh& mesh, const fe::DofMap& dofs, const fe::Vec3& origin);
+
 /// The rigid motions found in a reduced space of dimension m with symmetric
 /// mass and stiffness matrices (mass positive definite).
 struct RigidSplit {

@@ -45,6 +45,18 @@ def test_reduce_stiffening_options(strip, tmp_path):
     assert not info["deformation_stiffening"] and not info["geometric_stiffening"]
 
 
+def test_reduce_acceleration_modes(strip, tmp_path):
+    """`acceleration_modes=True` (`--acceleration-modes`): six more basis
+    vectors, in the report and in `body_info`; the free strip's lowest
+    frequencies do not rise (the basis only grows: Rayleigh-Ritz)."""
+    plain = flexmb.reduce(strip, tmp_path / "p.h5", interface=ENDS, modes=4)
+    acc = flexmb.reduce(strip, tmp_path / "a.h5", interface=ENDS, modes=4, acceleration_modes=True)
+    assert (plain["acceleration_modes"], acc["acceleration_modes"]) == (0, 6)
+    assert acc["flexible_modes"] == plain["flexible_modes"] + 6
+    assert all(a <= p * (1 + 1e-9) for a, p in zip(acc["frequencies_hz"], plain["frequencies_hz"]))
+    assert flexmb.body_info(tmp_path / "a.h5")["acceleration_modes"] == 6
+
+
 def test_reduce_frame_option(strip, tmp_path):
     mean = flexmb.reduce(strip, tmp_path / "m.h5", interface=ENDS, modes=4, frame="buckens")
     assert mean["frame"].startswith("mean axes")

@@ -114,6 +114,8 @@ def test_bad_mounts_are_errors_naming_file_line_and_mount(cli, files):
                 r"bad\.yaml:\d+: .*'thickness' shapes the generated ladder frame")
     check_error(cli, own, [("  road_mu:", "  frame_modes: 12\n  road_mu:")],
                 r"bad\.yaml:\d+: .*'frame_modes' applies to the generated frame")
+    check_error(cli, own, [("  road_mu:", "  frame_acceleration_modes: true\n  road_mu:")],
+                r"bad\.yaml:\d+: .*'frame_acceleration_modes' applies to the generated frame.*--acceleration-modes")
     check_error(cli, own, [("    body: frame.h5", "    body: missing.h5")], r"bad\.yaml:\d+: .*cannot use body file")
 
 

@@ -195,20 +195,17 @@ TEST(ReductionCB, AccelerationModesMakeTheOwnWeightExact) {
     EXPECT_EQ(added, acceleration ? "6" : "0");
     errors[acceleration ? 1 : 0] = err;
   }
-  // with them exact to the solver's precision: the acceleration vectors are
-  // themselves solves with the K_ii factor, and their error reaches the
-  // reduced solution (measured 1.3e-7 against the full
-  // solution's refinement change 1.2e-8, the same from the basis directly,
-  // without the reduced eigenproblem, and with one step of refinement of the
-  // acceleration vectors); without them the interior's own sag is missing
-  // (7.3e-5)
-  EXPECT_LT(errors[1], 100.0 * precision);
+  // with them exact to the solver's precision (the inertial loads through
+  // M_full: the mass coupled to the clamped node loads the interior too; a
+  // load through the free-DOF mass alone left 1.3e-7, found by a review);
+  // without them the interior's own sag is missing (7.3e-5)
+  EXPECT_LT(errors[1], 10.0 * precision);
   EXPECT_GT(errors[0], 100.0 * errors[1]);
 }
 
 // The acceleration modes follow the normal modes in Phi, M_ii-orthonormal
-// to them and to each other (the normal block of M_CB is the identity), with
-// a frequency (Rayleigh quotient) each; a free body (no support) included.
+// to them and to each other (the normal block of M_CB is the identity),
+// uncoupled from them through K, with a frequency (Rayleigh quotient) each.
 TEST(ReductionCB, AccelerationModesAreMassOrthonormalToTheNormalModes) {
   const Ladder l = CoarseLadder();
   const fe::AssembledModel a = fe::Assemble(l.mesh);
@@ -222,11 +219,15 @@ TEST(ReductionCB, AccelerationModesAreMassOrthonormalToTheNormalModes) {
   ASSERT_EQ(basis.fixed_interface_hz.size(), 12);
   const Eigen::MatrixXd mff = basis.mass.bottomRightCorner(12, 12);
   EXPECT_LT((mff - Eigen::MatrixXd::Identity(12, 12)).cwiseAbs().maxCoeff(), 1e-10);
+  // the normal modes do not couple to them through K either (K_ii a = (M r)_i
+  // makes Phi^T K_ii a_perp vanish): the normal block stays diagonal
+  const int nb = basis.static_modes();
+  const Eigen::MatrixXd k_na = basis.stiffness.block(nb, nb + 6, 6, 6);
+  const double k_scale = basis.stiffness.block(nb, nb, 12, 12).diagonal().maxCoeff();
+  EXPECT_LT(k_na.cwiseAbs().maxCoeff(), 1e-8 * k_scale) << k_na;
   for (int k = 6; k < 12; ++k) {
-    // the Rayleigh quotient of a unit-mass vector: its stiffness diagonal
-    const double w = 2.0 * M_PI * basis.fixed_interface_hz(k);
-    EXPECT_NEAR(w * w, basis.stiffness(basis.static_modes() + k, basis.static_modes() + k), 1e-9 * w * w);
-    // M-orthogonal to the six lowest modes: at least the sixth's (Courant-Fischer)
+    // M-orthogonal to the six lowest modes: its Rayleigh quotient is at
+    // least the seventh eigenvalue, so above the sixth (Courant-Fischer)
     EXPECT_GE(basis.fixed_interface_hz(k), basis.fixed_interface_hz(5) * (1 - 1e-9));
   }
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <set>
@@ -60,9 +61,18 @@ BodyMass MassOf(const reduction::InertiaInvariants& v) {
 
 // the JSON lines static_modes to inertia_kg_m2 shared by "reduce" and
 // "body info"
+// the acceleration modes in the body's basis (its provenance; 0 for files
+// written before them)
+int AccelerationModes(const reduction::ReducedBody& body) {
+  for (const auto& [key, value] : body.provenance)
+    if (key == "acceleration_modes") return std::atoi(value.c_str());
+  return 0;
+}
+
 void JsonModesAndMass(std::ostream& s, const reduction::ReducedBody& body, const BodyMass& mp) {
   s << "  \"static_modes\": " << body.static_modes << ",\n";
   s << "  \"normal_modes\": " << body.normal_modes << ",\n";
+  s << "  \"acceleration_modes\": " << AccelerationModes(body) << ",\n";
   s << "  \"rigid_modes_removed\": " << body.rigid_modes_removed << ",\n";
   s << "  \"flexible_modes\": " << body.frequencies_hz.size() << ",\n";
   s << "  \"frequencies_hz\": " << JsonArray(body.frequencies_hz) << ",\n";
@@ -247,11 +257,9 @@ int Reduce(const ReduceOptions& opt, std::ostream& out) {
     s << "\n";
     if (!frame.empty()) s << "floating frame: " << frame << "\n";
     if (opt.reducer) s << "factorization and modes: " << opt.backend << "\n";
-    std::string acceleration;
-    for (const auto& [key, value] : body.provenance)
-      if (key == "acceleration_modes" && value != "0") acceleration = " + " + value + " acceleration";
-    s << "Craig-Bampton basis: " << body.static_modes << " static + " << body.normal_modes << " normal" << acceleration
-      << " modes; "
+    const int acceleration = AccelerationModes(body);
+    s << "Craig-Bampton basis: " << body.static_modes << " static + " << body.normal_modes << " normal"
+      << (acceleration > 0 ? " + " + std::to_string(acceleration) + " acceleration" : "") << " modes; "
       << body.rigid_modes_removed << " rigid-body modes removed; " << nk << " flexible modes kept\n";
     if (mp.mass > 0.0) s << "mass " << Short(mp.mass) << " kg, centre of mass " << ShortVector(mp.center) << " m\n";
     command::WriteFrequencyTable(s, body.frequencies_hz);
@@ -321,8 +329,10 @@ int BodyInfo(const BodyInfoOptions& opt, std::ostream& out) {
       s << (k ? "," : " (ids ") << mesh.nodes[body.interface_nodes[k]].id;
     }
     s << (body.interface_nodes.empty() ? "\n" : ")\n");
-    s << "modes: " << nk << " flexible (basis " << body.static_modes << " static + " << body.normal_modes
-      << " normal, " << body.rigid_modes_removed << " rigid-body modes removed)\n";
+    const int acceleration = AccelerationModes(body);
+    s << "modes: " << nk << " flexible (basis " << body.static_modes << " static + " << body.normal_modes << " normal"
+      << (acceleration > 0 ? " + " + std::to_string(acceleration) + " acceleration" : "") << ", "
+      << body.rigid_modes_removed << " rigid-body modes removed)\n";
     if (mp.mass > 0.0) {
       WriteMassText(s, mp.mass, mp.center, mp.inertia, "body");
     } else {
