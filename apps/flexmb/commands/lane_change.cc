@@ -196,13 +196,17 @@ class FrameResponse {
  public:
   /// Instants per batch.
   static constexpr int kBatch = 32;
-  /// Length of one buffered CSV row without the frame columns.
-  static constexpr size_t kRowChars = 1024;
+  /// Length of one CSV row without the frame columns for a truck of
+  /// `axles` axles: each value is at most 14 characters with its comma
+  /// (%.6g), 16 values for the truck, 6 per axle and its two wheels.
+  static size_t RowChars(size_t axles) { return 16 + 14 * (16 + 6 * axles); }
 
   /// body: the elastic frame (nullptr: rigid frame, inactive); csv: the
-  /// results file the rows go to (nullptr: none).
-  FrameResponse(const FlexibleBody* body, std::FILE* csv) : body_(body), csv_(csv) {
+  /// results file the rows go to (nullptr: none); row_chars: the rows'
+  /// length (RowChars).
+  FrameResponse(const FlexibleBody* body, std::FILE* csv, size_t row_chars) : body_(body), csv_(csv) {
     if (!body_) return;
+    for (Instant& in : rows_) in.text.assign(row_chars, '\0');
     const reduction::ReducedBody& b = body_->reduced();
     const Eigen::Index nodes = b.modes.rows() / 6, n = body_->modes();
     translation_modes_.resize(3 * nodes, n);
@@ -218,7 +222,6 @@ class FrameResponse {
       for (int nd : e.nodes) c += b.mesh.nodes[static_cast<size_t>(nd)].x / static_cast<double>(e.nodes.size());
       centroid_[k] = c;
     }
-    rows_.resize(kBatch);
   }
   bool active() const { return body_ != nullptr; }
 
@@ -288,14 +291,14 @@ class FrameResponse {
   struct Instant {
     double t = 0;
     bool record = false, has_row = false;
-    std::array<char, kRowChars> text{};
+    std::vector<char> text;  ///< sized once (RowChars)
   };
   const FlexibleBody* body_;
   std::FILE* csv_;
   MatX translation_modes_, w_, u_, s_;
   VecX vm_;
   std::vector<Vec3> centroid_;
-  std::vector<Instant> rows_;
+  std::vector<Instant> rows_ = std::vector<Instant>(kBatch);
   Eigen::Index count_ = 0;
 };
 
@@ -529,11 +532,13 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
     if (!opt.frame_body) written.emplace("frame", "frame.h5");
     modal = std::make_unique<durability::ModelModalHistory>(opt.out_dir, model, written);
   }
-  FrameResponse frame_response(h.elastic ? static_cast<const FlexibleBody*>(frame_body) : nullptr, csv);
+  const size_t row_chars = FrameResponse::RowChars(n_axles);
+  FrameResponse frame_response(h.elastic ? static_cast<const FlexibleBody*>(frame_body) : nullptr, csv, row_chars);
   const double wheelbase = Wheelbase(f.truck), steering_wheelbase = DriverWheelbase(f.truck, -model.gravity_W.z());
   std::vector<double> fz(n_wheels), axle_load(n_axles), ltr(n_axles);  // per step, allocated once
   std::vector<int> lift(n_wheels);
-  char line[FrameResponse::kRowChars];
+  std::vector<char> line_buffer(row_chars);  // the row, allocated once
+  char* const line = line_buffer.data();
   r.frame_modal_coordinates = h.elastic ? f.truck.elastic_frame->invariants.n : 0;
   try {
     sim.Initialize();
@@ -603,8 +608,8 @@ LaneChangeResult RunLaneChange(const LaneChangeOptions& opt) {
       if (csv && row) {
         size_t len = 0;
         auto put = [&](const char* format, auto... values) {
-          const int n = std::snprintf(line + len, sizeof(line) - len, format, values...);
-          if (n < 0 || len + static_cast<size_t>(n) >= sizeof(line)) throw std::logic_error("results.csv row too long");
+          const int n = std::snprintf(line + len, row_chars - len, format, values...);
+          if (n < 0 || len + static_cast<size_t>(n) >= row_chars) throw std::logic_error("results.csv row too long");
           len += static_cast<size_t>(n);
         };
         put("%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g", st.t, pf.x() - x_start, pf.y(),
