@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -235,6 +236,25 @@ TEST(TruckPlatform, BadPlatformsAreErrors) {
   f.platform.front_x = 1.5;  // ahead of the rails' front end at 1.0
   f.platform.brackets = {-1.5, -3.0};
   EXPECT_NE(message(f).find("ahead of the rails' front end"), std::string::npos) << message(f);
+}
+
+// `flexmb check` summarises the generated frame and its platform (a user
+// test found it silent about them)
+TEST(TruckPlatform, CheckSummarisesThePlatform) {
+  LaneChangeOptions opt;
+  opt.file = std::string(FLEXMB_SOURCE_DIR) + "/examples/truck_6x4/truck.yaml";
+  std::FILE* out = std::tmpfile();
+  ASSERT_NE(out, nullptr);
+  CheckLaneChange(opt, out);
+  std::rewind(out);
+  std::string text;
+  for (int c; (c = std::fgetc(out)) != EOF;) text.push_back(static_cast<char>(c));
+  std::fclose(out);
+  EXPECT_NE(text.find("frame: generated ladder frame, 12068 shells, 1900 kg (rails and cross members 1000 kg, "
+                      "platform 900 kg: x = -7.05 to -0.75 m, 2.50 m wide, 5 brackets per side; the cargo on its top "
+                      "at z = 1.210 m)"),
+            std::string::npos)
+      << text;
 }
 
 // errors of a truck file's platform name the platform's line

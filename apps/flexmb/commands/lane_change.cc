@@ -441,6 +441,19 @@ void CheckLaneChange(const LaneChangeOptions& opt, std::FILE* out) {
     total += axle[i];
   }
   std::fprintf(out, " (%.0f kg in all)\n", total / g);
+  if (!f.truck.frame_body && f.truck.frame_mesh) {
+    // the generated frame: its size, masses and the platform
+    const LadderFrameData& lf = f.truck.ladder;
+    std::fprintf(out, "frame: generated ladder frame, %zu shells, %.0f kg", f.truck.frame_mesh->elements.size(),
+                 f.truck.frame.mass);
+    if (lf.platform.present)
+      std::fprintf(out,
+                   " (rails and cross members %.0f kg, platform %.0f kg: x = %.2f to %.2f m, %.2f m wide, %zu "
+                   "brackets per side; the cargo on its top at z = %.3f m)",
+                   lf.total_mass, lf.platform.mass, lf.platform.front_x - lf.platform.length, lf.platform.front_x,
+                   lf.platform.width, lf.platform.brackets.size(), PlatformTopZ(lf));
+    std::fprintf(out, "\n");
+  }
   if (f.truck.frame_body) {
     // the user's frame: its mounts and the largest lever from node to point
     double largest = 0;
